@@ -1,0 +1,81 @@
+// `draught bench`: fixed scenes, N frames each, median frame time. A benchmark, not a
+// test: it prints a table and asserts nothing.
+#include "commands.hpp"
+
+#include "core/frame.hpp"
+#include "gpu/context.hpp"
+#include "gpu/renderer.hpp"
+
+#include <GLES3/gl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+namespace draught::cli {
+
+namespace {
+
+struct BenchScene {
+  const char* name;
+  SceneRequest request;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace
+
+int bench(int frames, const std::vector<int>& sizes, bool verbose) {
+  const std::vector<BenchScene> scenes = {
+      {"pint-lager", {"lager", "pint", {}, {}}},
+      {"nonic-stout", {"stout", "nonic", {}, {}}},
+      {"wine-red", {"red-wine", "wine", {}, {}}},
+      {"tulip-amber-floorless", {"amber-ale", "tulip", {"env.floor=false"}, {}}},
+  };
+  auto ctx = gpu::HeadlessContext::create();
+  gpu::Renderer renderer;
+  const char* threads = std::getenv("LP_NUM_THREADS");
+  std::printf("renderer: %s (%s)%s%s; %d frames per row after 2 warm-up frames; %u hardware threads\n",
+              ctx->renderer().c_str(), ctx->platform().c_str(), threads ? "; LP_NUM_THREADS=" : "",
+              threads ? threads : "", frames, std::thread::hardware_concurrency());
+  std::printf("%-24s %-9s %10s %10s %10s %8s\n", "scene", "size", "median ms", "min ms", "max ms", "fps");
+  for (const auto& s : scenes) {
+    Params p = resolve_params(s.request, verbose);
+    p.render.supersample = 1;
+    FrameState f = make_frame(p);
+    for (int size : sizes) {
+      GLuint tex, fbo;
+      glGenTextures(1, &tex);
+      glBindTexture(GL_TEXTURE_2D, tex);
+      glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, size, size);
+      glGenFramebuffers(1, &fbo);
+      glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+      std::vector<double> ms;
+      for (int i = 0; i < frames + 2; ++i) {
+        auto t0 = std::chrono::steady_clock::now();
+        renderer.draw(f, size, size);
+        renderer.finish();
+        double dt = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        if (i >= 2) ms.push_back(dt);
+      }
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      glDeleteFramebuffers(1, &fbo);
+      glDeleteTextures(1, &tex);
+      double med = median(ms);
+      char sz[32];
+      std::snprintf(sz, sizeof sz, "%dx%d", size, size);
+      std::printf("%-24s %-9s %10.2f %10.2f %10.2f %8.1f\n", s.name, sz, med,
+                  *std::min_element(ms.begin(), ms.end()), *std::max_element(ms.begin(), ms.end()), 1000.0 / med);
+      std::fflush(stdout);
+    }
+  }
+  return 0;
+}
+
+}  // namespace draught::cli

@@ -1,0 +1,43 @@
+#include "core/frame.hpp"
+
+#include "core/beverage.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace draught {
+
+CameraParams frame_camera(const CameraParams& c, const Vessel& v) {
+  if (!c.auto_frame) return c;
+  glm::dvec3 back = glm::dvec3(c.eye - c.target);
+  back = glm::length(back) > 1e-9 ? glm::normalize(back) : glm::dvec3(0, 0, 1);
+  const double half_tan = std::tan(glm::radians(double(c.vfov)) * 0.5);
+  // Half the glass height with a margin for the floor and the rim, or its width.
+  const double half = std::max(0.5 * v.height + 0.012, v.bound_radius * 1.1) * 1.12;
+  const double dist = half / half_tan + v.bound_radius;
+  CameraParams out = c;
+  out.target = glm::vec3(0.0, 0.47 * v.height, 0.0);
+  out.eye = out.target + glm::vec3(back * dist);
+  return out;
+}
+
+FrameState make_frame(const Params& p) {
+  FrameState f;
+  f.params = p;
+  f.vessel = build_vessel(p.glass);
+  f.camera = frame_camera(p.camera, f.vessel);
+  f.has_liquid = p.liquid.fill > 1e-4f;
+  f.liquid.n = {0, 1, 0};
+  f.liquid.offset = f.has_liquid ? f.vessel.fill_height(p.liquid.fill) : -1.0;
+  f.liquid_absorption = liquid_absorption(p.liquid);
+  double sum = 0;
+  for (double r : f.vessel.r_outer) sum += r;
+  f.mean_outer_radius = sum / double(f.vessel.r_outer.size());
+  return f;
+}
+
+SceneGeometry scene_geometry(const FrameState& f) {
+  return {&f.vessel, f.liquid, f.params.env.floor && !f.params.render.transparent};
+}
+
+}  // namespace draught

@@ -1,0 +1,130 @@
+// The parameter table: every tunable of draught is declared once, in param_table().
+// JSON presets, the CLI's --set, `draught params` and (later) the UI panels all go
+// through these descriptors; code reads the typed struct `Params`.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace draught {
+
+// A designer's profile: control points (r, y) in metres, y strictly increasing from 0.
+using Curve = std::vector<glm::vec2>;
+
+struct GlassParams {
+  Curve profile;
+  float wall_thickness;
+  float base_thickness;
+  float rim_radius;
+  float ior;
+  float roughness;
+  glm::vec3 absorption;  // per metre
+};
+
+struct LiquidParams {
+  float fill;  // fraction of the cavity volume
+  float ior;
+  float srm;   // > 0: absorption derived from the beer colour (SRM); 0: use `absorption`
+  glm::vec3 absorption;  // per metre
+  float haze;            // scattering per metre
+  glm::vec3 haze_color;  // single-scattering albedo
+  float roughness;
+};
+
+enum class EnvMode { Studio = 0, Constant = 1 };
+enum class Tonemap { None = 0, Aces = 1 };
+
+struct EnvParams {
+  int mode;  // EnvMode
+  glm::vec3 color;  // constant mode radiance
+  glm::vec3 sky_top;
+  glm::vec3 sky_horizon;
+  glm::vec3 ground;
+  float strip_intensity;
+  float backdrop_glow;
+  bool floor;
+  float checker_size;
+  glm::vec3 floor_a;
+  glm::vec3 floor_b;
+};
+
+struct LightParams {
+  glm::vec3 direction;  // towards the light
+  glm::vec3 color;
+  float intensity;
+  float size;  // angular radius, degrees
+};
+
+struct CameraParams {
+  bool auto_frame;  // place the camera to frame the glass; eye/target then only give the direction
+  glm::vec3 eye;
+  glm::vec3 target;
+  float vfov;  // degrees
+};
+
+struct RenderParams {
+  int tonemap;  // Tonemap
+  float exposure;
+  bool transparent;
+  int supersample;
+  int max_events;
+};
+
+struct Params {
+  GlassParams glass;
+  LiquidParams liquid;
+  EnvParams env;
+  LightParams light;
+  CameraParams camera;
+  RenderParams render;
+};
+
+enum class ParamType { Float, Int, Bool, Vec3, Color, Enum, Curve };
+std::string_view type_name(ParamType);
+
+// Enums are held as their index in the struct and as their name in JSON/CLI.
+using ParamValue = std::variant<float, int, bool, glm::vec3, std::string, Curve>;
+
+struct ParamDesc {
+  std::string path;  // "group.name"
+  ParamType type;
+  ParamValue def;
+  float min = 0, max = 0;  // per component for Vec3/Color; r and y bounds for Curve
+  std::string unit;
+  std::string doc;
+  std::vector<std::string> choices;  // Enum only
+  void* (*field)(Params&);           // where the value lives in Params
+};
+
+// An error in a parameter value. `field` is the parameter path, `expected` says what
+// was wanted. The caller adds the file.
+struct ParamError : std::runtime_error {
+  ParamError(std::string field, std::string expected)
+      : std::runtime_error(field + ": expected " + expected), field(std::move(field)),
+        expected(std::move(expected)) {}
+  std::string field, expected;
+};
+
+const std::vector<ParamDesc>& param_table();
+const ParamDesc* find_param(std::string_view path);
+Params default_params();
+
+ParamValue get_param(const Params&, const ParamDesc&);
+// Checks type and range; throws ParamError. Nothing is written unless the value is valid.
+void set_param(Params&, const ParamDesc&, const ParamValue&);
+void validate_value(const ParamDesc&, const ParamValue&);
+std::string expected_text(const ParamDesc&);
+// "unknown parameter 'x' (did you mean 'y'?)" for a path not in the table.
+std::string unknown_param_message(const std::string& path);
+
+// Text forms used by --set and `draught params`: "0.8", "true", "1,0.5,0", "aces",
+// "0.03,0;0.035,0.15" for curves.
+ParamValue parse_param_text(const ParamDesc&, std::string_view text);
+std::string format_param(const ParamDesc&, const ParamValue&);
+
+}  // namespace draught

@@ -1,0 +1,237 @@
+#include "core/preset.hpp"
+
+#include "core/files.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace draught {
+
+using nlohmann::json;
+
+namespace {
+
+std::string short_dump(const json& j) {
+  std::string s = j.dump();
+  return s.size() > 60 ? s.substr(0, 57) + "..." : s;
+}
+
+// Converts a JSON leaf to a typed value, or says what was expected.
+ParamValue value_from_json(const ParamDesc& d, const json& j, const std::string& file) {
+  auto fail = [&]() -> ParamValue {
+    throw InputError(file + ": field '" + d.path + "': expected " + expected_text(d) + ", got " + short_dump(j));
+  };
+  auto num3 = [&](const json& a, glm::vec3& out) {
+    if (!a.is_array() || a.size() != 3) return false;
+    for (int i = 0; i < 3; ++i) {
+      if (!a[size_t(i)].is_number()) return false;
+      out[i] = a[size_t(i)].get<float>();
+    }
+    return true;
+  };
+  ParamValue v;
+  switch (d.type) {
+    case ParamType::Float:
+      if (!j.is_number()) return fail();
+      v = j.get<float>();
+      break;
+    case ParamType::Int:
+      if (!j.is_number_integer()) return fail();
+      v = j.get<int>();
+      break;
+    case ParamType::Bool:
+      if (!j.is_boolean()) return fail();
+      v = j.get<bool>();
+      break;
+    case ParamType::Vec3:
+    case ParamType::Color: {
+      glm::vec3 c;
+      if (!num3(j, c)) return fail();
+      v = c;
+      break;
+    }
+    case ParamType::Enum:
+      if (!j.is_string()) return fail();
+      v = j.get<std::string>();
+      break;
+    case ParamType::Curve: {
+      if (!j.is_array()) return fail();
+      Curve c;
+      for (auto& pt : j) {
+        if (!pt.is_array() || pt.size() != 2 || !pt[0].is_number() || !pt[1].is_number()) return fail();
+        c.push_back({pt[0].get<float>(), pt[1].get<float>()});
+      }
+      v = c;
+      break;
+    }
+  }
+  try {
+    validate_value(d, v);
+  } catch (const ParamError& e) {
+    throw InputError(file + ": field '" + d.path + "': expected " + e.expected + ", got " + short_dump(j));
+  }
+  return v;
+}
+
+void collect(const json& obj, const std::string& prefix, const std::string& file, Preset& out) {
+  for (auto& [key, val] : obj.items()) {
+    const std::string path = prefix.empty() ? key : prefix + "." + key;
+    if (const ParamDesc* d = find_param(path)) {
+      out.values.emplace_back(d, value_from_json(*d, val, file));
+    } else if (val.is_object()) {
+      bool is_group = false;
+      for (auto& d : param_table()) is_group |= d.path.rfind(path + ".", 0) == 0;
+      if (!is_group) throw InputError(file + ": field 'params." + path + "': " + unknown_param_message(path));
+      collect(val, path, file, out);
+    } else {
+      throw InputError(file + ": field 'params." + path + "': " + unknown_param_message(path));
+    }
+  }
+}
+
+std::string group_of(const std::string& path) { return path.substr(0, path.find('.')); }
+
+}  // namespace
+
+Preset parse_preset(const std::string& text, const std::string& file) {
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    size_t line = 1, col = 1;
+    for (size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
+      if (text[i] == '\n') ++line, col = 1;
+      else ++col;
+    }
+    std::string what = e.what();
+    auto p = what.find(": ", what.find("parse error"));
+    throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(col) +
+                     ": malformed JSON: " + (p == std::string::npos ? what : what.substr(p + 2)));
+  }
+  if (!j.is_object()) throw InputError(file + ": expected a JSON object at the top level");
+  Preset p;
+  p.file = file;
+  auto str_field = [&](const char* key, bool required) -> std::string {
+    if (!j.contains(key)) {
+      if (required) throw InputError(file + ": field '" + key + "': missing, expected a string");
+      return "";
+    }
+    if (!j[key].is_string()) throw InputError(file + ": field '" + key + "': expected a string, got " + short_dump(j[key]));
+    return j[key].get<std::string>();
+  };
+  for (auto& [key, val] : j.items()) {
+    static const char* known[] = {"draught_preset", "kind", "name", "description", "suggested_glass", "params"};
+    if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return key == k; }) == std::end(known))
+      throw InputError(file + ": field '" + key +
+                       "': unknown key, expected one of draught_preset, kind, name, description, "
+                       "suggested_glass, params");
+  }
+  if (j.contains("draught_preset") && j["draught_preset"] != kPresetFormat)
+    throw InputError(file + ": field 'draught_preset': expected format " + std::to_string(kPresetFormat) +
+                     ", got " + short_dump(j["draught_preset"]));
+  p.kind = str_field("kind", true);
+  if (p.kind != "glass" && p.kind != "drink" && p.kind != "scene")
+    throw InputError(file + ": field 'kind': expected \"glass\", \"drink\" or \"scene\", got \"" + p.kind + "\"");
+  p.name = str_field("name", true);
+  p.description = str_field("description", false);
+  p.suggested_glass = str_field("suggested_glass", false);
+  if (!p.suggested_glass.empty() && p.kind == "glass")
+    throw InputError(file + ": field 'suggested_glass': only drinks and scenes suggest a glass");
+  if (j.contains("params")) {
+    if (!j["params"].is_object())
+      throw InputError(file + ": field 'params': expected an object of parameter groups, got " +
+                       short_dump(j["params"]));
+    collect(j["params"], "", file, p);
+  }
+  for (auto& [d, v] : p.values) {
+    const std::string g = group_of(d->path);
+    if ((p.kind == "glass" && g != "glass") || (p.kind == "drink" && g != "liquid"))
+      throw InputError(file + ": field 'params." + d->path + "': a " + p.kind + " preset may set only " +
+                       (p.kind == "glass" ? "glass.*" : "liquid.*") + " parameters (use kind \"scene\")");
+  }
+  return p;
+}
+
+Preset load_preset(const std::filesystem::path& path) { return parse_preset(read_text_file(path), path.string()); }
+
+void apply_preset(const Preset& p, Params& params) {
+  for (auto& [d, v] : p.values) set_param(params, *d, v);  // values were validated when parsed
+}
+
+std::vector<std::filesystem::path> preset_dirs() {
+  std::vector<std::filesystem::path> dirs;
+  if (const char* env = std::getenv("DRAUGHT_PRESET_DIR"); env && *env) dirs.emplace_back(env);
+  dirs.emplace_back(DRAUGHT_SOURCE_PRESET_DIR);
+  return dirs;
+}
+
+std::filesystem::path find_preset(const std::string& name, const std::string& kind) {
+  if (name.find('/') != std::string::npos || name.ends_with(".json")) {
+    if (!std::filesystem::exists(name)) throw InputError(name + ": no such preset file");
+    return name;
+  }
+  std::string tried;
+  for (auto& dir : preset_dirs()) {
+    for (const std::string& sub : {kind == "glass" ? std::string("glasses") : kind + "s", std::string("scenes")}) {
+      auto p = dir / sub / (name + ".json");
+      if (std::filesystem::exists(p)) return p;
+      tried += (tried.empty() ? "" : ", ") + p.string();
+    }
+  }
+  throw InputError("no " + kind + " preset named '" + name + "' (looked for " + tried +
+                   "); `draught presets` lists them");
+}
+
+std::vector<Preset> list_presets() {
+  std::vector<Preset> out;
+  for (auto& dir : preset_dirs()) {
+    for (const char* sub : {"glasses", "drinks", "scenes"}) {
+      std::error_code ec;
+      std::vector<std::filesystem::path> files;
+      for (auto& e : std::filesystem::directory_iterator(dir / sub, ec))
+        if (e.path().extension() == ".json") files.push_back(e.path());
+      std::sort(files.begin(), files.end());
+      for (auto& f : files) out.push_back(load_preset(f));
+    }
+    if (!out.empty()) break;  // the first directory that has presets wins
+  }
+  return out;
+}
+
+std::string preset_json(const Params& p, const std::string& kind, const std::string& name,
+                        const std::string& description, const std::vector<std::string>& groups) {
+  json j = json::object();
+  j["draught_preset"] = kPresetFormat;
+  j["kind"] = kind;
+  j["name"] = name;
+  if (!description.empty()) j["description"] = description;
+  json params = json::object();
+  for (auto& d : param_table()) {
+    const std::string g = group_of(d.path);
+    if (!groups.empty() && std::find(groups.begin(), groups.end(), g) == groups.end()) continue;
+    ParamValue v = get_param(p, d);
+    json val;
+    std::visit(
+        [&](auto&& x) {
+          using T = std::decay_t<decltype(x)>;
+          if constexpr (std::is_same_v<T, glm::vec3>) val = {x.x, x.y, x.z};
+          else if constexpr (std::is_same_v<T, Curve>) {
+            val = json::array();
+            for (auto& q : x) val.push_back({q.x, q.y});
+          } else val = x;
+        },
+        v);
+    params[g][d.path.substr(g.size() + 1)] = val;
+  }
+  j["params"] = params;
+  return j.dump(2) + "\n";
+}
+
+void save_preset(const std::filesystem::path& path, const std::string& json_text) {
+  parse_preset(json_text, path.string());  // never write what we could not load back
+  write_file_atomic(path, json_text);
+}
+
+}  // namespace draught

@@ -1,0 +1,168 @@
+#include "gpu/renderer.hpp"
+
+#include "core/camera.hpp"
+#include "gpu/program.hpp"
+
+#include <GLES3/gl3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace draught::gpu {
+
+FrameUniforms pack_uniforms(const FrameState& f, int width, int height, DebugView debug) {
+  const Params& p = f.params;
+  const Vessel& v = f.vessel;
+  FrameUniforms u{};
+  CameraBasis cam = camera_basis(f.camera, width, height);
+  u.cam_eye = {cam.eye, cam.tan_half_vfov};
+  u.cam_right = {cam.right, cam.aspect};
+  u.cam_up = {cam.up, 0};
+  u.cam_forward = {cam.forward, 0};
+  u.viewport = {width, height, 1.0f / width, 1.0f / height};
+  u.vessel = {v.height, v.base, v.dy, 1.0 / v.dy};
+  u.rim = {v.rim_major, v.rim_minor, v.bound_radius, v.r_outer.front()};
+  u.glass = {p.glass.ior, p.glass.roughness, v.inner_radius(v.base), f.mean_outer_radius};
+  u.glass_absorb = {p.glass.absorption, 0};
+  u.liquid_plane = {glm::vec3(f.liquid.n), f.liquid.offset};
+  u.liquid = {p.liquid.ior, p.liquid.roughness, p.liquid.haze, f.has_liquid ? 1.0f : 0.0f};
+  u.liquid_absorb = {f.liquid_absorption, 0};
+  u.haze_color = {p.liquid.haze_color, 0};
+  glm::vec3 ld = glm::length(p.light.direction) > 1e-6f ? glm::normalize(p.light.direction) : glm::vec3(0, 1, 0);
+  u.light_dir = {ld, p.light.intensity};
+  u.light_color = {p.light.color, std::cos(glm::radians(p.light.size))};
+  const bool floor = p.env.floor && !p.render.transparent;
+  u.env = {float(p.env.mode), p.env.strip_intensity, p.env.backdrop_glow, floor ? 1.0f : 0.0f};
+  u.env_color = {p.env.color, 0};
+  u.sky_top = {p.env.sky_top, 0};
+  u.sky_horizon = {p.env.sky_horizon, 0};
+  u.ground = {p.env.ground, 0};
+  u.floor_a = {p.env.floor_a, p.env.checker_size};
+  u.floor_b = {p.env.floor_b, 0};
+  u.output = {float(p.render.tonemap), p.render.exposure, p.render.transparent ? 1.0f : 0.0f, float(debug)};
+  if (debug == DebugView::Material) u.output.w = float(DebugView::Depth);  // same channels
+  u.limits = {p.render.max_events, 0, 0, 0};
+  for (int k = 0; k <= Vessel::kSegments; ++k) u.knots[k] = {v.r_outer[size_t(k)], v.r_inner[size_t(k)], 0, 0};
+  return u;
+}
+
+// An offscreen colour target: RGBA8 for pictures, RGBA32F for debug channels.
+struct Renderer::Target {
+  GLuint fbo = 0, tex = 0;
+  Target(int w, int h, bool float_target) {
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexStorage2D(GL_TEXTURE_2D, 1, float_target ? GL_RGBA32F : GL_RGBA8, w, h);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      release();
+      throw std::runtime_error(float_target ? "float render targets are not supported by this GL driver "
+                                              "(EXT_color_buffer_float); debug views need them"
+                                            : "cannot create an offscreen framebuffer");
+    }
+  }
+  void release() {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (fbo) glDeleteFramebuffers(1, &fbo);
+    if (tex) glDeleteTextures(1, &tex);
+    fbo = tex = 0;
+  }
+  ~Target() { release(); }
+};
+
+Renderer::Renderer(const std::filesystem::path& shader_dir) {
+  program_ = std::make_unique<Program>(assemble_shader("fullscreen.vert.glsl", shader_dir),
+                                       assemble_shader("vessel.frag.glsl", shader_dir));
+  GLuint block = glGetUniformBlockIndex(program_->id(), "Frame");
+  if (block == GL_INVALID_INDEX) throw ShaderError("vessel.frag.glsl: uniform block 'Frame' is missing");
+  GLint size = 0;
+  glGetActiveUniformBlockiv(program_->id(), block, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
+  if (size_t(size) != sizeof(FrameUniforms))
+    throw ShaderError("common.glsl: uniform block 'Frame' is " + std::to_string(size) +
+                      " bytes but gpu/uniforms.hpp FrameUniforms is " + std::to_string(sizeof(FrameUniforms)));
+  glUniformBlockBinding(program_->id(), block, 0);
+  glGenVertexArrays(1, &vao_);
+  glGenBuffers(1, &ubo_);
+  glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
+  glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameUniforms), nullptr, GL_DYNAMIC_DRAW);
+}
+
+Renderer::~Renderer() {
+  glDeleteBuffers(1, &ubo_);
+  glDeleteVertexArrays(1, &vao_);
+}
+
+void Renderer::draw(const FrameState& f, int width, int height, DebugView debug) {
+  FrameUniforms u = pack_uniforms(f, width, height, debug);
+  glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
+  glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof u, &u);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_);
+  glViewport(0, 0, width, height);
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glUseProgram(program_->id());
+  glBindVertexArray(vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void Renderer::finish() { glFinish(); }
+
+Image Renderer::render(const FrameState& f, int width, int height) {
+  const int ss = std::clamp(f.params.render.supersample, 1, 4);
+  const int w = width * ss, h = height * ss;
+  Target target(w, h, false);
+  draw(f, w, h);
+  Image img{w, h, std::vector<std::uint8_t>(size_t(w) * size_t(h) * 4)};
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+  // GL rows are bottom-up; images are top-down.
+  for (int y = 0; y < h / 2; ++y)
+    std::swap_ranges(img.px(0, y), img.px(0, y) + size_t(w) * 4, img.px(0, h - 1 - y));
+  return downsample(img, ss);
+}
+
+DebugImage Renderer::render_debug(const FrameState& f, int width, int height, DebugView view) {
+  Target target(width, height, true);
+  draw(f, width, height, view);
+  DebugImage out{width, height, std::vector<float>(size_t(width) * size_t(height) * 4)};
+  std::vector<float> rows(out.rgba.size());
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rows.data());
+  for (int y = 0; y < height; ++y)
+    std::copy_n(&rows[size_t(height - 1 - y) * size_t(width) * 4], size_t(width) * 4,
+                &out.rgba[size_t(y) * size_t(width) * 4]);
+  return out;
+}
+
+Image visualize_debug(const DebugImage& d, DebugView view) {
+  Image img{d.width, d.height, std::vector<std::uint8_t>(size_t(d.width) * size_t(d.height) * 4, 255)};
+  float tmin = 1e30f, tmax = 0;
+  for (int y = 0; y < d.height; ++y)
+    for (int x = 0; x < d.width; ++x)
+      if (d.px(x, y)[0] > 0 && view == DebugView::Depth) {
+        tmin = std::min(tmin, d.px(x, y)[0]);
+        tmax = std::max(tmax, d.px(x, y)[0]);
+      }
+  static const std::uint8_t palette[8][3] = {{0, 0, 0},      {90, 90, 90},   {80, 160, 255}, {255, 140, 40},
+                                             {240, 240, 60}, {200, 60, 200}, {60, 200, 120}, {255, 60, 60}};
+  for (int y = 0; y < d.height; ++y)
+    for (int x = 0; x < d.width; ++x) {
+      const float* s = d.px(x, y);
+      std::uint8_t* o = img.px(x, y);
+      if (view == DebugView::Depth) {
+        float v = s[0] > 0 ? 1.0f - 0.85f * (s[0] - tmin) / std::max(tmax - tmin, 1e-6f) : 0.0f;
+        o[0] = o[1] = o[2] = std::uint8_t(std::lround(v * 255));
+      } else if (view == DebugView::Normal) {
+        for (int c = 0; c < 3; ++c) o[c] = std::uint8_t(std::lround(std::clamp(s[c] * 0.5f + 0.5f, 0.0f, 1.0f) * 255));
+        if (s[3] == 0) o[0] = o[1] = o[2] = 0;
+      } else {
+        int m = std::clamp(int(std::lround(s[1])), 0, 7);
+        for (int c = 0; c < 3; ++c) o[c] = palette[m][c];
+      }
+    }
+  return img;
+}
+
+}  // namespace draught::gpu

@@ -1,0 +1,53 @@
+// gpu::Renderer draws a FrameState. It packs the uniform block, runs the vessel pass
+// into an offscreen framebuffer and reads back images. It does no physics.
+#pragma once
+
+#include "core/frame.hpp"
+#include "core/image.hpp"
+#include "gpu/uniforms.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+namespace draught::gpu {
+
+class Program;
+
+enum class DebugView { None = 0, Depth = 1, Normal = 2, Material = 3 };
+
+// Raw debug channels per pixel, rows top-down: Depth/Material: (t, material, 0, 1);
+// Normal: (nx, ny, nz, material). t is the distance to the first surface, 0 for none.
+struct DebugImage {
+  int width = 0, height = 0;
+  std::vector<float> rgba;
+  const float* px(int x, int y) const { return &rgba[(size_t(y) * size_t(width) + size_t(x)) * 4]; }
+};
+
+FrameUniforms pack_uniforms(const FrameState&, int width, int height, DebugView);
+
+class Renderer {
+ public:
+  // Needs a current GLES 3.0 context. Compiles the shaders (embedded, or from
+  // shader_dir when given); throws ShaderError naming file and line.
+  explicit Renderer(const std::filesystem::path& shader_dir = {});
+  ~Renderer();
+
+  // The final picture at width x height (supersampled by params.render.supersample).
+  Image render(const FrameState&, int width, int height);
+  DebugImage render_debug(const FrameState&, int width, int height, DebugView);
+  // Draws into the currently bound framebuffer (windows, the web page, benchmarks).
+  void draw(const FrameState&, int width, int height, DebugView = DebugView::None);
+  void finish();
+
+ private:
+  struct Target;
+  std::unique_ptr<Program> program_;
+  unsigned vao_ = 0, ubo_ = 0;
+};
+
+// Turns a debug image into a picture a person can read (grey depth, RGB normals,
+// a colour per material).
+Image visualize_debug(const DebugImage&, DebugView);
+
+}  // namespace draught::gpu

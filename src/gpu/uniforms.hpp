@@ -1,0 +1,36 @@
+// The std140 uniform block of shaders/common.glsl, as a C++ struct. The asserts pin
+// size and offsets so the two cannot drift apart silently.
+#pragma once
+
+#include "core/vessel.hpp"
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+
+namespace draught::gpu {
+
+struct FrameUniforms {
+  glm::vec4 cam_eye, cam_right, cam_up, cam_forward;
+  glm::vec4 viewport;
+  glm::vec4 vessel, rim, glass, glass_absorb;
+  glm::vec4 liquid_plane, liquid, liquid_absorb, haze_color;
+  glm::vec4 light_dir, light_color;
+  glm::vec4 env, env_color, sky_top, sky_horizon, ground, floor_a, floor_b;
+  glm::vec4 output;
+  glm::ivec4 limits;
+  glm::vec4 knots[Vessel::kSegments + 1];
+};
+
+static_assert(sizeof(glm::vec4) == 16 && sizeof(glm::ivec4) == 16);
+static_assert(offsetof(FrameUniforms, viewport) == 64);
+static_assert(offsetof(FrameUniforms, vessel) == 80);
+static_assert(offsetof(FrameUniforms, liquid_plane) == 144);
+static_assert(offsetof(FrameUniforms, light_dir) == 208);
+static_assert(offsetof(FrameUniforms, env) == 240);
+static_assert(offsetof(FrameUniforms, output) == 352);
+static_assert(offsetof(FrameUniforms, limits) == 368);
+static_assert(offsetof(FrameUniforms, knots) == 384);
+static_assert(sizeof(FrameUniforms) == 384 + 16 * (Vessel::kSegments + 1));
+
+}  // namespace draught::gpu
