@@ -45,7 +45,9 @@ int bench(int frames, const std::vector<int>& sizes, bool verbose) {
               threads ? threads : "", frames, std::thread::hardware_concurrency());
   std::printf("%-24s %-9s %10s %10s %10s %8s\n", "scene", "size", "median ms", "min ms", "max ms", "fps");
   for (const auto& s : scenes) {
-    Params p = resolve_params(s.request, verbose);
+    std::string log;
+    Params p = resolve_scene(s.request, &log);
+    if (verbose) std::fprintf(stderr, "%s", log.c_str());
     p.render.supersample = 1;
     FrameState f = make_frame(p);
     for (int size : sizes) {

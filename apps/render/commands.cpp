@@ -12,58 +12,12 @@
 
 namespace draught::cli {
 
-namespace {
-
-std::pair<const ParamDesc*, ParamValue> parse_assignment(const std::string& flag, const std::string& text) {
-  auto eq = text.find('=');
-  if (eq == std::string::npos)
-    throw InputError(flag + " " + text + ": expected path=value, e.g. " + flag + " liquid.fill=0.8");
-  const std::string path = text.substr(0, eq);
-  const ParamDesc* d = find_param(path);
-  if (!d) throw InputError(flag + " " + text + ": " + unknown_param_message(path));
-  try {
-    return {d, parse_param_text(*d, text.substr(eq + 1))};
-  } catch (const ParamError& e) {
-    throw InputError(flag + " " + text + ": field '" + e.field + "': expected " + e.expected);
-  }
-}
-
-}  // namespace
 
 void parse_size(const std::string& text, int& w, int& h) {
   char x;
   if (std::sscanf(text.c_str(), "%d%c%d", &w, &x, &h) != 3 || x != 'x' || w < 1 || h < 1 || w > 8192 ||
       h > 8192)
     throw InputError("--size " + text + ": expected WIDTHxHEIGHT, each from 1 to 8192, e.g. 512x512");
-}
-
-Params resolve_params(const SceneRequest& req, bool verbose) {
-  const Preset drink = load_preset(find_preset(req.preset, "drink"));
-  std::string glass_name = !req.glass.empty() ? req.glass
-                           : !drink.suggested_glass.empty() ? drink.suggested_glass
-                                                            : "pint";
-  const bool scene_sets_glass = drink.kind == "scene" && req.glass.empty() && drink.suggested_glass.empty();
-  Preset glass;
-  if (!scene_sets_glass) glass = load_preset(find_preset(glass_name, "glass"));
-  std::vector<std::pair<const ParamDesc*, ParamValue>> overrides;
-  for (const auto& c : req.camera) {
-    auto eq = c.find('=');
-    const std::string key = c.substr(0, eq);
-    if (eq == std::string::npos || (key != "eye" && key != "target" && key != "vfov"))
-      throw InputError("--camera " + c + ": expected eye=x,y,z, target=x,y,z or vfov=degrees");
-    overrides.push_back(parse_assignment("--camera", "camera." + c));
-    if (key != "vfov") overrides.push_back(parse_assignment("--camera", "camera.auto_frame=false"));
-  }
-  for (const auto& s : req.sets) overrides.push_back(parse_assignment("--set", s));
-  // Everything is valid: now apply, in order.
-  Params p = default_params();
-  if (!scene_sets_glass) apply_preset(glass, p);
-  apply_preset(drink, p);
-  for (auto& [d, v] : overrides) set_param(p, *d, v);
-  if (verbose)
-    std::fprintf(stderr, "preset: %s (%s)%s%s\n", drink.name.c_str(), drink.file.c_str(),
-                 scene_sets_glass ? "" : ", glass: ", scene_sets_glass ? "" : glass.file.c_str());
-  return p;
 }
 
 int render(const RenderRequest& req) {
@@ -75,7 +29,9 @@ int render(const RenderRequest& req) {
   else if (req.debug == "material") view = gpu::DebugView::Material;
   else if (!req.debug.empty()) throw InputError("--debug " + req.debug + ": expected depth, normal or material");
 
-  const Params params = resolve_params(req.scene, req.verbose);
+  std::string log;
+  const Params params = resolve_scene(req.scene, &log);
+  if (req.verbose) std::fprintf(stderr, "%s", log.c_str());
   const FrameState frame = make_frame(params);
   auto ctx = gpu::HeadlessContext::create();
   if (req.verbose) std::fprintf(stderr, "renderer: %s (%s)\n", ctx->renderer().c_str(), ctx->platform().c_str());

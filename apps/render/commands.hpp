@@ -1,23 +1,12 @@
 // The `draught` CLI's commands. main.cpp only parses flags; each command lives here.
 #pragma once
 
-#include "core/params.hpp"
+#include "core/preset.hpp"
 
 #include <string>
 #include <vector>
 
 namespace draught::cli {
-
-// What a render asks for: presets first, then --camera, then --set, later wins.
-struct SceneRequest {
-  std::string preset = "lager";
-  std::string glass;  // empty: the drink's suggested glass, else "pint"
-  std::vector<std::string> sets;     // "path=value"
-  std::vector<std::string> camera;   // "eye=x,y,z" "target=x,y,z" "vfov=deg"
-};
-
-// Loads and validates everything before applying anything; throws InputError.
-Params resolve_params(const SceneRequest&, bool verbose);
 
 struct RenderRequest {
   SceneRequest scene;

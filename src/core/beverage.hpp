@@ -10,7 +10,7 @@ namespace draught {
 // Absorption per metre per SRM for R, G, B. Fitted so that 5 cm of beer over white
 // gives the familiar SRM colour chart (SRM 4 gold, 13 copper, 40 near black with a
 // ruby edge) when rendered in linear sRGB.
-inline constexpr float kAbsorptionPerSrm[3] = {1.3f, 3.5f, 11.0f};
+inline constexpr float kAbsorptionPerSrm[3] = {1.6f, 3.8f, 11.0f};
 
 glm::vec3 srm_to_absorption(float srm);
 

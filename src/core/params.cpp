@@ -55,8 +55,8 @@ std::vector<ParamDesc> make_table() {
       ROW(env.backdrop_glow, Float, 2.0f, 0.0f, 100.0f, "", "Brightness of the glow behind the glass"),
       ROW(env.floor, Bool, true, 0.0f, 1.0f, "", "Show a checker floor at y = 0 with the glass's shadow"),
       ROW(env.checker_size, Float, 0.04f, 0.001f, 10.0f, "m", "Edge length of one floor checker square"),
-      ROW(env.floor_a, Color, vec3(0.62f, 0.60f, 0.57f), 0.0f, 1.0f, "", "Floor albedo, light squares"),
-      ROW(env.floor_b, Color, vec3(0.40f, 0.38f, 0.36f), 0.0f, 1.0f, "", "Floor albedo, dark squares"),
+      ROW(env.floor_a, Color, vec3(0.58f, 0.56f, 0.53f), 0.0f, 1.0f, "", "Floor albedo, light squares"),
+      ROW(env.floor_b, Color, vec3(0.44f, 0.42f, 0.40f), 0.0f, 1.0f, "", "Floor albedo, dark squares"),
       // key light
       ROW(light.direction, Vec3, vec3(-0.55f, 0.75f, 0.45f), -1.0f, 1.0f, "",
           "Direction towards the key light (normalised)"),

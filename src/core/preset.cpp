@@ -235,3 +235,54 @@ void save_preset(const std::filesystem::path& path, const std::string& json_text
 }
 
 }  // namespace draught
+
+namespace draught {
+
+namespace {
+std::pair<const ParamDesc*, ParamValue> parse_assignment(const std::string& flag, const std::string& text) {
+  auto eq = text.find('=');
+  if (eq == std::string::npos)
+    throw InputError(flag + " " + text + ": expected path=value, e.g. " + flag + " liquid.fill=0.8");
+  const std::string path = text.substr(0, eq);
+  const ParamDesc* d = find_param(path);
+  if (!d) throw InputError(flag + " " + text + ": " + unknown_param_message(path));
+  try {
+    return {d, parse_param_text(*d, text.substr(eq + 1))};
+  } catch (const ParamError& e) {
+    throw InputError(flag + " " + text + ": field '" + e.field + "': expected " + e.expected);
+  }
+}
+}  // namespace
+
+Params resolve_scene(const SceneRequest& req, std::string* log) {
+  const Preset drink = load_preset(find_preset(req.preset, "drink"));
+  const std::string glass_name = !req.glass.empty()                ? req.glass
+                                 : !drink.suggested_glass.empty() ? drink.suggested_glass
+                                                                  : "pint";
+  // A scene that sets its own glass and names none keeps it.
+  const bool scene_sets_glass = drink.kind == "scene" && req.glass.empty() && drink.suggested_glass.empty();
+  Preset glass;
+  if (!scene_sets_glass) glass = load_preset(find_preset(glass_name, "glass"));
+  std::vector<std::pair<const ParamDesc*, ParamValue>> overrides;
+  for (const auto& c : req.camera) {
+    auto eq = c.find('=');
+    const std::string key = c.substr(0, eq);
+    if (eq == std::string::npos || (key != "eye" && key != "target" && key != "vfov"))
+      throw InputError("--camera " + c + ": expected eye=x,y,z, target=x,y,z or vfov=degrees");
+    overrides.push_back(parse_assignment("--camera", "camera." + c));
+    if (key != "vfov") overrides.push_back(parse_assignment("--camera", "camera.auto_frame=false"));
+  }
+  for (const auto& s : req.sets) overrides.push_back(parse_assignment("--set", s));
+  // Everything is valid: now apply, in order.
+  Params p = default_params();
+  if (!scene_sets_glass) apply_preset(glass, p);
+  apply_preset(drink, p);
+  for (auto& [d, v] : overrides) set_param(p, *d, v);
+  if (log) {
+    *log += "preset: " + drink.name + " (" + drink.file + ")\n";
+    if (!scene_sets_glass) *log += "glass: " + glass.name + " (" + glass.file + ")\n";
+  }
+  return p;
+}
+
+}  // namespace draught

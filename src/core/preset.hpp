@@ -40,4 +40,18 @@ std::string preset_json(const Params& p, const std::string& kind, const std::str
                         const std::string& description, const std::vector<std::string>& groups);
 void save_preset(const std::filesystem::path&, const std::string& json_text);  // validates, atomic
 
+// What a render asks for: a glass preset, a drink (or scene) preset, then camera and
+// parameter overrides; later wins.
+struct SceneRequest {
+  std::string preset = "lager";
+  std::string glass;                // empty: the drink's suggested glass, else "pint"
+  std::vector<std::string> sets;    // "path=value", as --set
+  std::vector<std::string> camera;  // "eye=x,y,z" "target=x,y,z" "vfov=deg", as --camera
+};
+
+// Loads and validates everything before applying anything; throws InputError whose
+// message names the file or flag, the field and what was expected. `log` (optional)
+// receives which files were used.
+Params resolve_scene(const SceneRequest&, std::string* log = nullptr);
+
 }  // namespace draught

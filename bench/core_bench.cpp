@@ -1,0 +1,52 @@
+// Google Benchmark figures for the CPU side of a frame: building the vessel from a
+// profile, solving the fill height, and the reference intersector per ray. GPU frame
+// times come from `draught bench`. Results: docs/PERFORMANCE.md.
+#include "core/camera.hpp"
+#include "core/frame.hpp"
+#include "core/preset.hpp"
+
+#include <benchmark/benchmark.h>
+
+using namespace draught;
+
+namespace {
+
+Params glass_params(const char* glass) { return resolve_scene({"lager", glass, {}, {}}); }
+
+void BM_BuildVessel(benchmark::State& state) {
+  Params p = glass_params("wine");
+  for (auto _ : state) benchmark::DoNotOptimize(build_vessel(p.glass));
+}
+BENCHMARK(BM_BuildVessel);
+
+void BM_FillHeight(benchmark::State& state) {
+  Vessel v = build_vessel(glass_params("wine").glass);
+  double f = 0.1;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(v.fill_height(f));
+    f = f > 0.9 ? 0.1 : f + 0.01;
+  }
+}
+BENCHMARK(BM_FillHeight);
+
+void BM_MakeFrame(benchmark::State& state) {
+  Params p = glass_params("pint");
+  for (auto _ : state) benchmark::DoNotOptimize(make_frame(p));
+}
+BENCHMARK(BM_MakeFrame);
+
+// The reference intersector over a 64x64 view of the pint (rays per second).
+void BM_ReferenceFirstHit(benchmark::State& state) {
+  FrameState f = make_frame(glass_params("pint"));
+  SceneGeometry geo = scene_geometry(f);
+  CameraBasis cam = camera_basis(f.camera, 64, 64);
+  for (auto _ : state)
+    for (int y = 0; y < 64; ++y)
+      for (int x = 0; x < 64; ++x) benchmark::DoNotOptimize(first_hit(geo, camera_ray(cam, x + 0.5, y + 0.5, 64, 64)));
+  state.SetItemsProcessed(state.iterations() * 64 * 64);
+}
+BENCHMARK(BM_ReferenceFirstHit);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,103 @@
+// Golden images: canonical scenes at small size compared with tests/golden/*.png.
+// Each case has its own tolerance: a pixel fails when any channel differs by more
+// than `pixel_threshold`; the case fails when more than `max_failing_fraction` of
+// pixels fail or any channel differs by more than `max_abs_diff`. On failure (and on
+// --bless) the render and an amplified diff go to <build>/golden-diff/.
+//
+// Re-bless deliberately with scripts/bless-goldens.sh, and look at every image.
+#include "core/image.hpp"
+#include "gpu_fixture.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+namespace draught::test {
+namespace {
+
+struct GoldenCase {
+  const char* name;
+  SceneRequest request;
+  int width, height;
+  int pixel_threshold;
+  double max_failing_fraction;
+  int max_abs_diff;
+};
+
+struct Comparison {
+  int max_abs = 0;
+  long failing = 0;
+  Image diff;
+};
+
+Comparison compare(const Image& a, const Image& b, int threshold) {
+  Comparison c;
+  c.diff = a;
+  for (size_t i = 0; i < a.rgba.size(); i += 4) {
+    int worst = 0;
+    for (size_t k = 0; k < 4; ++k) {
+      int d = std::abs(int(a.rgba[i + k]) - int(b.rgba[i + k]));
+      worst = std::max(worst, d);
+      if (k < 3) c.diff.rgba[i + k] = std::uint8_t(std::min(255, d * 16));
+    }
+    c.diff.rgba[i + 3] = 255;
+    c.max_abs = std::max(c.max_abs, worst);
+    if (worst > threshold) ++c.failing;
+  }
+  return c;
+}
+
+void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.name; }
+
+class Golden : public ::testing::TestWithParam<GoldenCase> {};
+
+TEST_P(Golden, MatchesBlessedImage) {
+  const GoldenCase& c = GetParam();
+  Gpu& g = gpu_instance();
+  Image img = g.renderer->render(scene_frame(c.request), c.width, c.height);
+  const std::filesystem::path golden = std::filesystem::path(DRAUGHT_GOLDEN_DIR) / (std::string(c.name) + ".png");
+  const std::filesystem::path diff_dir = DRAUGHT_DIFF_DIR;
+  std::filesystem::create_directories(diff_dir);
+  if (g_bless) {
+    write_png(golden, img);
+    write_png(diff_dir / (std::string(c.name) + ".png"), img);
+    std::printf("blessed %s (look at it)\n", golden.string().c_str());
+    return;
+  }
+  ASSERT_TRUE(std::filesystem::exists(golden)) << golden << " is missing: run scripts/bless-goldens.sh";
+  Image expected = read_png(golden);
+  ASSERT_EQ(expected.width, img.width);
+  ASSERT_EQ(expected.height, img.height);
+  Comparison cmp = compare(img, expected, c.pixel_threshold);
+  const double fraction = double(cmp.failing) / (double(img.width) * img.height);
+  std::printf("[%s] max abs diff %d, failing pixels %ld (%.3f %%)\n", c.name, cmp.max_abs, cmp.failing,
+              100.0 * fraction);
+  if (fraction > c.max_failing_fraction || cmp.max_abs > c.max_abs_diff) {
+    write_png(diff_dir / (std::string(c.name) + ".actual.png"), img);
+    write_png(diff_dir / (std::string(c.name) + ".diff.png"), cmp.diff);
+  }
+  EXPECT_LE(fraction, c.max_failing_fraction) << "see " << diff_dir.string();
+  EXPECT_LE(cmp.max_abs, c.max_abs_diff) << "see " << diff_dir.string();
+}
+
+// llvmpipe is byte-exact on one CPU type; another CPU's feature set may move a few
+// silhouette pixels, hence small non-zero tolerances.
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, Golden,
+    ::testing::Values(
+        GoldenCase{"pint_lager", {"lager", "pint", {}, {}}, 160, 160, 3, 0.002, 64},
+        GoldenCase{"nonic_stout", {"stout", "nonic", {}, {}}, 160, 160, 3, 0.002, 64},
+        GoldenCase{"wine_red", {"red-wine", "wine", {}, {}}, 128, 192, 3, 0.002, 64},
+        GoldenCase{"tulip_amber_constant_env",
+                   {"amber-ale", "tulip", {"env.mode=constant", "env.floor=false", "render.tonemap=none"}, {}},
+                   160, 160, 3, 0.002, 64},
+        GoldenCase{"weizen_hefeweizen_transparent", {"hefeweizen", "weizen", {"render.transparent=true"}, {}}, 128,
+                   192, 3, 0.002, 64},
+        GoldenCase{"pint_lager_above", {"lager", "pint", {}, {"eye=0.08,0.32,0.2", "target=0,0.07,0"}}, 160, 160, 3,
+                   0.002, 64}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace draught::test
