@@ -218,9 +218,12 @@ class CliTest : public ::testing::Test {
     return run_draught(args, dir_ / "cap", env);
   }
 
-  // A small, fast render: 1 sample per pixel unless the args say otherwise.
+  // A small, fast render: `size`, 1 sample per pixel, unless the args say otherwise.
   RunResult render(std::vector<std::string> args, const std::string& size = "32x32") {
-    std::vector<std::string> a = {"render", "--size", size, "--supersample", "1"};
+    auto has = [&](const char* opt) { return std::find(args.begin(), args.end(), opt) != args.end(); };
+    std::vector<std::string> a = {"render"};
+    if (!has("--size") && !has("-s")) a.insert(a.end(), {"--size", size});
+    if (!has("--supersample")) a.insert(a.end(), {"--supersample", "1"});
     a.insert(a.end(), args.begin(), args.end());
     return draught(a);
   }

@@ -313,7 +313,9 @@ TEST_F(Listing, ParamsPrintsEveryParameter) {
       std::snprintf(range, sizeof range, "[%g, %g]", double(d.min), double(d.max));
       EXPECT_TRUE(contains(row, range)) << "range " << range << " missing: " << row;
     }
-    if (!d.unit.empty()) EXPECT_TRUE(contains(row, " " + d.unit + " ")) << "unit " << d.unit << " missing: " << row;
+    if (!d.unit.empty()) {
+      EXPECT_TRUE(contains(row, " " + d.unit + " ")) << "unit " << d.unit << " missing: " << row;
+    }
   }
 }
 
