@@ -122,13 +122,15 @@ vec4 solve_quartic(float b, float c, float d, float e) {
   float r = e - b * d / 4.0 + b2 * c / 16.0 - 3.0 * b2 * b2 / 256.0;
   vec4 roots = vec4(INF);
   vec2 x;
-  if (abs(q) < 1e-7 * max(1.0, abs(p) * sqrt(abs(p)))) {
+  // Near q = 0 Ferrari's m -> 0 and q / sqrt(m) is noise: solve the biquadratic instead
+  // and let the Newton polish restore q (as core/intersect.cpp).
+  float scale = max(1.0, max(abs(p), sqrt(abs(r))));
+  float m = abs(q) > 1e-7 * scale * sqrt(scale) ? cubic_largest_root(p, p * p / 4.0 - r, -q * q / 8.0) : 0.0;
+  if (m <= 1e-6 * scale) {
     int k = solve_quadratic(1.0, p, r, x);
     if (k > 0 && x.x >= 0.0) roots.xy = vec2(sqrt(x.x), -sqrt(x.x));
     if (k > 1 && x.y >= 0.0) roots.zw = vec2(sqrt(x.y), -sqrt(x.y));
   } else {
-    float m = cubic_largest_root(p, p * p / 4.0 - r, -q * q / 8.0);
-    if (m <= 0.0) return roots;
     float s = sqrt(2.0 * m);
     if (solve_quadratic(1.0, -s, p / 2.0 + m + q / (2.0 * s), x) > 0) roots.xy = x;
     if (solve_quadratic(1.0, s, p / 2.0 + m - q / (2.0 * s), x) > 0) roots.zw = x;

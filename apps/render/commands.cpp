@@ -6,6 +6,7 @@
 #include "gpu/context.hpp"
 #include "gpu/renderer.hpp"
 
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -14,9 +15,13 @@ namespace draught::cli {
 
 
 void parse_size(const std::string& text, int& w, int& h) {
-  char x;
-  if (std::sscanf(text.c_str(), "%d%c%d", &w, &x, &h) != 3 || x != 'x' || w < 1 || h < 1 || w > 8192 ||
-      h > 8192)
+  auto x = text.find('x');
+  auto whole_number = [](std::string_view s, int& out) {
+    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+    return ec == std::errc() && end == s.data() + s.size();
+  };
+  if (x == std::string::npos || !whole_number(std::string_view(text).substr(0, x), w) ||
+      !whole_number(std::string_view(text).substr(x + 1), h) || w < 1 || h < 1 || w > 8192 || h > 8192)
     throw InputError("--size " + text + ": expected WIDTHxHEIGHT, each from 1 to 8192, e.g. 512x512");
 }
 

@@ -62,7 +62,18 @@ int solve_quartic(double b, double c, double d, double e, double roots[4]) {
   const double r = e - b * d / 4 + b2 * c / 16 - 3 * b2 * b2 / 256;
   int n = 0;
   double tmp[2];
-  if (std::fabs(q) < 1e-14 * std::max(1.0, std::fabs(p) * std::sqrt(std::fabs(p)))) {
+  // Ferrari needs the resolvent's positive root m; when q ~ 0, m ~ 0 and q / sqrt(m)
+  // is all cancellation error. Then solve the biquadratic y^4 + p y^2 + r (q dropped)
+  // and let the Newton polish below restore the small q term.
+  const double scale = std::max({1.0, std::fabs(p), std::sqrt(std::fabs(r))});
+  double m = 0;
+  if (std::fabs(q) > 1e-14 * scale * std::sqrt(scale)) {
+    double cub[3];
+    int k = solve_cubic(p, p * p / 4 - r, -q * q / 8, cub);
+    m = cub[0];
+    for (int i = 1; i < k; ++i) m = std::max(m, cub[i]);
+  }
+  if (m <= 1e-12 * scale) {
     int k = solve_quadratic(1, p, r, tmp);
     for (int i = 0; i < k; ++i)
       if (tmp[i] >= 0) {
@@ -70,11 +81,6 @@ int solve_quartic(double b, double c, double d, double e, double roots[4]) {
         roots[n++] = -std::sqrt(tmp[i]);
       }
   } else {
-    double cub[3];
-    int k = solve_cubic(p, p * p / 4 - r, -q * q / 8, cub);
-    double m = cub[0];
-    for (int i = 1; i < k; ++i) m = std::max(m, cub[i]);
-    if (m <= 0) return 0;
     const double s = std::sqrt(2 * m);
     int k1 = solve_quadratic(1, -s, p / 2 + m + q / (2 * s), tmp);
     for (int i = 0; i < k1; ++i) roots[n++] = tmp[i];

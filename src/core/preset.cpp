@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 
 namespace draught {
@@ -37,10 +38,13 @@ ParamValue value_from_json(const ParamDesc& d, const json& j, const std::string&
       if (!j.is_number()) return fail();
       v = j.get<float>();
       break;
-    case ParamType::Int:
+    case ParamType::Int: {
       if (!j.is_number_integer()) return fail();
-      v = j.get<int>();
+      const auto wide = j.get<std::int64_t>();  // range-checked before narrowing
+      if (wide < std::int64_t(d.min) || wide > std::int64_t(d.max)) return fail();
+      v = int(wide);
       break;
+    }
     case ParamType::Bool:
       if (!j.is_boolean()) return fail();
       v = j.get<bool>();
@@ -261,8 +265,15 @@ Params resolve_scene(const SceneRequest& req, std::string* log) {
                                                                   : "pint";
   // A scene that sets its own glass and names none keeps it.
   const bool scene_sets_glass = drink.kind == "scene" && req.glass.empty() && drink.suggested_glass.empty();
+  if (drink.kind != "drink" && drink.kind != "scene")
+    throw InputError(drink.file + ": field 'kind': expected \"drink\" or \"scene\" for --preset, got \"" +
+                     drink.kind + "\"");
   Preset glass;
-  if (!scene_sets_glass) glass = load_preset(find_preset(glass_name, "glass"));
+  if (!scene_sets_glass) {
+    glass = load_preset(find_preset(glass_name, "glass"));
+    if (glass.kind != "glass")
+      throw InputError(glass.file + ": field 'kind': expected \"glass\" for --glass, got \"" + glass.kind + "\"");
+  }
   std::vector<std::pair<const ParamDesc*, ParamValue>> overrides;
   for (const auto& c : req.camera) {
     auto eq = c.find('=');

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace draught::gpu {
@@ -73,7 +74,9 @@ struct Renderer::Target {
   ~Target() { release(); }
 };
 
-Renderer::Renderer(const std::filesystem::path& shader_dir) {
+Renderer::Renderer(const std::filesystem::path& shader_dir_arg) {
+  std::filesystem::path shader_dir = shader_dir_arg;
+  if (const char* env = std::getenv("DRAUGHT_SHADER_DIR"); shader_dir.empty() && env && *env) shader_dir = env;
   program_ = std::make_unique<Program>(assemble_shader("fullscreen.vert.glsl", shader_dir),
                                        assemble_shader("vessel.frag.glsl", shader_dir));
   GLuint block = glGetUniformBlockIndex(program_->id(), "Frame");
