@@ -83,9 +83,13 @@ std::vector<ParamDesc> make_table() {
 #undef ENUM_ROW
 #undef DRAUGHT_FIELD
 
+// The shortest decimal text that reads back as the same float.
 std::string fmt(float v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", double(v));
+  for (int digits = 6; digits <= 9; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, double(v));
+    if (std::strtof(buf, nullptr) == v) break;
+  }
   return buf;
 }
 
@@ -283,7 +287,7 @@ ParamValue parse_param_text(const ParamDesc& d, std::string_view text) {
     }
     case ParamType::Int: {
       float x;
-      if (!parse_float(text, x) || x != std::floor(x)) return fail();
+      if (!parse_float(text, x) || x != std::floor(x) || x < d.min || x > d.max) return fail();
       v = int(x);
       break;
     }

@@ -22,7 +22,7 @@ std::string short_dump(const json& j) {
 // Converts a JSON leaf to a typed value, or says what was expected.
 ParamValue value_from_json(const ParamDesc& d, const json& j, const std::string& file) {
   auto fail = [&]() -> ParamValue {
-    throw InputError(file + ": field '" + d.path + "': expected " + expected_text(d) + ", got " + short_dump(j));
+    throw InputError(file + ": field 'params." + d.path + "': expected " + expected_text(d) + ", got " + short_dump(j));
   };
   auto num3 = [&](const json& a, glm::vec3& out) {
     if (!a.is_array() || a.size() != 3) return false;
@@ -74,7 +74,7 @@ ParamValue value_from_json(const ParamDesc& d, const json& j, const std::string&
   try {
     validate_value(d, v);
   } catch (const ParamError& e) {
-    throw InputError(file + ": field '" + d.path + "': expected " + e.expected + ", got " + short_dump(j));
+    throw InputError(file + ": field 'params." + d.path + "': expected " + e.expected + ", got " + short_dump(j));
   }
   return v;
 }
@@ -82,12 +82,14 @@ ParamValue value_from_json(const ParamDesc& d, const json& j, const std::string&
 void collect(const json& obj, const std::string& prefix, const std::string& file, Preset& out) {
   for (auto& [key, val] : obj.items()) {
     const std::string path = prefix.empty() ? key : prefix + "." + key;
+    bool is_group = false;
+    for (auto& d : param_table()) is_group |= d.path.rfind(path + ".", 0) == 0;
     if (const ParamDesc* d = find_param(path)) {
       out.values.emplace_back(d, value_from_json(*d, val, file));
-    } else if (val.is_object()) {
-      bool is_group = false;
-      for (auto& d : param_table()) is_group |= d.path.rfind(path + ".", 0) == 0;
-      if (!is_group) throw InputError(file + ": field 'params." + path + "': " + unknown_param_message(path));
+    } else if (is_group) {
+      if (!val.is_object())
+        throw InputError(file + ": field 'params." + path + "': expected an object of " + path +
+                         ".* parameters, got " + short_dump(val));
       collect(val, path, file, out);
     } else {
       throw InputError(file + ": field 'params." + path + "': " + unknown_param_message(path));

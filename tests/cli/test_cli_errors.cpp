@@ -254,7 +254,7 @@ TEST_F(BadInput, ValidateBadFileExitsOne) {
   auto f = preset_file("range.json", replace(kGoodDrink, "0.5", "1.5"));
   auto r = draught({"validate", f.string()});
   EXPECT_EQ(r.exit_code, 1) << r.describe();
-  EXPECT_TRUE(contains(r.err, f.string() + ": field 'liquid.fill': expected a number in [0, 0.98], got 1.5"))
+  EXPECT_TRUE(contains(r.err, f.string() + ": field 'params.liquid.fill': expected a number in [0, 0.98], got 1.5"))
       << r.describe();
 }
 
