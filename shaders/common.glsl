@@ -51,6 +51,9 @@ const int M_GLASS_BOTTOM = 5;
 const int M_CAVITY_FLOOR = 6;
 const int M_LIQUID_SURFACE = 7;
 
+// Intersection work done by this pixel (segments and tori solved), for the cost view.
+int g_cost = 0;
+
 struct Hit {
   float t;
   vec3 n;  // glass: out of the glass; liquid surface and floor: up

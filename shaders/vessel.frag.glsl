@@ -33,7 +33,7 @@ void main() {
   vec3 o = u_cam_eye.xyz;
   vec3 d = camera_dir(gl_FragCoord.xy);
   int debug_view = int(u_output.w + 0.5);
-  if (debug_view != 0) {
+  if (debug_view == 1 || debug_view == 2) {
     Hit h = scene_hit(o, d, AIR, 0.0);
     bool hit = h.m != M_NONE;
     frag_color = debug_view == 2 ? vec4(h.n, float(h.m)) : vec4(hit ? h.t : 0.0, float(h.m), 0.0, 1.0);
@@ -90,6 +90,10 @@ void main() {
     }
   }
 
+  if (debug_view == 4) {  // cost: intersection tests this pixel needed, events followed
+    frag_color = vec4(float(g_cost), 0.0, 0.0, 1.0);
+    return;
+  }
   vec3 c = radiance * u_output.y;
   c = u_output.x > 0.5 ? aces_filmic(c) : c;
   float alpha = transparent ? clamp(1.0 - see_through, 0.0, 1.0) : 1.0;

@@ -76,6 +76,7 @@ Hit hit_wall(vec3 o, vec3 d, bool inner, float tmin) {
   float A0 = dot(d.xz, d.xz), B0 = dot(o.xz, d.xz), C0 = dot(o.xz, o.xz);
   int k = k0;
   for (int i = 0; i < count; ++i, k += stp) {
+    ++g_cost;
     float r0 = inner ? u_knots[k].y : u_knots[k].x;
     float r1 = inner ? u_knots[k + 1].y : u_knots[k + 1].x;
     float y0 = float(k) * u_vessel.z, y1 = y0 + u_vessel.z;
@@ -154,6 +155,7 @@ Hit hit_rim(vec3 o, vec3 d, float tmin) {
   vec2 tr;
   if (!clip_to_bounds(o, d, H - rr, H + rr, R + rr, tmin, tr)) return no_hit();
   // Solve from the bound entry, in units of the major radius (keeps floats well scaled).
+  ++g_cost;
   vec3 lo = (o + tr.x * d - vec3(0.0, H, 0.0)) / R;
   float r = rr / R;
   float m = dot(lo, lo), nn = dot(lo, d), K = m + 1.0 - r * r;

@@ -43,7 +43,8 @@ int bench(int frames, const std::vector<int>& sizes, bool verbose) {
   std::printf("renderer: %s (%s)%s%s; %d frames per row after 2 warm-up frames; %u hardware threads\n",
               ctx->renderer().c_str(), ctx->platform().c_str(), threads ? "; LP_NUM_THREADS=" : "",
               threads ? threads : "", frames, std::thread::hardware_concurrency());
-  std::printf("%-24s %-9s %10s %10s %10s %8s\n", "scene", "size", "median ms", "min ms", "max ms", "fps");
+  std::printf("%-24s %-9s %10s %10s %10s %8s %10s %9s\n", "scene", "size", "median ms", "min ms", "max ms", "fps",
+              "tests/px", "max/px");
   for (const auto& s : scenes) {
     std::string log;
     Params p = resolve_scene(s.request, &log);
@@ -69,11 +70,20 @@ int bench(int frames, const std::vector<int>& sizes, bool verbose) {
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       glDeleteFramebuffers(1, &fbo);
       glDeleteTextures(1, &tex);
+      // Work per pixel: intersection tests over the whole path (analytic bound, no marching).
+      gpu::DebugImage cost = renderer.render_debug(f, size, size, gpu::DebugView::Cost);
+      double cost_sum = 0, cost_max = 0;
+      for (size_t i = 0; i < cost.rgba.size(); i += 4) {
+        cost_sum += cost.rgba[i];
+        cost_max = std::max(cost_max, double(cost.rgba[i]));
+      }
+      const double cost_mean = cost_sum / (double(size) * size);
       double med = median(ms);
       char sz[32];
       std::snprintf(sz, sizeof sz, "%dx%d", size, size);
-      std::printf("%-24s %-9s %10.2f %10.2f %10.2f %8.1f\n", s.name, sz, med,
-                  *std::min_element(ms.begin(), ms.end()), *std::max_element(ms.begin(), ms.end()), 1000.0 / med);
+      std::printf("%-24s %-9s %10.2f %10.2f %10.2f %8.1f %10.1f %9.0f\n", s.name, sz, med,
+                  *std::min_element(ms.begin(), ms.end()), *std::max_element(ms.begin(), ms.end()), 1000.0 / med,
+                  cost_mean, cost_max);
       std::fflush(stdout);
     }
   }

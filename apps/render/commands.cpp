@@ -32,7 +32,8 @@ int render(const RenderRequest& req) {
   if (req.debug == "depth") view = gpu::DebugView::Depth;
   else if (req.debug == "normal") view = gpu::DebugView::Normal;
   else if (req.debug == "material") view = gpu::DebugView::Material;
-  else if (!req.debug.empty()) throw InputError("--debug " + req.debug + ": expected depth, normal or material");
+  else if (req.debug == "cost") view = gpu::DebugView::Cost;
+  else if (!req.debug.empty()) throw InputError("--debug " + req.debug + ": expected depth, normal, material or cost");
 
   std::string log;
   const Params params = resolve_scene(req.scene, &log);

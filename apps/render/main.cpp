@@ -31,8 +31,9 @@ int main(int argc, char** argv) {
   render->add_option("--set", rr.scene.sets, "Set a parameter: path=value (see `draught params`); repeatable")
       ->allow_extra_args(false);
   render->add_option("--camera", rr.scene.camera, "Camera: eye=x,y,z target=x,y,z vfov=degrees")->expected(1, 3);
-  render->add_option("--debug", rr.debug, "Write a debug view instead: depth, normal or material")
-      ->check(CLI::IsMember({"depth", "normal", "material"}));
+  render->add_option("--debug", rr.debug,
+                     "Write a debug view instead: depth, normal, material, or cost (intersection tests per pixel)")
+      ->check(CLI::IsMember({"depth", "normal", "material", "cost"}));
   render->add_option("--tonemap", tonemap, "Output transform: none or aces")->check(CLI::IsMember({"none", "aces"}));
   render->add_flag("--transparent", transparent, "Transparent background, premultiplied alpha");
   render->add_option("--supersample", supersample, "Anti-aliasing: samples per axis (1-4)")

@@ -160,6 +160,8 @@ Image visualize_debug(const DebugImage& d, DebugView view) {
       } else if (view == DebugView::Normal) {
         for (int c = 0; c < 3; ++c) o[c] = std::uint8_t(std::lround(std::clamp(s[c] * 0.5f + 0.5f, 0.0f, 1.0f) * 255));
         if (s[3] == 0) o[0] = o[1] = o[2] = 0;
+      } else if (view == DebugView::Cost) {  // 0 tests black, 64 or more white
+        o[0] = o[1] = o[2] = std::uint8_t(std::lround(std::clamp(s[0] / 64.0f, 0.0f, 1.0f) * 255));
       } else {
         int m = std::clamp(int(std::lround(s[1])), 0, 7);
         for (int c = 0; c < 3; ++c) o[c] = palette[m][c];

@@ -14,10 +14,11 @@ namespace draught::gpu {
 
 class Program;
 
-enum class DebugView { None = 0, Depth = 1, Normal = 2, Material = 3 };
+enum class DebugView { None = 0, Depth = 1, Normal = 2, Material = 3, Cost = 4 };
 
 // Raw debug channels per pixel, rows top-down: Depth/Material: (t, material, 0, 1);
-// Normal: (nx, ny, nz, material). t is the distance to the first surface, 0 for none.
+// Normal: (nx, ny, nz, material); Cost: (segment and torus intersections solved for
+// the whole path, 0, 0, 1). t is the distance to the first surface, 0 for none.
 struct DebugImage {
   int width = 0, height = 0;
   std::vector<float> rgba;

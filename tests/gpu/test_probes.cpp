@@ -137,3 +137,29 @@ TEST(Probe, LiquidSurfaceAtSolvedFillHeight) {
 
 }  // namespace
 }  // namespace draught::test
+
+namespace draught::test {
+namespace {
+
+// The work per pixel is bounded analytically: only segments a ray's height range
+// crosses are tested, so the mean stays small, and no pixel exceeds the hard bound
+// of max_events x (inner + outer segments + the torus).
+TEST(Probe, IntersectionWorkPerPixelIsBounded) {
+  Gpu& g = gpu_instance();
+  FrameState f = scene_frame({"lager", "pint", {}, {}});
+  const int n = 96;
+  gpu::DebugImage cost = g.renderer->render_debug(f, n, n, gpu::DebugView::Cost);
+  double sum = 0, worst = 0;
+  for (size_t i = 0; i < cost.rgba.size(); i += 4) {
+    sum += cost.rgba[i];
+    worst = std::max(worst, double(cost.rgba[i]));
+  }
+  const double mean = sum / (n * n);
+  std::printf("intersection tests per pixel: mean %.1f, max %.0f\n", mean, worst);
+  EXPECT_GT(mean, 1.0);  // the view does see the glass
+  EXPECT_LT(mean, 16.0);
+  EXPECT_LE(worst, f.params.render.max_events * (2 * Vessel::kSegments + 1));
+}
+
+}  // namespace
+}  // namespace draught::test
