@@ -115,6 +115,10 @@ Preset parse_preset(const std::string& text, const std::string& file) {
     auto p = what.find(": ", what.find("parse error"));
     throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(col) +
                      ": malformed JSON: " + (p == std::string::npos ? what : what.substr(p + 2)));
+  } catch (const json::exception& e) {  // e.g. a number too large for a double
+    std::string what = e.what();
+    auto p = what.find("] ");
+    throw InputError(file + ": malformed JSON: " + (p == std::string::npos ? what : what.substr(p + 2)));
   }
   if (!j.is_object()) throw InputError(file + ": expected a JSON object at the top level");
   Preset p;
