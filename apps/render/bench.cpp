@@ -6,8 +6,6 @@
 #include "gpu/context.hpp"
 #include "gpu/renderer.hpp"
 
-#include <GLES3/gl3.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -52,13 +50,7 @@ int bench(int frames, const std::vector<int>& sizes, bool verbose) {
     p.render.supersample = 1;
     FrameState f = make_frame(p);
     for (int size : sizes) {
-      GLuint tex, fbo;
-      glGenTextures(1, &tex);
-      glBindTexture(GL_TEXTURE_2D, tex);
-      glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, size, size);
-      glGenFramebuffers(1, &fbo);
-      glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+      gpu::RenderTarget target(size, size, false);
       std::vector<double> ms;
       for (int i = 0; i < frames + 2; ++i) {
         auto t0 = std::chrono::steady_clock::now();
@@ -67,9 +59,6 @@ int bench(int frames, const std::vector<int>& sizes, bool verbose) {
         double dt = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         if (i >= 2) ms.push_back(dt);
       }
-      glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      glDeleteFramebuffers(1, &fbo);
-      glDeleteTextures(1, &tex);
       // Work per pixel: intersection tests over the whole path (analytic bound, no marching).
       gpu::DebugImage cost = renderer.render_debug(f, size, size, gpu::DebugView::Cost);
       double cost_sum = 0, cost_max = 0;

@@ -48,31 +48,29 @@ FrameUniforms pack_uniforms(const FrameState& f, int width, int height, DebugVie
   return u;
 }
 
-// An offscreen colour target: RGBA8 for pictures, RGBA32F for debug channels.
-struct Renderer::Target {
-  GLuint fbo = 0, tex = 0;
-  Target(int w, int h, bool float_target) {
-    glGenTextures(1, &tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    glTexStorage2D(GL_TEXTURE_2D, 1, float_target ? GL_RGBA32F : GL_RGBA8, w, h);
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      release();
-      throw std::runtime_error(float_target ? "float render targets are not supported by this GL driver "
-                                              "(EXT_color_buffer_float); debug views need them"
-                                            : "cannot create an offscreen framebuffer");
-    }
+RenderTarget::RenderTarget(int w, int h, bool float_target) {
+  glGenTextures(1, &tex_);
+  glBindTexture(GL_TEXTURE_2D, tex_);
+  glTexStorage2D(GL_TEXTURE_2D, 1, float_target ? GL_RGBA32F : GL_RGBA8, w, h);
+  glGenFramebuffers(1, &fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex_, 0);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    release();
+    throw std::runtime_error(float_target ? "float render targets are not supported by this GL driver "
+                                            "(EXT_color_buffer_float); debug views need them"
+                                          : "cannot create an offscreen framebuffer");
   }
-  void release() {
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (fbo) glDeleteFramebuffers(1, &fbo);
-    if (tex) glDeleteTextures(1, &tex);
-    fbo = tex = 0;
-  }
-  ~Target() { release(); }
-};
+}
+
+void RenderTarget::release() {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (fbo_) glDeleteFramebuffers(1, &fbo_);
+  if (tex_) glDeleteTextures(1, &tex_);
+  fbo_ = tex_ = 0;
+}
+
+RenderTarget::~RenderTarget() { release(); }
 
 Renderer::Renderer(const std::filesystem::path& shader_dir_arg) {
   std::filesystem::path shader_dir = shader_dir_arg;
@@ -116,7 +114,7 @@ void Renderer::finish() { glFinish(); }
 Image Renderer::render(const FrameState& f, int width, int height) {
   const int ss = std::clamp(f.params.render.supersample, 1, 4);
   const int w = width * ss, h = height * ss;
-  Target target(w, h, false);
+  RenderTarget target(w, h, false);
   draw(f, w, h);
   Image img{w, h, std::vector<std::uint8_t>(size_t(w) * size_t(h) * 4)};
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -128,7 +126,7 @@ Image Renderer::render(const FrameState& f, int width, int height) {
 }
 
 DebugImage Renderer::render_debug(const FrameState& f, int width, int height, DebugView view) {
-  Target target(width, height, true);
+  RenderTarget target(width, height, true);
   draw(f, width, height, view);
   DebugImage out{width, height, std::vector<float>(size_t(width) * size_t(height) * 4)};
   std::vector<float> rows(out.rgba.size());

@@ -27,6 +27,20 @@ struct DebugImage {
 
 FrameUniforms pack_uniforms(const FrameState&, int width, int height, DebugView);
 
+// An offscreen colour target, bound on creation: RGBA8 for pictures, RGBA32F for debug
+// channels. Unbinds and frees itself when it goes out of scope.
+class RenderTarget {
+ public:
+  RenderTarget(int width, int height, bool float_target);
+  ~RenderTarget();
+  RenderTarget(const RenderTarget&) = delete;
+  RenderTarget& operator=(const RenderTarget&) = delete;
+
+ private:
+  void release();
+  unsigned fbo_ = 0, tex_ = 0;
+};
+
 class Renderer {
  public:
   // Needs a current GLES 3.0 context. Compiles the shaders (embedded, or from
@@ -42,7 +56,6 @@ class Renderer {
   void finish();
 
  private:
-  struct Target;
   std::unique_ptr<Program> program_;
   unsigned vao_ = 0, ubo_ = 0;
 };
