@@ -15,7 +15,7 @@ layout(std140) uniform Frame {
   vec4 u_rim;           // major, minor, bound radius, bottom outer radius
   vec4 u_glass;         // ior, roughness, cavity floor radius, mean outer radius
   vec4 u_glass_absorb;  // rgb per metre
-  vec4 u_liquid_plane;  // normal xyz, offset (dot(n, p) = offset)
+  vec4 u_liquid_plane;  // surface normal xyz (glass frame), volume fraction of the cavity
   vec4 u_liquid;        // ior, roughness, haze per metre, has liquid
   vec4 u_liquid_absorb; // rgb per metre
   vec4 u_haze_color;
@@ -30,6 +30,11 @@ layout(std140) uniform Frame {
   vec4 u_floor_b;
   vec4 u_output;        // tonemap, exposure, transparent, debug view
   ivec4 u_limits;       // max events
+  vec4 u_pose_x;        // the glass's local axes in the world (rotation columns)
+  vec4 u_pose_y;
+  vec4 u_pose_z;
+  vec4 u_pose_pos;      // where the glass's foot centre is in the world
+  vec4 u_waves;         // ring, cross cos 2a, cross sin 2a, radius (core/slosh.hpp)
   vec4 u_knots[SEGMENTS + 1];  // outer radius, inner radius at y = k * dy
 };
 
@@ -50,6 +55,16 @@ const int M_RIM = 4;
 const int M_GLASS_BOTTOM = 5;
 const int M_CAVITY_FLOOR = 6;
 const int M_LIQUID_SURFACE = 7;
+
+// The fill table: plane offsets over (tilt row, volume column), core/fill_table.hpp.
+uniform highp sampler2D u_fill_table;
+
+// All intersections happen in the glass's frame; the surroundings are in the world.
+mat3 pose_rotation() { return mat3(u_pose_x.xyz, u_pose_y.xyz, u_pose_z.xyz); }
+vec3 to_world_dir(vec3 v) { return pose_rotation() * v; }
+vec3 to_local_dir(vec3 v) { return v * pose_rotation(); }
+vec3 to_world_point(vec3 p) { return pose_rotation() * p + u_pose_pos.xyz; }
+vec3 to_local_point(vec3 p) { return (p - u_pose_pos.xyz) * pose_rotation(); }
 
 // Intersection work done by this pixel (segments and tori solved), for the cost view.
 int g_cost = 0;

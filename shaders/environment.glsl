@@ -34,9 +34,9 @@ vec3 ambient_light() {
 
 // Light reaching a floor point past the glass: a soft shadow tinted by the drink, with
 // the glass focusing light into a caustic in the middle of it. Analytic: the glass is
-// taken as a cylinder of its mean radius for this purpose.
+// taken as a cylinder of its mean radius for this purpose. p in the glass's frame.
 vec3 floor_light_transmission(vec3 p) {
-  vec3 l = normalize(u_light_dir.xyz);
+  vec3 l = to_local_dir(normalize(u_light_dir.xyz));
   float rad = u_glass.w;
   // Closest approach of the shadow ray p + s l to the axis.
   vec2 dxz = l.xz;
@@ -49,31 +49,35 @@ vec3 floor_light_transmission(vec3 p) {
   float edge = smoothstep(rad * 1.05, rad * 0.9, dist);
   if (edge <= 0.0) return vec3(1.0);
   float chord = 2.0 * sqrt(max(rad * rad - dist * dist, 0.0));
-  float liquid_top = u_liquid.w > 0.5 ? u_liquid_plane.w : -1.0;
-  vec3 through = y < liquid_top ? exp(-u_liquid_absorb.rgb * chord) : vec3(0.85);
+  bool wet = u_liquid.w > 0.5 && liquid_level(vec3(0.0, y, 0.0)) < 0.0;
+  vec3 through = wet ? exp(-u_liquid_absorb.rgb * chord) : vec3(0.85);
   float x = dist / rad;
-  float caustic = y < liquid_top ? 0.45 + 1.6 * pow(max(1.0 - x * x, 0.0), 6.0) : 0.75;
+  float caustic = wet ? 0.45 + 1.6 * pow(max(1.0 - x * x, 0.0), 6.0) : 0.75;
   return mix(vec3(1.0), through * caustic, edge);
 }
 
+// p in the glass's frame; the checker is laid out in the world.
 vec3 shade_floor(vec3 p, float dist) {
-  vec2 cell = floor(p.xz / u_floor_a.w);
+  vec2 cell = floor(to_world_point(p).xz / u_floor_a.w);
   bool light_square = mod(cell.x + cell.y, 2.0) < 0.5;
   vec3 albedo = light_square ? u_floor_a.rgb : u_floor_b.rgb;
   vec3 l = normalize(u_light_dir.xyz);
-  float r = length(p.xz);
-  float contact = 1.0 - 0.55 * exp(-max(r - u_rim.w, 0.0) / (0.25 * u_rim.w));
+  // Contact shadow: darker near the foot (which lifts off the floor when the glass tips).
+  float foot_dist = length(vec2(max(length(p.xz) - u_rim.w, 0.0), p.y));
+  float contact = 1.0 - 0.55 * exp(-foot_dist / (0.25 * u_rim.w));
   vec3 light = ambient_light() * contact + u_light_color.rgb * u_light_dir.w * max(l.y, 0.0) * floor_light_transmission(p);
   vec3 c = albedo * light / PI * 1.6;
   // Far floor fades into the studio backdrop, so the checker never aliases at the horizon.
   return mix(u_ground.rgb, c, exp(-dist / 2.0));
 }
 
-// Everything that is not the glass: floor where the ray meets it, else the sky.
+// Everything that is not the glass: floor where the ray meets it, else the sky. The
+// ray is in the glass's frame.
 vec3 background(vec3 o, vec3 d) {
-  if (u_env.w > 0.5 && d.y < 0.0) {
-    float t = -o.y / d.y;
+  vec3 wd = to_world_dir(d);
+  if (u_env.w > 0.5 && wd.y < 0.0) {
+    float t = -to_world_point(o).y / wd.y;
     if (t > 0.0) return shade_floor(o + t * d, t);
   }
-  return studio_sky(d);
+  return studio_sky(wd);
 }

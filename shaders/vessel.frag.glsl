@@ -16,7 +16,7 @@ float medium_ior(int medium) {
 }
 
 bool below_liquid(vec3 p) {
-  return u_liquid.w > 0.5 && dot(u_liquid_plane.xyz, p) < u_liquid_plane.w;
+  return u_liquid.w > 0.5 && liquid_level(p) < 0.0;
 }
 
 // The medium on the far side of a surface, seen from `medium`.
@@ -30,13 +30,15 @@ int other_side(Hit h, int medium, vec3 p) {
 float surface_roughness(Hit h) { return h.m == M_LIQUID_SURFACE ? u_liquid.y : u_glass.y; }
 
 void main() {
-  vec3 o = u_cam_eye.xyz;
-  vec3 d = camera_dir(gl_FragCoord.xy);
+  // The path is followed in the glass's frame; the surroundings are looked up in the world.
+  vec3 o = to_local_point(u_cam_eye.xyz);
+  vec3 d = to_local_dir(camera_dir(gl_FragCoord.xy));
+  init_liquid();
   int debug_view = int(u_output.w + 0.5);
   if (debug_view == 1 || debug_view == 2) {
     Hit h = scene_hit(o, d, AIR, 0.0);
     bool hit = h.m != M_NONE;
-    frag_color = debug_view == 2 ? vec4(h.n, float(h.m)) : vec4(hit ? h.t : 0.0, float(h.m), 0.0, 1.0);
+    frag_color = debug_view == 2 ? vec4(to_world_dir(h.n), float(h.m)) : vec4(hit ? h.t : 0.0, float(h.m), 0.0, 1.0);
     return;
   }
 
@@ -44,7 +46,7 @@ void main() {
   vec3 radiance = vec3(0.0);
   vec3 thr = vec3(1.0);
   float see_through = 0.0;  // achromatic transmission to the background (alpha)
-  vec3 l = normalize(u_light_dir.xyz);
+  vec3 l = to_local_dir(normalize(u_light_dir.xyz));
   int medium = AIR;
   bool escaped = false;
   for (int e = 0; e < u_limits.x; ++e) {
@@ -57,7 +59,7 @@ void main() {
     if (medium == LIQUID) radiance += thr * haze_inscatter(h.t);
     thr *= medium_transmittance(medium, h.t);
     if (h.m == M_FLOOR) {
-      radiance += thr * shade_floor(p, length(p - u_cam_eye.xyz));
+      radiance += thr * shade_floor(p, length(to_world_point(p) - u_cam_eye.xyz));
       thr = vec3(0.0);
       break;
     }
@@ -72,7 +74,8 @@ void main() {
     if (F >= 1.0) {  // total internal reflection: stay in the medium
       d = refl;
     } else {
-      if (!transparent || medium != AIR) radiance += thr * F * (medium == AIR ? background(p, refl) : studio_sky(refl));
+      if (!transparent || medium != AIR)
+        radiance += thr * F * (medium == AIR ? background(p, refl) : studio_sky(to_world_dir(refl)));
       thr *= 1.0 - F;
       d = refract(d, n, n1 / n2);
       medium = next;
@@ -86,7 +89,7 @@ void main() {
       see_through = m;
       radiance += (thr - vec3(m)) * ambient_light();
     } else {
-      radiance += thr * (medium == AIR ? background(o, d) : studio_sky(d));
+      radiance += thr * (medium == AIR ? background(o, d) : studio_sky(to_world_dir(d)));
     }
   }
 

@@ -183,22 +183,95 @@ Hit hit_disk(vec3 o, vec3 d, float y, float rad, float tmin, vec3 n, int m) {
   return Hit(t, n, m);
 }
 
-Hit hit_liquid_surface(vec3 o, vec3 d, float tmin) {
-  if (u_liquid.w < 0.5) return no_hit();
-  float dn = dot(u_liquid_plane.xyz, d);
-  if (abs(dn) < 1e-12) return no_hit();
-  float t = (u_liquid_plane.w - dot(u_liquid_plane.xyz, o)) / dn;
-  vec3 p = o + t * d;
-  if (t <= tmin || p.y <= u_vessel.y || p.y >= u_vessel.x || length(p.xz) >= inner_radius(p.y)) return no_hit();
-  return Hit(t, u_liquid_plane.xyz, M_LIQUID_SURFACE);
+// The liquid surface: a plane whose offset keeps the volume (looked up in the fill
+// table, interpolated exactly as FillTable::offset_at), plus the slosh waves.
+const int TABLE_TILTS = 64;
+const int TABLE_VOLUMES = 64;
+const float TABLE_MAX_TILT = 0.75 * PI;
+
+float table_row(int row, int j, float fj) {
+  return mix(texelFetch(u_fill_table, ivec2(j, row), 0).r, texelFetch(u_fill_table, ivec2(j + 1, row), 0).r, fj);
 }
 
-Hit hit_floor(vec3 o, vec3 d, float tmin) {
-  if (u_env.w < 0.5 || d.y >= 0.0) return no_hit();
-  float t = -o.y / d.y;
+float fill_table_offset(float tilt, float fraction) {
+  float ti = clamp(tilt / TABLE_MAX_TILT, 0.0, 1.0) * float(TABLE_TILTS - 1);
+  float u = 0.5 - sin(asin(1.0 - 2.0 * clamp(fraction, 0.0, 1.0)) / 3.0);  // inverse of u^2 (3 - 2u)
+  float vj = u * float(TABLE_VOLUMES - 1);
+  int i = min(int(ti), TABLE_TILTS - 2), j = min(int(vj), TABLE_VOLUMES - 2);
+  float fi = ti - float(i), fj = vj - float(j);
+  float row_step = TABLE_MAX_TILT / float(TABLE_TILTS - 1);
+  float level = table_row(0, j, fj);
+  float r0 = table_row(i, j, fj) - cos(float(i) * row_step) * level;
+  float r1 = table_row(i + 1, j, fj) - cos(float(i + 1) * row_step) * level;
+  return cos(tilt) * level + mix(r0, r1, fi);
+}
+
+float g_liquid_offset = -1.0;  // set once per pixel by init_liquid()
+
+void init_liquid() {
+  vec3 n = u_liquid_plane.xyz;
+  if (u_liquid.w > 0.5) g_liquid_offset = fill_table_offset(atan(length(n.xz), n.y), u_liquid_plane.w);
+}
+
+bool has_waves() { return u_waves.x != 0.0 || u_waves.y != 0.0 || u_waves.z != 0.0; }
+
+// Beyond 1.25 radii the shapes hold their value there (as core/slosh.cpp).
+float wave_height(vec2 xz) {
+  vec2 q = xz / u_waves.w;
+  float u2 = dot(q, q);
+  if (u2 > 1.5625) {
+    q *= 1.25 / sqrt(u2);
+    u2 = 1.5625;
+  }
+  return u_waves.x * (1.0 - 3.0 * u2 + 1.5 * u2 * u2) + u_waves.y * (q.x * q.x - q.y * q.y) + u_waves.z * 2.0 * q.x * q.y;
+}
+
+vec2 wave_gradient(vec2 xz) {
+  vec2 q = xz / u_waves.w;
+  float u2 = dot(q, q);
+  if (u2 > 1.5625) return vec2(0.0);
+  float dr = u_waves.x * (-6.0 + 6.0 * u2);
+  return vec2(dr * q.x + 2.0 * u_waves.y * q.x + 2.0 * u_waves.z * q.y,
+              dr * q.y - 2.0 * u_waves.y * q.y + 2.0 * u_waves.z * q.x) / u_waves.w;
+}
+
+// Signed height of p over the surface: negative in the liquid.
+float liquid_level(vec3 p) {
+  return dot(u_liquid_plane.xyz, p) - g_liquid_offset - (has_waves() ? wave_height(p.xz) : 0.0);
+}
+
+Hit hit_liquid_surface(vec3 o, vec3 d, float tmin) {
+  if (u_liquid.w < 0.5) return no_hit();
+  vec3 n = u_liquid_plane.xyz;
+  float dn = dot(n, d);
+  if (abs(dn) < 1e-12) return no_hit();
+  float t = (g_liquid_offset - dot(n, o)) / dn;
+  if (has_waves()) {  // Newton steps from the plane onto the waves (as core/intersect.cpp)
+    for (int it = 0; it < 4; ++it) {
+      vec3 p = o + t * d;
+      vec2 g = wave_gradient(p.xz);
+      float slope = dn - dot(g, d.xz);
+      if (abs(slope) < 1e-12) break;
+      t -= liquid_level(p) / slope;
+    }
+  }
   vec3 p = o + t * d;
-  if (t <= tmin || length(p.xz) <= u_rim.w) return no_hit();
-  return Hit(t, vec3(0.0, 1.0, 0.0), M_FLOOR);
+  if (t <= tmin || p.y <= u_vessel.y || p.y >= u_vessel.x || length(p.xz) >= inner_radius(p.y)) return no_hit();
+  vec2 g = has_waves() ? wave_gradient(p.xz) : vec2(0.0);
+  return Hit(t, normalize(n - vec3(g.x, 0.0, g.y)), M_LIQUID_SURFACE);
+}
+
+// The floor is world y = 0: in the glass's frame a plane through the foot's contact.
+Hit hit_floor(vec3 o, vec3 d, float tmin) {
+  if (u_env.w < 0.5) return no_hit();
+  vec3 up = to_local_dir(vec3(0.0, 1.0, 0.0));
+  float dn = dot(up, d);
+  if (dn >= 0.0) return no_hit();
+  float t = (-u_pose_pos.y - dot(up, o)) / dn;
+  vec3 p = o + t * d;
+  // Where the glass stands on the floor, its foot is the surface.
+  if (t <= tmin || (abs(p.y) < 1e-5 && length(p.xz) <= u_rim.w)) return no_hit();
+  return Hit(t, up, M_FLOOR);
 }
 
 void keep_nearest(inout Hit best, Hit h) {

@@ -3,6 +3,7 @@
 #include "core/files.hpp"
 #include "core/frame.hpp"
 #include "core/preset.hpp"
+#include "core/timeline.hpp"
 #include "gpu/context.hpp"
 #include "gpu/renderer.hpp"
 
@@ -68,7 +69,14 @@ int validate(const std::vector<std::string>& files) {
   int bad = 0;
   for (const auto& f : files) {
     try {
-      Preset p = load_preset(f);
+      const std::string text = read_text_file(f);
+      if (text.find("\"draught_timeline\"") != std::string::npos) {
+        const Timeline t = parse_timeline(text, f);
+        std::printf("%s: ok (timeline '%s', %zu actions, %g s)\n", f.c_str(), t.name.c_str(), t.actions.size(),
+                    t.duration);
+        continue;
+      }
+      Preset p = parse_preset(text, f);
       std::printf("%s: ok (%s '%s', %zu parameters)\n", f.c_str(), p.kind.c_str(), p.name.c_str(), p.values.size());
     } catch (const InputError& e) {
       std::fprintf(stderr, "%s\n", e.what());

@@ -17,7 +17,18 @@ struct RenderRequest {
   bool verbose = false;
 };
 
+// An animation: a timeline played through the simulation.
+struct AnimateRequest {
+  std::string timeline;   // a name (presets/timelines/) or a JSON file
+  std::string output;     // a folder for PNG frames, or .mp4 / .gif (ffmpeg); empty: out/<name>/
+  double fps = 0;         // 0: the timeline's, else 30
+  double duration = 0;    // 0: the timeline's
+  bool preset_given = false, glass_given = false;  // flags win over the timeline's scene
+  bool progress = false;  // draw the progress bar even when stderr is not a terminal
+};
+
 int render(const RenderRequest&);
+int animate(const RenderRequest&, const AnimateRequest&);
 int list_presets();
 int validate(const std::vector<std::string>& files);
 int print_params(bool markdown);

@@ -39,11 +39,20 @@ int main(int argc, char** argv) {
   render->add_option("--supersample", supersample, "Anti-aliasing: samples per axis (1-4)")
       ->check(CLI::Range(1, 4));
   render->add_option("--shader-dir", rr.shader_dir, "Load shaders from this folder instead of the built-in ones");
+  cli::AnimateRequest anim;
+  render->add_option("-t,--timeline", anim.timeline,
+                     "Animate: play this timeline (a name or a JSON file); -o is then a folder for PNG frames or a "
+                     ".mp4/.gif file");
+  render->add_option("--fps", anim.fps, "Frames per second of the animation (default: the timeline's, else 30)")
+      ->check(CLI::Range(1.0, 120.0));
+  render->add_option("--duration", anim.duration, "Seconds to render (default: the timeline's)")
+      ->check(CLI::Range(0.01, 600.0));
+  render->add_flag("--progress", anim.progress, "Show the progress bar even when stderr is not a terminal");
 
   auto* presets = app.add_subcommand("presets", "List the presets");
   std::vector<std::string> files;
-  auto* validate = app.add_subcommand("validate", "Check preset files; exit 1 if any is invalid");
-  validate->add_option("files", files, "Preset JSON files")->required();
+  auto* validate = app.add_subcommand("validate", "Check preset and timeline files; exit 1 if any is invalid");
+  validate->add_option("files", files, "Preset or timeline JSON files")->required();
   bool markdown = false;
   auto* params = app.add_subcommand("params", "Print the parameter table (path, type, default, range, unit, doc)");
   params->add_flag("--markdown", markdown, "As a Markdown table");
@@ -61,6 +70,15 @@ int main(int argc, char** argv) {
       if (transparent) rr.scene.sets.push_back("render.transparent=true");
       if (supersample) rr.scene.sets.push_back("render.supersample=" + std::to_string(supersample));
       rr.verbose = verbose;
+      if (!anim.timeline.empty()) {
+        if (!rr.debug.empty()) throw InputError("--debug renders a still: leave out --timeline");
+        anim.output = render->get_option("--output")->count() ? rr.output : "";
+        anim.preset_given = render->get_option("--preset")->count() > 0;
+        anim.glass_given = render->get_option("--glass")->count() > 0;
+        return cli::animate(rr, anim);
+      }
+      if (anim.fps > 0 || anim.duration > 0 || anim.progress)
+        throw InputError("--fps, --duration and --progress need --timeline");
       return cli::render(rr);
     }
     if (*presets) return cli::list_presets();

@@ -1,6 +1,6 @@
 #include "core/frame.hpp"
 
-#include "core/beverage.hpp"
+#include "core/simulation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,23 +21,10 @@ CameraParams frame_camera(const CameraParams& c, const Vessel& v) {
   return out;
 }
 
-FrameState make_frame(const Params& p) {
-  FrameState f;
-  f.params = p;
-  f.vessel = build_vessel(p.glass);
-  f.camera = frame_camera(p.camera, f.vessel);
-  f.has_liquid = p.liquid.fill > 1e-4f;
-  f.liquid.n = {0, 1, 0};
-  f.liquid.offset = f.has_liquid ? f.vessel.fill_height(p.liquid.fill) : -1.0;
-  f.liquid_absorption = liquid_absorption(p.liquid);
-  double sum = 0;
-  for (double r : f.vessel.r_outer) sum += r;
-  f.mean_outer_radius = sum / double(f.vessel.r_outer.size());
-  return f;
-}
+FrameState make_frame(const Params& p) { return Simulation(p).frame(); }
 
 SceneGeometry scene_geometry(const FrameState& f) {
-  return {&f.vessel, f.liquid, f.params.env.floor && !f.params.render.transparent};
+  return {&f.vessel, f.liquid, f.params.env.floor && !f.params.render.transparent, f.pose};
 }
 
 }  // namespace draught

@@ -1,23 +1,33 @@
-// FrameState: the plain-data snapshot the renderer draws. Built from the parameters
-// (and, later, the simulation state); the GPU side never computes geometry itself.
+// FrameState: the plain-data snapshot the renderer draws, made by the Simulation (or,
+// for a still picture, by make_frame at rest). The GPU side never computes geometry
+// or physics itself.
 #pragma once
 
+#include "core/fill_table.hpp"
 #include "core/intersect.hpp"
+#include "core/motion.hpp"
 #include "core/params.hpp"
 #include "core/vessel.hpp"
+
+#include <memory>
 
 namespace draught {
 
 struct FrameState {
   Params params;
-  CameraParams camera;     // the camera in effect (auto-framed or as given)
+  CameraParams camera;  // the camera in effect (auto-framed or as given)
   Vessel vessel;
-  LiquidPlane liquid;      // offset < base when the glass is empty
+  std::shared_ptr<const FillTable> fill_table;  // the same object while the glass is unchanged
+  Pose pose;                                    // the glass in the world
+  LiquidPlane liquid;                           // local frame; offset < base when empty
+  double liquid_tilt = 0, liquid_azimuth = 0;   // the surface normal in the local frame
+  double liquid_fraction = 0;                   // of the cavity volume
   bool has_liquid = false;
   glm::vec3 liquid_absorption{0};
   double mean_outer_radius = 0;
 };
 
+// A still frame: the glass upright at rest, filled to params.liquid.fill.
 FrameState make_frame(const Params&);
 // The camera that frames the vessel, looking along target - eye of `c`.
 CameraParams frame_camera(const CameraParams& c, const Vessel&);

@@ -224,26 +224,41 @@ void keep_nearest(Hit& best, const Hit& h) {
 }
 }  // namespace
 
-Hit first_hit(const SceneGeometry& s, const Ray& ray, double tmin) {
+Hit hit_liquid_surface(const Vessel& v, const LiquidPlane& l, const Ray& ray, double tmin) {
+  const double dn = glm::dot(l.n, ray.d);
+  if (std::fabs(dn) < 1e-15) return {};
+  // From the plane, Newton steps onto the waves (they are small and smooth).
+  double t = (l.offset - glm::dot(l.n, ray.o)) / dn;
+  for (int it = 0; it < 4; ++it) {
+    const glm::dvec3 p = ray.at(t);
+    const glm::dvec2 g = l.waves.gradient(p.x, p.z);
+    const double slope = dn - (g.x * ray.d.x + g.y * ray.d.z);
+    if (std::fabs(slope) < 1e-12) break;
+    t -= l.level(p) / slope;
+  }
+  const glm::dvec3 p = ray.at(t);
+  if (!(t > tmin) || p.y <= v.base || p.y >= v.height || std::hypot(p.x, p.z) >= v.inner_radius(p.y)) return {};
+  const glm::dvec2 g = l.waves.gradient(p.x, p.z);
+  return {t, glm::normalize(l.n - glm::dvec3(g.x, 0, g.y)), Material::LiquidSurface};
+}
+
+Hit first_hit(const SceneGeometry& s, const Ray& world_ray, double tmin) {
   const Vessel& v = *s.vessel;
+  const glm::dquat to_local = glm::inverse(s.pose.orientation);
+  const Ray ray{to_local * (world_ray.o - s.pose.position), to_local * world_ray.d};
   Hit best;
   keep_nearest(best, hit_wall(v, false, ray, tmin));
   keep_nearest(best, hit_wall(v, true, ray, tmin));
   keep_nearest(best, hit_rim(v, ray, tmin));
   keep_nearest(best, hit_disk(ray, 0.0, v.r_outer.front(), tmin, {0, -1, 0}, Material::GlassBottom));
   keep_nearest(best, hit_disk(ray, v.base, v.inner_radius(v.base), tmin, {0, 1, 0}, Material::CavityFloor));
-  // Liquid surface: the plane, where it lies inside the cavity.
-  const double dn = glm::dot(s.liquid.n, ray.d);
-  if (std::fabs(dn) > 1e-15) {
-    double t = (s.liquid.offset - glm::dot(s.liquid.n, ray.o)) / dn;
-    glm::dvec3 p = ray.at(t);
-    if (t > tmin && p.y > v.base && p.y < v.height && std::hypot(p.x, p.z) < v.inner_radius(p.y))
-      keep_nearest(best, {t, s.liquid.n, Material::LiquidSurface});
-  }
-  if (s.floor && ray.d.y < 0) {
-    double t = -ray.o.y / ray.d.y;
-    glm::dvec3 p = ray.at(t);
-    if (t > tmin && std::hypot(p.x, p.z) > v.r_outer.front())
+  keep_nearest(best, hit_liquid_surface(v, s.liquid, ray, tmin));
+  best.n = s.pose.orientation * best.n;
+  if (s.floor && world_ray.d.y < 0) {
+    const double t = -world_ray.o.y / world_ray.d.y;
+    // Where the glass stands on the floor, its foot is the surface.
+    const glm::dvec3 p = to_local * (world_ray.at(t) - s.pose.position);
+    if (t > tmin && !(std::fabs(p.y) < 1e-6 && std::hypot(p.x, p.z) <= v.r_outer.front()))
       keep_nearest(best, {t, {0, 1, 0}, Material::Floor});
   }
   return best;

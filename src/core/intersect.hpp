@@ -2,6 +2,8 @@
 // double precision. Tests compare the GPU's debug outputs against it pixel by pixel.
 #pragma once
 
+#include "core/motion.hpp"
+#include "core/slosh.hpp"
 #include "core/vessel.hpp"
 
 #include <glm/glm.hpp>
@@ -46,21 +48,29 @@ int intersect_cone(const Ray&, double r0, double r1, double y0, double y1, doubl
 // Ray against a torus around the Y axis (major R, minor r, centre height cy); all roots.
 int intersect_torus(const Ray&, double R, double r, double cy, double out[4]);
 
-// The liquid: the part of the cavity below the plane dot(n, p) = offset.
+// The liquid, in the glass's local frame: the part of the cavity below the surface
+// dot(n, p) = offset + waves.height(p.x, p.z).
 struct LiquidPlane {
   glm::dvec3 n{0, 1, 0};
   double offset = -1;  // below the floor: no liquid
+  SurfaceWaves waves;
+  double level(const glm::dvec3& p) const { return glm::dot(n, p) - offset - waves.height(p.x, p.z); }
+  bool below(const glm::dvec3& p) const { return level(p) < 0; }
 };
 
+// Rays are in the world; the glass stands in it at `pose` (the floor is world y = 0).
 struct SceneGeometry {
   const Vessel* vessel;
   LiquidPlane liquid;
   bool floor = true;
+  Pose pose;
 };
 
 Hit hit_wall(const Vessel&, bool inner, const Ray&, double tmin);
 Hit hit_rim(const Vessel&, const Ray&, double tmin);
-// Nearest surface along the ray (glass, liquid surface, floor).
+// Where a ray first meets the liquid's (wavy) surface inside the cavity, local frame.
+Hit hit_liquid_surface(const Vessel&, const LiquidPlane&, const Ray& local_ray, double tmin);
+// Nearest surface along the world ray (glass, liquid surface, floor); normals in the world.
 Hit first_hit(const SceneGeometry&, const Ray&, double tmin = 1e-7);
 
 }  // namespace draught

@@ -44,6 +44,12 @@ std::vector<ParamDesc> make_table() {
       ROW(liquid.haze_color, Color, vec3(0.95f, 0.85f, 0.6f), 0.0f, 1.0f, "",
           "Single-scattering albedo of the haze"),
       ROW(liquid.roughness, Float, 0.02f, 0.005f, 1.0f, "", "GGX roughness of the liquid surface"),
+      ROW(liquid.slosh_stiffness, Float, 1.0f, 0.25f, 4.0f, "",
+          "Scales the sloshing frequency squared (1: a real drink in this glass)"),
+      ROW(liquid.slosh_damping, Float, 0.06f, 0.005f, 1.0f, "",
+          "Damping ratio of the sloshing surface (a few percent for water-like drinks, more for thick ones)"),
+      ROW(liquid.wave_amplitude, Float, 1.0f, 0.0f, 5.0f, "", "How strongly shaking raises waves on the surface"),
+      ROW(liquid.wave_speed, Float, 1.0f, 0.25f, 4.0f, "", "Scales the frequency of the surface waves"),
       // environment
       ENUM_ROW(env.mode, "studio", (std::vector<std::string>{"studio", "constant"}),
                "studio: gradient sky, softbox and strip lights; constant: env.color everywhere"),

@@ -34,6 +34,10 @@ struct LiquidParams {
   float haze;            // scattering per metre
   glm::vec3 haze_color;  // single-scattering albedo
   float roughness;
+  float slosh_stiffness;  // multiplies the physical first-mode frequency squared
+  float slosh_damping;    // damping ratio of the surface's tilt
+  float wave_amplitude;   // how strongly motion raises waves
+  float wave_speed;       // multiplies the waves' natural frequencies
 };
 
 enum class EnvMode { Studio = 0, Constant = 1 };

@@ -26,7 +26,7 @@ FrameUniforms pack_uniforms(const FrameState& f, int width, int height, DebugVie
   u.rim = {v.rim_major, v.rim_minor, v.bound_radius, v.r_outer.front()};
   u.glass = {p.glass.ior, p.glass.roughness, v.inner_radius(v.base), f.mean_outer_radius};
   u.glass_absorb = {p.glass.absorption, 0};
-  u.liquid_plane = {glm::vec3(f.liquid.n), f.liquid.offset};
+  u.liquid_plane = {glm::vec3(f.liquid.n), f.liquid_fraction};
   u.liquid = {p.liquid.ior, p.liquid.roughness, p.liquid.haze, f.has_liquid ? 1.0f : 0.0f};
   u.liquid_absorb = {f.liquid_absorption, 0};
   u.haze_color = {p.liquid.haze_color, 0};
@@ -44,6 +44,13 @@ FrameUniforms pack_uniforms(const FrameState& f, int width, int height, DebugVie
   u.output = {float(p.render.tonemap), p.render.exposure, p.render.transparent ? 1.0f : 0.0f, float(debug)};
   if (debug == DebugView::Material) u.output.w = float(DebugView::Depth);  // same channels
   u.limits = {p.render.max_events, 0, 0, 0};
+  const glm::dmat3 rot = glm::mat3_cast(f.pose.orientation);
+  u.pose_x = {glm::vec3(rot[0]), 0};
+  u.pose_y = {glm::vec3(rot[1]), 0};
+  u.pose_z = {glm::vec3(rot[2]), 0};
+  u.pose_pos = {glm::vec3(f.pose.position), 0};
+  const SurfaceWaves& w = f.liquid.waves;
+  u.waves = {w.ring, w.cross.x, w.cross.y, w.radius};
   for (int k = 0; k <= Vessel::kSegments; ++k) u.knots[k] = {v.r_outer[size_t(k)], v.r_inner[size_t(k)], 0, 0};
   return u;
 }
@@ -85,6 +92,14 @@ Renderer::Renderer(const std::filesystem::path& shader_dir_arg) {
     throw ShaderError("common.glsl: uniform block 'Frame' is " + std::to_string(size) +
                       " bytes but gpu/uniforms.hpp FrameUniforms is " + std::to_string(sizeof(FrameUniforms)));
   glUniformBlockBinding(program_->id(), block, 0);
+  glUseProgram(program_->id());
+  glUniform1i(glGetUniformLocation(program_->id(), "u_fill_table"), 0);
+  // The fill table: R32F, fetched texel by texel (float textures need not filter in ES 3.0).
+  glGenTextures(1, &fill_tex_);
+  glBindTexture(GL_TEXTURE_2D, fill_tex_);
+  glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32F, FillTable::kVolumes, FillTable::kTilts);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &ubo_);
   glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
@@ -92,6 +107,7 @@ Renderer::Renderer(const std::filesystem::path& shader_dir_arg) {
 }
 
 Renderer::~Renderer() {
+  glDeleteTextures(1, &fill_tex_);
   glDeleteBuffers(1, &ubo_);
   glDeleteVertexArrays(1, &vao_);
 }
@@ -101,6 +117,14 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug)
   glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
   glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof u, &u);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, fill_tex_);
+  if (f.fill_table && f.fill_table != uploaded_table_) {  // only when the glass changed
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, FillTable::kVolumes, FillTable::kTilts, GL_RED, GL_FLOAT,
+                    f.fill_table->offset.data());
+    uploaded_table_ = f.fill_table;
+  }
   glViewport(0, 0, width, height);
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);

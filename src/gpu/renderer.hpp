@@ -57,7 +57,8 @@ class Renderer {
 
  private:
   std::unique_ptr<Program> program_;
-  unsigned vao_ = 0, ubo_ = 0;
+  unsigned vao_ = 0, ubo_ = 0, fill_tex_ = 0;
+  std::shared_ptr<const FillTable> uploaded_table_;  // what fill_tex_ holds
 };
 
 // Turns a debug image into a picture a person can read (grey depth, RGB normals,

@@ -19,6 +19,8 @@ struct FrameUniforms {
   glm::vec4 env, env_color, sky_top, sky_horizon, ground, floor_a, floor_b;
   glm::vec4 output;
   glm::ivec4 limits;
+  glm::vec4 pose_x, pose_y, pose_z, pose_pos;
+  glm::vec4 waves;
   glm::vec4 knots[Vessel::kSegments + 1];
 };
 
@@ -30,7 +32,9 @@ static_assert(offsetof(FrameUniforms, light_dir) == 208);
 static_assert(offsetof(FrameUniforms, env) == 240);
 static_assert(offsetof(FrameUniforms, output) == 352);
 static_assert(offsetof(FrameUniforms, limits) == 368);
-static_assert(offsetof(FrameUniforms, knots) == 384);
-static_assert(sizeof(FrameUniforms) == 384 + 16 * (Vessel::kSegments + 1));
+static_assert(offsetof(FrameUniforms, pose_x) == 384);
+static_assert(offsetof(FrameUniforms, waves) == 448);
+static_assert(offsetof(FrameUniforms, knots) == 464);
+static_assert(sizeof(FrameUniforms) == 464 + 16 * (Vessel::kSegments + 1));
 
 }  // namespace draught::gpu

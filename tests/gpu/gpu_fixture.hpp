@@ -4,6 +4,8 @@
 
 #include "core/frame.hpp"
 #include "core/preset.hpp"
+#include "core/simulation.hpp"
+#include "core/timeline.hpp"
 #include "gpu/context.hpp"
 #include "gpu/renderer.hpp"
 
@@ -27,6 +29,26 @@ inline Gpu& gpu_instance() {
 }
 
 inline FrameState scene_frame(const SceneRequest& req) { return make_frame(resolve_scene(req)); }
+
+// The frame at time t of a shipped timeline (presets/timelines/), in the timeline's scene
+// (seen through `camera` when given: "eye=..." "target=..." as --camera).
+inline FrameState timeline_frame(const std::string& name, double t, const std::vector<std::string>& camera = {}) {
+  const Timeline tl = load_timeline(name);
+  SceneRequest req;
+  req.camera = camera;
+  req.preset = tl.preset.empty() ? req.preset : tl.preset;
+  req.glass = tl.glass;
+  const Params base = resolve_scene(req);
+  Simulation sim(tl.params_at(0, base));
+  TimelineDriver driver(tl, sim.vessel().r_outer.front());
+  play_timeline(sim, driver, tl, base, t);
+  return sim.frame();
+}
+
+// A scene from a request, or from a timeline at a time when `timeline` is set.
+inline FrameState case_frame(const SceneRequest& req, const char* timeline, double t) {
+  return timeline ? timeline_frame(timeline, t, req.camera) : scene_frame(req);
+}
 
 // Set by gpu_tests --bless: golden tests write their renders as the new goldens.
 extern bool g_bless;

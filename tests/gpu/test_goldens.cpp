@@ -24,6 +24,8 @@ struct GoldenCase {
   int pixel_threshold;
   double max_failing_fraction;
   int max_abs_diff;
+  const char* timeline = nullptr;  // a glass in motion: this timeline's frame at `at` seconds
+  double at = 0;
 };
 
 struct Comparison {
@@ -56,7 +58,7 @@ class Golden : public ::testing::TestWithParam<GoldenCase> {};
 TEST_P(Golden, MatchesBlessedImage) {
   const GoldenCase& c = GetParam();
   Gpu& g = gpu_instance();
-  Image img = g.renderer->render(scene_frame(c.request), c.width, c.height);
+  Image img = g.renderer->render(case_frame(c.request, c.timeline, c.at), c.width, c.height);
   const std::filesystem::path golden = std::filesystem::path(DRAUGHT_GOLDEN_DIR) / (std::string(c.name) + ".png");
   const std::filesystem::path diff_dir = DRAUGHT_DIFF_DIR;
   std::filesystem::create_directories(diff_dir);
@@ -96,7 +98,10 @@ INSTANTIATE_TEST_SUITE_P(
         GoldenCase{"weizen_hefeweizen_transparent", {"hefeweizen", "weizen", {"render.transparent=true"}, {}}, 128,
                    192, 3, 0.002, 64},
         GoldenCase{"pint_lager_above", {"lager", "pint", {}, {"eye=0.08,0.32,0.2", "target=0,0.07,0"}}, 160, 160, 3,
-                   0.002, 64}),
+                   0.002, 64},
+        GoldenCase{"pint_lager_tilted", {}, 160, 160, 3, 0.002, 64, "gentle-tilt", 1.9},
+        GoldenCase{"pint_lager_sloshing", {}, 160, 160, 3, 0.002, 64, "shake-and-settle", 1.3},
+        GoldenCase{"wine_spilling", {}, 160, 160, 3, 0.002, 64, "tilt-until-spill", 3.0}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -24,6 +24,8 @@ struct ProbeCase {
   const char* name;
   SceneRequest request;
   int size;
+  const char* timeline = nullptr;  // a glass in motion: this timeline's frame at `at` seconds
+  double at = 0;
 };
 
 struct Reference {
@@ -58,7 +60,7 @@ class Probe : public ::testing::TestWithParam<ProbeCase> {};
 TEST_P(Probe, DebugChannelsMatchReferenceIntersector) {
   const ProbeCase& c = GetParam();
   Gpu& g = gpu_instance();
-  FrameState f = scene_frame(c.request);
+  FrameState f = case_frame(c.request, c.timeline, c.at);
   const int n = c.size;
   Reference ref = reference_hits(f, n, n);
   gpu::DebugImage depth = g.renderer->render_debug(f, n, n, gpu::DebugView::Depth);
@@ -109,7 +111,13 @@ INSTANTIATE_TEST_SUITE_P(
         ProbeCase{"rim-closeup", {"lager", "pint", {}, {"eye=0.0,0.168,0.1", "target=0,0.145,0.03", "vfov=22"}}, 96},
         ProbeCase{"wine-glass", {"red-wine", "wine", {}, {}}, 96},
         ProbeCase{"empty-tulip-above", {"amber-ale", "tulip", {"liquid.fill=0"}, {"eye=0.03,0.4,0.12", "target=0,0.05,0"}}, 96},
-        ProbeCase{"nonic-from-below", {"stout", "nonic", {"env.floor=false"}, {"eye=0.0,-0.12,0.3", "target=0,0.06,0"}}, 96}),
+        ProbeCase{"nonic-from-below", {"stout", "nonic", {"env.floor=false"}, {"eye=0.0,-0.12,0.3", "target=0,0.06,0"}}, 96},
+        // Tipped on its foot, sloshing with waves, spilling over the rim.
+        ProbeCase{"pint-tilted", {}, 96, "gentle-tilt", 1.9},
+        ProbeCase{"pint-sloshing", {}, 96, "shake-and-settle", 1.3},
+        ProbeCase{"pint-sloshing-above", {"", "", {}, {"eye=0.06,0.34,0.16", "target=0,0.08,0"}}, 96, "shake-and-settle", 1.3},
+        ProbeCase{"wine-spilling-above", {"", "", {}, {"eye=-0.1,0.4,0.2", "target=-0.05,0.1,0"}}, 96, "tilt-until-spill", 3.0},
+        ProbeCase{"wine-spilling", {}, 96, "tilt-until-spill", 3.0}),
     [](const auto& info) {
       std::string s = info.param.name;
       for (char& ch : s)
