@@ -8,6 +8,7 @@ packages=(
   libglm-dev nlohmann-json3-dev libstb-dev libcli11-dev
   libgtest-dev libbenchmark-dev
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
+  libsdl2-dev ffmpeg
 )
 
 missing=()
