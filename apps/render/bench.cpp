@@ -3,6 +3,7 @@
 #include "commands.hpp"
 
 #include "core/frame.hpp"
+#include "core/timeline.hpp"
 #include "gpu/context.hpp"
 #include "gpu/renderer.hpp"
 
@@ -18,6 +19,8 @@ namespace {
 struct BenchScene {
   const char* name;
   SceneRequest request;
+  const char* timeline = nullptr;  // a glass in motion: this timeline's frame at `at` seconds
+  double at = 0;
 };
 
 double median(std::vector<double> v) {
@@ -34,6 +37,8 @@ int bench(int frames, const std::vector<int>& sizes, bool verbose) {
       {"nonic-stout", {"stout", "nonic", {}, {}}},
       {"wine-red", {"red-wine", "wine", {}, {}}},
       {"tulip-amber-floorless", {"amber-ale", "tulip", {"env.floor=false"}, {}}},
+      {"pint-lager-sloshing", {"lager", "", {}, {}}, "shake-and-settle", 1.3},
+      {"wine-red-spilling", {"red-wine", "", {}, {}}, "tilt-until-spill", 3.0},
   };
   auto ctx = gpu::HeadlessContext::create();
   gpu::Renderer renderer;
@@ -48,7 +53,7 @@ int bench(int frames, const std::vector<int>& sizes, bool verbose) {
     Params p = resolve_scene(s.request, &log);
     if (verbose) std::fprintf(stderr, "%s", log.c_str());
     p.render.supersample = 1;
-    FrameState f = make_frame(p);
+    FrameState f = s.timeline ? timeline_frame(load_timeline(s.timeline), p, s.at) : make_frame(p);
     for (int size : sizes) {
       gpu::RenderTarget target(size, size, false);
       std::vector<double> ms;

@@ -78,8 +78,11 @@ class TimelineDriver : public InputDriver {
 };
 
 class Simulation;
+struct FrameState;
 // Plays the timeline up to time t: the parameters as they are at t, then fixed
 // simulation steps with the scripted motion and sips.
 void play_timeline(Simulation&, TimelineDriver&, const Timeline&, const Params& base, double t);
+// The frame at time t of the timeline played from the start (tests, benchmarks, stills).
+FrameState timeline_frame(const Timeline&, const Params& base, double t);
 
 }  // namespace draught

@@ -4,7 +4,6 @@
 
 #include "core/frame.hpp"
 #include "core/preset.hpp"
-#include "core/simulation.hpp"
 #include "core/timeline.hpp"
 #include "gpu/context.hpp"
 #include "gpu/renderer.hpp"
@@ -38,11 +37,7 @@ inline FrameState timeline_frame(const std::string& name, double t, const std::v
   req.camera = camera;
   req.preset = tl.preset.empty() ? req.preset : tl.preset;
   req.glass = tl.glass;
-  const Params base = resolve_scene(req);
-  Simulation sim(tl.params_at(0, base));
-  TimelineDriver driver(tl, sim.vessel().r_outer.front());
-  play_timeline(sim, driver, tl, base, t);
-  return sim.frame();
+  return draught::timeline_frame(tl, resolve_scene(req), t);
 }
 
 // A scene from a request, or from a timeline at a time when `timeline` is set.
