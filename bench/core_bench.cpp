@@ -1,7 +1,9 @@
 // Google Benchmark figures for the CPU side of a frame: building the vessel from a
-// profile, solving the fill height, and the reference intersector per ray. GPU frame
-// times come from `draught bench`. Results: docs/PERFORMANCE.md.
+// profile, solving the fill height, building the fill table, and the reference
+// intersector per ray. GPU frame times come from `draught bench`. Results:
+// docs/PERFORMANCE.md.
 #include "core/camera.hpp"
+#include "core/fill_table.hpp"
 #include "core/frame.hpp"
 #include "core/preset.hpp"
 
@@ -28,6 +30,15 @@ void BM_FillHeight(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_FillHeight);
+
+// The 64 x 64 offset(tilt, volume) table, built whenever the glass changes; the budget is
+// 20 ms on one core. Median: --benchmark_repetitions=9 --benchmark_report_aggregates_only.
+void BM_BuildFillTable(benchmark::State& state, const char* glass) {
+  const Vessel v = build_vessel(glass_params(glass).glass);
+  for (auto _ : state) benchmark::DoNotOptimize(build_fill_table(v));
+}
+BENCHMARK_CAPTURE(BM_BuildFillTable, pint, "pint")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BuildFillTable, wine, "wine")->Unit(benchmark::kMillisecond);
 
 void BM_MakeFrame(benchmark::State& state) {
   Params p = glass_params("pint");

@@ -210,7 +210,11 @@ float g_liquid_offset = -1.0;  // set once per pixel by init_liquid()
 
 void init_liquid() {
   vec3 n = u_liquid_plane.xyz;
-  if (u_liquid.w > 0.5) g_liquid_offset = fill_table_offset(atan(length(n.xz), n.y), u_liquid_plane.w);
+  if (u_liquid.w < 0.5) return;
+  float tilt = atan(length(n.xz), n.y);
+  // Never above the lowest rim point (as core/simulation.cpp).
+  float rim = cos(tilt) * u_vessel.x - sin(tilt) * u_knots[SEGMENTS].y;
+  g_liquid_offset = min(fill_table_offset(tilt, u_liquid_plane.w), rim);
 }
 
 bool has_waves() { return u_waves.x != 0.0 || u_waves.y != 0.0 || u_waves.z != 0.0; }
@@ -228,11 +232,17 @@ float wave_height(vec2 xz) {
 
 vec2 wave_gradient(vec2 xz) {
   vec2 q = xz / u_waves.w;
-  float u2 = dot(q, q);
-  if (u2 > 1.5625) return vec2(0.0);
-  float dr = u_waves.x * (-6.0 + 6.0 * u2);
-  return vec2(dr * q.x + 2.0 * u_waves.y * q.x + 2.0 * u_waves.z * q.y,
-              dr * q.y - 2.0 * u_waves.y * q.y + 2.0 * u_waves.z * q.x) / u_waves.w;
+  float len = length(q);
+  bool held = len > 1.25;  // chain rule through the pull-in (as core/slosh.cpp)
+  vec2 c = held ? q * (1.25 / len) : q;
+  float dr = u_waves.x * (-6.0 + 6.0 * dot(c, c));
+  vec2 g = vec2(dr * c.x + 2.0 * u_waves.y * c.x + 2.0 * u_waves.z * c.y,
+                dr * c.y - 2.0 * u_waves.y * c.y + 2.0 * u_waves.z * c.x);
+  if (held) {
+    vec2 dir = q / len;
+    g = (1.25 / len) * (g - dir * dot(dir, g));
+  }
+  return g / u_waves.w;
 }
 
 // Signed height of p over the surface: negative in the liquid.

@@ -48,21 +48,21 @@ VolumeAndArea horizontal_cut(const Vessel& v, double c, double offset) {
   return {c > 0 ? below : total - below, kPi * r * r / std::abs(c)};
 }
 
-VolumeAndArea integrate(const Vessel& v, double tilt, double offset) {
+// The volume below the plane in the cavity; `extend` > 0 continues the cavity above the
+// rim as a cylinder of the rim's radius that high (see build_fill_table).
+VolumeAndArea integrate(const Vessel& v, double tilt, double offset, double extend = 0) {
   const double s = std::sin(tilt), c = std::cos(tilt);
   if (std::abs(s) < kFlat) return horizontal_cut(v, c, offset);
   VolumeAndArea out;
   auto x_cut = [&](double y) { return (offset - c * y) / s; };
-  for (int k = 0; k < Vessel::kSegments; ++k) {
-    const double y0 = std::max(k * v.dy, v.base), y1 = std::min((k + 1) * v.dy, v.height);
-    if (y1 <= y0) continue;
-    const double r0 = v.inner_radius(y0), r1 = v.inner_radius(y1);
+  // One slab whose radius is linear in y.
+  auto slab = [&](double y0, double y1, double r0, double r1) {
     const double a0 = x_cut(y0), a1 = x_cut(y1);
     if (a0 >= r0 && a1 >= r1) {  // the whole slab is below the plane
       out.volume += kPi * (y1 - y0) / 3.0 * (r0 * r0 + r0 * r1 + r1 * r1);
-      continue;
+      return;
     }
-    if (a0 <= -r0 && a1 <= -r1) continue;  // none of it
+    if (a0 <= -r0 && a1 <= -r1) return;  // none of it
     // x_cut -/+ r are linear in y: where they change sign the integrand has a kink.
     double cuts[4] = {y0, y1, y1, y1};
     int n = 1;
@@ -84,13 +84,15 @@ VolumeAndArea integrate(const Vessel& v, double tilt, double offset) {
         out.area += half * kGaussW[g] * chord / std::abs(s);
       }
     }
+  };
+  for (int k = 0; k < Vessel::kSegments; ++k) {
+    const double y0 = std::max(k * v.dy, v.base), y1 = std::min((k + 1) * v.dy, v.height);
+    if (y1 > y0) slab(y0, y1, v.inner_radius(y0), v.inner_radius(y1));
   }
+  if (extend > 0) slab(v.height, v.height + extend, v.inner_radius(v.height), v.inner_radius(v.height));
   return out;
 }
 
-// Volume fractions of the table's columns: smoothstep-spaced, so that the nearly empty
-// and nearly full glass (where a tipped surface is a thin wedge and its offset moves
-// fastest) get dense columns.
 double fraction_axis(int j) {
   const double u = double(j) / (FillTable::kVolumes - 1);
   return u * u * (3 - 2 * u);
@@ -128,19 +130,24 @@ double invert_hermite(const std::vector<double>& d, const std::vector<VolumeAndA
 
 double volume_below_plane(const Vessel& v, double tilt, double offset) { return integrate(v, tilt, offset).volume; }
 
-void offset_range(const Vessel& v, double tilt, double& lo, double& hi) {
+namespace {
+void offset_range_extended(const Vessel& v, double tilt, double extend, double& lo, double& hi) {
   const double s = std::abs(std::sin(tilt)), c = std::cos(tilt);
   auto extent = [&](double y) {
-    const double r = v.inner_radius(y);
+    const double r = v.inner_radius(std::min(y, v.height));
     lo = std::min(lo, c * y - s * r);
     hi = std::max(hi, c * y + s * r);
   };
   lo = 1e300, hi = -1e300;
   extent(v.base);
   extent(v.height);
+  if (extend > 0) extent(v.height + extend);
   for (int k = 0; k <= Vessel::kSegments; ++k)
     if (k * v.dy > v.base && k * v.dy < v.height) extent(k * v.dy);
 }
+}  // namespace
+
+void offset_range(const Vessel& v, double tilt, double& lo, double& hi) { offset_range_extended(v, tilt, 0, lo, hi); }
 
 double plane_offset_for_volume(const Vessel& v, double tilt, double volume) {
   double lo, hi;
@@ -159,25 +166,29 @@ double rim_offset(const Vessel& v, double tilt) {
 FillTable build_fill_table(const Vessel& v) {
   FillTable t;
   t.cavity_volume = v.cavity_volume();
+  t.vessel = v;
   t.offset.resize(size_t(FillTable::kTilts) * FillTable::kVolumes);
-  t.capacity.resize(FillTable::kTilts);
   constexpr int kSamples = 48;  // offsets per tilt where V and dV/doffset are integrated
   std::vector<double> d(kSamples);
   std::vector<VolumeAndArea> f(kSamples);
   for (int i = 0; i < FillTable::kTilts; ++i) {
     const double tilt = FillTable::kMaxTilt * i / (FillTable::kTilts - 1);
+    // Rows for tipped glasses (up to 90 degrees) see the cavity continued above the rim,
+    // so the offset stays smooth across the spill limit and interpolating between a row
+    // that is below capacity and one that is past it stays accurate. Below capacity
+    // the continuation is entirely above the plane, so it changes no valid entry.
+    const bool flat = std::abs(std::sin(tilt)) < kFlat;
+    const double extend = (!flat && std::cos(tilt) > 1e-6) ? 2.0 * v.inner_radius(v.height) : 0.0;
     double lo, hi;
-    offset_range(v, tilt, lo, hi);
+    offset_range_extended(v, tilt, extend, lo, hi);
     for (int m = 0; m < kSamples; ++m) {
       // Chebyshev-like spacing: denser at both ends, where the volume changes slowly.
       const double u = 0.5 - 0.5 * std::cos(kPi * m / (kSamples - 1));
       d[size_t(m)] = lo + (hi - lo) * u;
-      f[size_t(m)] = integrate(v, tilt, d[size_t(m)]);
+      f[size_t(m)] = integrate(v, tilt, d[size_t(m)], extend);
     }
     for (int j = 0; j < FillTable::kVolumes; ++j)
       t.offset[size_t(i * FillTable::kVolumes + j)] = float(invert_hermite(d, f, fraction_axis(j) * t.cavity_volume));
-    const double cap = volume_below_plane(v, tilt, rim_offset(v, tilt)) / std::max(t.cavity_volume, 1e-300);
-    t.capacity[size_t(i)] = float(std::clamp(cap, 0.0, 1.0));
   }
   return t;
 }
@@ -198,10 +209,9 @@ double FillTable::offset_at(double tilt, double fraction) const {
 }
 
 double FillTable::capacity_at(double tilt) const {
-  const double ti = std::clamp(std::abs(tilt) / kMaxTilt, 0.0, 1.0) * (kTilts - 1);
-  const int i = std::min(int(ti), kTilts - 2);
-  const double f = ti - i;
-  return (1 - f) * capacity[size_t(i)] + f * capacity[size_t(i + 1)];
+  tilt = std::clamp(std::abs(tilt), 0.0, kMaxTilt);
+  const double cap = volume_below_plane(vessel, tilt, rim_offset(vessel, tilt)) / std::max(cavity_volume, 1e-300);
+  return std::clamp(cap, 0.0, 1.0);
 }
 
 }  // namespace draught

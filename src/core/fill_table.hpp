@@ -32,10 +32,12 @@ struct FillTable {
   // u^2 (3 - 2u) with u = j / (kVolumes - 1): columns crowd at the nearly empty and
   // nearly full ends, where a tipped surface is a thin wedge.
   std::vector<float> offset;
-  std::vector<float> capacity;  // per tilt: the fraction that stays in below the rim
+  Vessel vessel;  // the glass it was built for
 
   double offset_at(double tilt, double fraction) const;  // bilinear, clamped
-  double capacity_at(double tilt) const;                 // linear, clamped
+  // The fraction that stays in below the lowest rim point: integrated exactly (a few
+  // microseconds), since it falls steeply towards 90 degrees where rows are too coarse.
+  double capacity_at(double tilt) const;
 };
 
 FillTable build_fill_table(const Vessel&);

@@ -62,7 +62,16 @@ void Simulation::update_surface() {
     fraction_ = capacity;
   }
   surface_.n = n;
-  surface_.offset = fraction_ > kEmpty ? table_->offset_at(tilt_, fraction_) : -1.0;
+  // Never above the lowest rim point (the table is accurate to ~0.1 %; the rim is exact).
+  surface_.offset = fraction_ > kEmpty ? std::min(table_->offset_at(tilt_, fraction_), rim_offset(vessel_, tilt_)) : -1.0;
+  // Waves stay below the rim now, not only from the next step on (a refill, a spill).
+  // Wave shapes reach at most 1 (ring) and 1.5625 (cross) anywhere on the surface.
+  const double headroom = std::max(rim_offset(vessel_, tilt_) - surface_.offset, 0.0);
+  const double peak = std::abs(slosh_.ring) + 1.5625 * (std::abs(slosh_.cross.x) + std::abs(slosh_.cross.y));
+  if (peak > 0.9 * headroom) {
+    const double k = peak > 0 ? 0.9 * headroom / peak : 0.0;
+    slosh_.ring *= k, slosh_.ring_rate *= k, slosh_.cross *= k, slosh_.cross_rate *= k;
+  }
   // Where the surface crosses the axis: its radius and depth set the slosh frequency.
   const double axis = n.y > 0.2 ? surface_.offset / n.y : vessel_.base + 0.5 * (vessel_.height - vessel_.base);
   const double level = std::clamp(axis, vessel_.base + 1e-4, vessel_.height);

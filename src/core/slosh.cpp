@@ -95,12 +95,20 @@ double SurfaceWaves::height(double x, double z) const {
 }
 
 glm::dvec2 SurfaceWaves::gradient(double x, double z) const {
-  x /= radius, z /= radius;
-  const double u2 = x * x + z * z;
-  if (u2 > 1.5625) return glm::dvec2(0.0);
-  const double dr = ring * (-6.0 + 6.0 * u2);  // d(ring shape)/d(x) = dr * x
-  return glm::dvec2(dr * x + 2.0 * cross.x * x + 2.0 * cross.y * z, dr * z - 2.0 * cross.x * z + 2.0 * cross.y * x) /
-         radius;
+  glm::dvec2 q(x / radius, z / radius);
+  const double len = glm::length(q);
+  // Beyond 1.25 radii the height is that of the point pulled in to 1.25 radii: chain rule
+  // through that projection (only the angular part of the gradient survives).
+  const bool held = len * len > 1.5625;
+  const glm::dvec2 c = held ? q * (1.25 / len) : q;
+  const double u2 = glm::dot(c, c);
+  const double dr = ring * (-6.0 + 6.0 * u2);  // d(ring shape)/dx = dr * x
+  glm::dvec2 g(dr * c.x + 2.0 * cross.x * c.x + 2.0 * cross.y * c.y, dr * c.y - 2.0 * cross.x * c.y + 2.0 * cross.y * c.x);
+  if (held) {
+    const glm::dvec2 dir = q / len;
+    g = (1.25 / len) * (g - dir * glm::dot(dir, g));
+  }
+  return g / radius;
 }
 
 }  // namespace draught
