@@ -29,7 +29,6 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string find_on_path(const std::string& exe) {
-  if (const char* env = std::getenv("DRAUGHT_FFMPEG"); env && *env) return access(env, X_OK) == 0 ? env : "";
   const char* path = std::getenv("PATH");
   std::string dirs = path ? path : "/usr/bin:/bin";
   for (size_t start = 0; start <= dirs.size();) {
@@ -46,7 +45,10 @@ std::string find_on_path(const std::string& exe) {
 class Encoder {
  public:
   Encoder(const fs::path& out, int w, int h, double fps) {
-    const std::string ffmpeg = find_on_path("ffmpeg");
+    const char* pinned = std::getenv("DRAUGHT_FFMPEG");
+    if (pinned && *pinned && access(pinned, X_OK) != 0)
+      throw InputError("-o " + out.string() + ": DRAUGHT_FFMPEG=" + pinned + " is not an executable ffmpeg");
+    const std::string ffmpeg = pinned && *pinned ? std::string(pinned) : find_on_path("ffmpeg");
     if (ffmpeg.empty())
       throw InputError("-o " + out.string() +
                        ": ffmpeg was not found on PATH (Debian: apt install ffmpeg); or write PNG frames with -o DIR/");
@@ -183,8 +185,8 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
                     i + 1 == frames);
   }
   if (encoder) encoder->finish(out);
-  std::printf("wrote %s (%d frames, %g fps, %.2f s; spilled %.1f %% of the glass)\n", out.string().c_str(), frames, fps,
-              frames / fps, 100.0 * sim.spilled());
+  std::printf("wrote %s (%d frame%s, %g fps, %.2f s; spilled %.1f %% of the glass)\n", out.string().c_str(), frames,
+              frames == 1 ? "" : "s", fps, frames / fps, 100.0 * sim.spilled());
   return 0;
 }
 

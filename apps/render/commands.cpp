@@ -70,8 +70,16 @@ int validate(const std::vector<std::string>& files) {
   for (const auto& f : files) {
     try {
       const std::string text = read_text_file(f);
-      if (text.find("\"draught_timeline\"") != std::string::npos) {
+      // Timelines are told apart by their format key, or by their actions.
+      if (text.find("\"draught_timeline\"") != std::string::npos || text.find("\"actions\"") != std::string::npos) {
         const Timeline t = parse_timeline(text, f);
+        for (auto [field, name, kind] : {std::tuple{"preset", t.preset, "drink"}, {"glass", t.glass, "glass"}}) {
+          try {  // the scene it names must exist
+            if (!name.empty()) find_preset(name, kind);
+          } catch (const InputError& e) {
+            throw InputError(f + ": field '" + field + "': " + e.what());
+          }
+        }
         std::printf("%s: ok (timeline '%s', %zu actions, %g s)\n", f.c_str(), t.name.c_str(), t.actions.size(),
                     t.duration);
         continue;

@@ -15,7 +15,7 @@ namespace draught {
 // Volume of the cavity (base..rim) below the plane whose normal is tilted by `tilt`
 // radians (towards local +X; the cavity is round, so the direction does not matter).
 // Splits every segment where the cutting line touches the slice and integrates each
-// piece with Gauss-Legendre: accurate to ~1e-9 of the cavity volume.
+// piece with Gauss-Legendre: accurate to ~1e-7 of the cavity volume.
 double volume_below_plane(const Vessel&, double tilt, double offset);
 // The offset whose plane holds `volume` m^3 (bisection on the above; reference solver).
 double plane_offset_for_volume(const Vessel&, double tilt, double volume);
