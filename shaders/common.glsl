@@ -56,9 +56,6 @@ const int M_GLASS_BOTTOM = 5;
 const int M_CAVITY_FLOOR = 6;
 const int M_LIQUID_SURFACE = 7;
 
-// The fill table: plane offsets over (tilt row, volume column), core/fill_table.hpp.
-uniform highp sampler2D u_fill_table;
-
 // All intersections happen in the glass's frame; the surroundings are in the world.
 mat3 pose_rotation() { return mat3(u_pose_x.xyz, u_pose_y.xyz, u_pose_z.xyz); }
 vec3 to_world_dir(vec3 v) { return pose_rotation() * v; }

@@ -183,41 +183,19 @@ Hit hit_disk(vec3 o, vec3 d, float y, float rad, float tmin, vec3 n, int m) {
   return Hit(t, n, m);
 }
 
-// The liquid surface: a plane whose offset keeps the volume (looked up in the fill
-// table, interpolated exactly as FillTable::offset_at), plus the slosh waves.
-const int TABLE_TILTS = 64;
-const int TABLE_VOLUMES = 64;
-const float TABLE_MAX_TILT = 0.75 * PI;
-
-float table_row(int row, int j, float fj) {
-  return mix(texelFetch(u_fill_table, ivec2(j, row), 0).r, texelFetch(u_fill_table, ivec2(j + 1, row), 0).r, fj);
-}
-
-float fill_table_offset(float tilt, float fraction) {
-  float ti = clamp(tilt / TABLE_MAX_TILT, 0.0, 1.0) * float(TABLE_TILTS - 1);
-  float u = 0.5 - sin(asin(1.0 - 2.0 * clamp(fraction, 0.0, 1.0)) / 3.0);  // inverse of u^2 (3 - 2u)
-  float vj = u * float(TABLE_VOLUMES - 1);
-  int i = min(int(ti), TABLE_TILTS - 2), j = min(int(vj), TABLE_VOLUMES - 2);
-  float fi = ti - float(i), fj = vj - float(j);
-  float row_step = TABLE_MAX_TILT / float(TABLE_TILTS - 1);
-  float level = table_row(0, j, fj);
-  float r0 = table_row(i, j, fj) - cos(float(i) * row_step) * level;
-  float r1 = table_row(i + 1, j, fj) - cos(float(i + 1) * row_step) * level;
-  return cos(tilt) * level + mix(r0, r1, fi);
-}
-
+// The liquid surface: a plane whose offset keeps the volume (from the fill table, looked
+// up once per frame in the vertex shader, fill_table.glsl), plus the slosh waves.
+flat in float v_liquid_offset;
 float g_liquid_offset = -1.0;  // set once per pixel by init_liquid()
 
-void init_liquid() {
-  vec3 n = u_liquid_plane.xyz;
-  if (u_liquid.w < 0.5) return;
-  float tilt = atan(length(n.xz), n.y);
-  // Never above the lowest rim point (as core/simulation.cpp).
-  float rim = cos(tilt) * u_vessel.x - sin(tilt) * u_knots[SEGMENTS].y;
-  g_liquid_offset = min(fill_table_offset(tilt, u_liquid_plane.w), rim);
-}
+void init_liquid() { g_liquid_offset = v_liquid_offset; }
 
-bool has_waves() { return u_waves.x != 0.0 || u_waves.y != 0.0 || u_waves.z != 0.0; }
+// The renderer compiles this shader twice: with SURFACE_WAVES 1 for a moving surface and
+// 0 for a still one, which then carries no wave code at all (software rasterizers pay
+// for code even where a branch skips it; still drinks are the common case).
+#ifndef SURFACE_WAVES
+#define SURFACE_WAVES 0
+#endif
 
 // Beyond 1.25 radii the shapes hold their value there (as core/slosh.cpp).
 float wave_height(vec2 xz) {
@@ -247,7 +225,11 @@ vec2 wave_gradient(vec2 xz) {
 
 // Signed height of p over the surface: negative in the liquid.
 float liquid_level(vec3 p) {
-  return dot(u_liquid_plane.xyz, p) - g_liquid_offset - (has_waves() ? wave_height(p.xz) : 0.0);
+  float level = dot(u_liquid_plane.xyz, p) - g_liquid_offset;
+#if SURFACE_WAVES
+  level -= wave_height(p.xz);
+#endif
+  return level;
 }
 
 Hit hit_liquid_surface(vec3 o, vec3 d, float tmin) {
@@ -256,19 +238,23 @@ Hit hit_liquid_surface(vec3 o, vec3 d, float tmin) {
   float dn = dot(n, d);
   if (abs(dn) < 1e-12) return no_hit();
   float t = (g_liquid_offset - dot(n, o)) / dn;
-  if (has_waves()) {  // Newton steps from the plane onto the waves (as core/intersect.cpp)
-    for (int it = 0; it < 4; ++it) {
-      vec3 p = o + t * d;
-      vec2 g = wave_gradient(p.xz);
-      float slope = dn - dot(g, d.xz);
-      if (abs(slope) < 1e-12) break;
-      t -= liquid_level(p) / slope;
-    }
+#if SURFACE_WAVES
+  for (int it = 0; it < 4; ++it) {  // Newton steps from the plane onto the waves
+    vec3 p = o + t * d;
+    vec2 g = wave_gradient(p.xz);
+    float slope = dn - dot(g, d.xz);
+    if (abs(slope) < 1e-12) break;
+    t -= liquid_level(p) / slope;
   }
+#endif
   vec3 p = o + t * d;
   if (t <= tmin || p.y <= u_vessel.y || p.y >= u_vessel.x || length(p.xz) >= inner_radius(p.y)) return no_hit();
-  vec2 g = has_waves() ? wave_gradient(p.xz) : vec2(0.0);
+#if SURFACE_WAVES
+  vec2 g = wave_gradient(p.xz);
   return Hit(t, normalize(n - vec3(g.x, 0.0, g.y)), M_LIQUID_SURFACE);
+#else
+  return Hit(t, n, M_LIQUID_SURFACE);
+#endif
 }
 
 // The floor is world y = 0: in the glass's frame a plane through the foot's contact.

@@ -79,21 +79,36 @@ void RenderTarget::release() {
 
 RenderTarget::~RenderTarget() { release(); }
 
-Renderer::Renderer(const std::filesystem::path& shader_dir_arg) {
-  std::filesystem::path shader_dir = shader_dir_arg;
-  if (const char* env = std::getenv("DRAUGHT_SHADER_DIR"); shader_dir.empty() && env && *env) shader_dir = env;
-  program_ = std::make_unique<Program>(assemble_shader("fullscreen.vert.glsl", shader_dir),
-                                       assemble_shader("vessel.frag.glsl", shader_dir));
-  GLuint block = glGetUniformBlockIndex(program_->id(), "Frame");
+namespace {
+// The source with `#define name 1` right after its #version line (line numbers kept).
+ShaderSource with_define(ShaderSource src, const std::string& name) {
+  const size_t eol = src.text.find('\n');
+  src.text.insert(eol + 1, "#define " + name + " 1\n#line 2 0\n");
+  return src;
+}
+}  // namespace
+
+std::unique_ptr<Program> Renderer::build_program(bool waves) const {
+  ShaderSource vert = assemble_shader("fullscreen.vert.glsl", shader_dir_);
+  ShaderSource frag = assemble_shader("vessel.frag.glsl", shader_dir_);
+  if (waves) frag = with_define(std::move(frag), "SURFACE_WAVES");
+  auto program = std::make_unique<Program>(vert, frag);
+  GLuint block = glGetUniformBlockIndex(program->id(), "Frame");
   if (block == GL_INVALID_INDEX) throw ShaderError("vessel.frag.glsl: uniform block 'Frame' is missing");
   GLint size = 0;
-  glGetActiveUniformBlockiv(program_->id(), block, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
+  glGetActiveUniformBlockiv(program->id(), block, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
   if (size_t(size) != sizeof(FrameUniforms))
     throw ShaderError("common.glsl: uniform block 'Frame' is " + std::to_string(size) +
                       " bytes but gpu/uniforms.hpp FrameUniforms is " + std::to_string(sizeof(FrameUniforms)));
-  glUniformBlockBinding(program_->id(), block, 0);
-  glUseProgram(program_->id());
-  glUniform1i(glGetUniformLocation(program_->id(), "u_fill_table"), 0);
+  glUniformBlockBinding(program->id(), block, 0);
+  glUseProgram(program->id());
+  glUniform1i(glGetUniformLocation(program->id(), "u_fill_table"), 0);
+  return program;
+}
+
+Renderer::Renderer(const std::filesystem::path& shader_dir) : shader_dir_(shader_dir) {
+  if (const char* env = std::getenv("DRAUGHT_SHADER_DIR"); shader_dir_.empty() && env && *env) shader_dir_ = env;
+  still_program_ = build_program(false);
   // The fill table: R32F, fetched texel by texel (float textures need not filter in ES 3.0).
   glGenTextures(1, &fill_tex_);
   glBindTexture(GL_TEXTURE_2D, fill_tex_);
@@ -128,7 +143,11 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug)
   glViewport(0, 0, width, height);
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
-  glUseProgram(program_->id());
+  // A still surface draws with the variant that has no wave code (see vessel.glsl).
+  const SurfaceWaves& w = f.liquid.waves;
+  const bool waves = f.has_liquid && (w.ring != 0 || w.cross.x != 0 || w.cross.y != 0);
+  if (waves && !waves_program_) waves_program_ = build_program(true);
+  glUseProgram((waves ? waves_program_ : still_program_)->id());
   glBindVertexArray(vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

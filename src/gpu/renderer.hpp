@@ -56,7 +56,10 @@ class Renderer {
   void finish();
 
  private:
-  std::unique_ptr<Program> program_;
+  std::unique_ptr<Program> build_program(bool waves) const;
+
+  std::filesystem::path shader_dir_;
+  std::unique_ptr<Program> still_program_, waves_program_;  // the latter built when first needed
   unsigned vao_ = 0, ubo_ = 0, fill_tex_ = 0;
   std::shared_ptr<const FillTable> uploaded_table_;  // what fill_tex_ holds
 };
