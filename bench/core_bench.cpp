@@ -6,6 +6,8 @@
 #include "core/fill_table.hpp"
 #include "core/frame.hpp"
 #include "core/preset.hpp"
+#include "core/simulation.hpp"
+#include "core/timeline.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -45,6 +47,25 @@ void BM_MakeFrame(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(make_frame(p));
 }
 BENCHMARK(BM_MakeFrame);
+
+// One simulation second (240 fixed steps) of the shake timeline: what a viewer spends
+// per second of motion on the CPU (surface, slosh, spill check with its exact capacity).
+void BM_SimulateOneSecond(benchmark::State& state) {
+  const Timeline tl = load_timeline("shake-and-settle");
+  const Params base = glass_params("pint");
+  for (auto _ : state) {
+    state.PauseTiming();  // the glass's table is built once per glass, not per second
+    Simulation sim(base);
+    TimelineDriver driver(tl, sim.vessel().r_outer.front());
+    state.ResumeTiming();
+    for (int i = 0; i < 240; ++i) {
+      const double t = sim.time() + Simulation::kStep;
+      sim.step(driver.sample(t + 0.5));  // in the middle of the shake
+    }
+    benchmark::DoNotOptimize(sim.frame());
+  }
+}
+BENCHMARK(BM_SimulateOneSecond)->Unit(benchmark::kMillisecond);
 
 // The reference intersector over a 64x64 view of the pint (rays per second).
 void BM_ReferenceFirstHit(benchmark::State& state) {

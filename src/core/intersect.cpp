@@ -229,7 +229,7 @@ Hit hit_liquid_surface(const Vessel& v, const LiquidPlane& l, const Ray& ray, do
   if (std::fabs(dn) < 1e-15) return {};
   // From the plane, Newton steps onto the waves (they are small and smooth).
   double t = (l.offset - glm::dot(l.n, ray.o)) / dn;
-  for (int it = 0; it < 4; ++it) {
+  for (int it = 0; it < (l.waves.flat() ? 0 : 4); ++it) {
     const glm::dvec3 p = ray.at(t);
     const glm::dvec2 g = l.waves.gradient(p.x, p.z);
     const double slope = dn - (g.x * ray.d.x + g.y * ray.d.z);

@@ -54,7 +54,9 @@ struct LiquidPlane {
   glm::dvec3 n{0, 1, 0};
   double offset = -1;  // below the floor: no liquid
   SurfaceWaves waves;
-  double level(const glm::dvec3& p) const { return glm::dot(n, p) - offset - waves.height(p.x, p.z); }
+  double level(const glm::dvec3& p) const {
+    return glm::dot(n, p) - offset - (waves.flat() ? 0.0 : waves.height(p.x, p.z));
+  }
   bool below(const glm::dvec3& p) const { return level(p) < 0; }
 };
 

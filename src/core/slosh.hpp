@@ -45,6 +45,7 @@ struct SurfaceWaves {
   double ring = 0;
   glm::dvec2 cross{0.0};
   double radius = 1;
+  bool flat() const { return ring == 0 && cross.x == 0 && cross.y == 0; }
   double height(double x, double z) const;
   glm::dvec2 gradient(double x, double z) const;  // d(height)/dx, d(height)/dz
 };
