@@ -143,6 +143,14 @@ inline std::string join(const std::vector<std::string>& v, const std::string& se
   return s;
 }
 
+// `s` with the first `from` replaced by `to` (a test fails when `from` is not there).
+inline std::string replace(std::string s, const std::string& from, const std::string& to) {
+  auto p = s.find(from);
+  EXPECT_NE(p, std::string::npos) << from;
+  if (p != std::string::npos) s.replace(p, from.size(), to);
+  return s;
+}
+
 inline bool contains(const std::string& haystack, const std::string& needle) {
   return haystack.find(needle) != std::string::npos;
 }

@@ -18,13 +18,6 @@ const char* kGoodDrink =
     "  }\n"                                // 7
     "}\n";
 
-std::string replace(std::string s, const std::string& from, const std::string& to) {
-  auto p = s.find(from);
-  EXPECT_NE(p, std::string::npos) << from;
-  if (p != std::string::npos) s.replace(p, from.size(), to);
-  return s;
-}
-
 class BadInput : public CliTest {
  protected:
   fs::path png() const { return out() / "x.png"; }

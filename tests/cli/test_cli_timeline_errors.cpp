@@ -22,13 +22,6 @@ const char* kGoodTimeline =
     "  ]\n"                                                                                   // 10
     "}\n";
 
-std::string replace(std::string s, const std::string& from, const std::string& to) {
-  auto p = s.find(from);
-  EXPECT_NE(p, std::string::npos) << from;
-  if (p != std::string::npos) s.replace(p, from.size(), to);
-  return s;
-}
-
 class TimelineErrors : public CliTest {
  protected:
   fs::path timeline_file(const std::string& name, const std::string& text) {
