@@ -35,6 +35,12 @@ layout(std140) uniform Frame {
   vec4 u_pose_z;
   vec4 u_pose_pos;      // where the glass's foot centre is in the world
   vec4 u_waves;         // ring, cross cos 2a, cross sin 2a, radius (core/slosh.hpp)
+  vec4 u_foam;          // thickness, dome, density per metre, 1 when there is a head
+  vec4 u_foam_color;    // albedo rgb, Henyey-Greenstein g
+  vec4 u_foam_detail;   // multiscatter weight, micro-bubble size, detail, big bubble count
+  vec4 u_lacing_info;   // ring count, strength
+  vec4 u_lacing[2];     // ring heights (glass frame y), 8 at most
+  vec4 u_bubbles[12];   // big bubbles: x, z, radius, 1 when popped (a void)
   vec4 u_knots[SEGMENTS + 1];  // outer radius, inner radius at y = k * dy
 };
 

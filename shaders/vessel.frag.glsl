@@ -7,6 +7,7 @@
 #include "vessel.glsl"
 #include "environment.glsl"
 #include "liquid.glsl"
+#include "foam.glsl"
 #include "tonemap.glsl"
 
 out vec4 frag_color;
@@ -51,6 +52,12 @@ void main() {
   bool escaped = false;
   for (int e = 0; e < u_limits.x; ++e) {
     Hit h = scene_hit(o, d, medium, e == 0 ? 0.0 : 2e-6);
+    if (medium == AIR) {  // the head and its big bubbles sit in the air above the liquid
+      float t_end = h.m == M_NONE ? 100.0 : h.t;
+      bubble_caps(o, d, 0.0, t_end, l, radiance, thr);
+      march_foam(o, d, 0.0, t_end, l, radiance, thr);
+      if (max(thr.r, max(thr.g, thr.b)) < 1e-3) break;
+    }
     if (h.m == M_NONE) {
       escaped = true;
       break;
@@ -62,6 +69,11 @@ void main() {
       radiance += thr * shade_floor(p, length(to_world_point(p) - u_cam_eye.xyz));
       thr = vec3(0.0);
       break;
+    }
+    if (h.m == M_GLASS_INNER && has_foam() && !below_liquid(p)) {  // lacing on the wall
+      float cover = lacing_cover(p);
+      radiance += thr * cover * foam_light(d, l, 0.001, 0.0);
+      thr *= 1.0 - cover;
     }
     int next = other_side(h, medium, p);
     vec3 n = dot(h.n, d) < 0.0 ? h.n : -h.n;  // facing the incoming ray
@@ -94,7 +106,7 @@ void main() {
   }
 
   if (debug_view == 4) {  // cost: intersection tests this pixel needed, events followed
-    frag_color = vec4(float(g_cost), 0.0, 0.0, 1.0);
+    frag_color = vec4(float(g_cost), float(g_foam_steps), 0.0, 1.0);
     return;
   }
   vec3 c = radiance * u_output.y;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/fill_table.hpp"
+#include "core/foam.hpp"
 #include "core/intersect.hpp"
 #include "core/motion.hpp"
 #include "core/params.hpp"
@@ -23,6 +24,7 @@ struct FrameState {
   double liquid_tilt = 0, liquid_azimuth = 0;   // the surface normal in the local frame
   double liquid_fraction = 0;                   // of the cavity volume
   bool has_liquid = false;
+  FoamFrame foam;  // the head on the liquid, lacing, big bubbles
   glm::vec3 liquid_absorption{0};
   double mean_outer_radius = 0;
 };

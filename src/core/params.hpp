@@ -40,6 +40,23 @@ struct LiquidParams {
   float wave_speed;       // multiplies the waves' natural frequencies
 };
 
+struct FoamParams {
+  float height;        // head thickness when settled after the pour, metres
+  float density;       // extinction per metre (micro bubbles scatter light)
+  glm::vec3 color;     // single-scattering albedo (white lager foam, tan stout head)
+  float anisotropy;    // Henyey-Greenstein g
+  float multiscatter;  // 0: single scattering only; 1: the full multi-scatter terms
+  float age;           // seconds since the pour, for a still picture
+  float rise_time;     // seconds for the head to build during a pour
+  float half_life;     // seconds for the head to halve as it collapses
+  float dome;          // > 0 domed (thicker in the middle), < 0 concave
+  float bubble_size;   // metres: the scale of the micro-bubble detail
+  float detail;        // 0..1: how much the micro bubbles modulate the density
+  int big_bubbles;     // large bubbles on top at any time
+  float lacing;        // 0..1: foam rings left on the glass as the level drops
+  int seed;
+};
+
 enum class EnvMode { Studio = 0, Constant = 1 };
 enum class Tonemap { None = 0, Aces = 1 };
 
@@ -82,6 +99,7 @@ struct RenderParams {
 struct Params {
   GlassParams glass;
   LiquidParams liquid;
+  FoamParams foam;
   EnvParams env;
   LightParams light;
   CameraParams camera;

@@ -22,7 +22,7 @@ glm::dvec3 clamp_length(const glm::dvec3& v, double max_len) {
 }
 }  // namespace
 
-Simulation::Simulation(const Params& p) : params_(p) {
+Simulation::Simulation(const Params& p) : params_(p), foam_(p.foam) {
   rebuild_glass();
   fraction_ = std::clamp(double(p.liquid.fill), 0.0, 1.0);
   env_.radius = vessel_.inner_radius(vessel_.height);
@@ -38,6 +38,7 @@ void Simulation::set_params(const Params& p) {
   const bool glass_changed = !same_glass(p.glass, params_.glass);
   const bool refill = p.liquid.fill != params_.liquid.fill;
   params_ = p;
+  foam_.set_params(p.foam);
   if (glass_changed) rebuild_glass();
   if (refill || glass_changed) fraction_ = std::clamp(double(p.liquid.fill), 0.0, 1.0);
   update_surface();
@@ -46,6 +47,12 @@ void Simulation::set_params(const Params& p) {
 void Simulation::set_fraction(double fraction) {
   if (!std::isfinite(fraction)) return;
   fraction_ = std::clamp(fraction, 0.0, 1.0);
+  update_surface();
+}
+
+void Simulation::pour() {
+  fraction_ = std::clamp(double(params_.liquid.fill), 0.0, 1.0);
+  foam_.pour();
   update_surface();
 }
 
@@ -118,6 +125,9 @@ void Simulation::step(const MotionSample& raw, double drink_rate) {
   first_step_ = false;
   if (std::isfinite(drink_rate) && drink_rate > 0) fraction_ = std::max(fraction_ - drink_rate * dt, 0.0);
   update_surface();
+  // The head follows the volume (the level the drink would have upright), not the slosh.
+  const double level = table_->offset_at(0, fraction_);
+  foam_.step(dt, level, vessel_.inner_radius(std::clamp(level, vessel_.base, vessel_.height)));
 }
 
 void Simulation::advance(InputDriver& driver, double t, double drink_rate) {
@@ -141,6 +151,7 @@ FrameState Simulation::frame() const {
   f.liquid_fraction = fraction_;
   f.has_liquid = fraction_ > kEmpty;
   f.liquid_absorption = liquid_absorption(params_.liquid);
+  f.foam = foam_.frame(surface_.waves.radius);
   double sum = 0;
   for (double r : vessel_.r_outer) sum += r;
   f.mean_outer_radius = sum / double(vessel_.r_outer.size());

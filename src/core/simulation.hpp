@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/fill_table.hpp"
+#include "core/foam.hpp"
 #include "core/frame.hpp"
 #include "core/input/driver.hpp"
 #include "core/slosh.hpp"
@@ -23,6 +24,7 @@ class Simulation {
   // rebuilt only when the glass changed; a changed liquid.fill refills the glass.
   void set_params(const Params&);
   void set_fraction(double fraction);  // drink or refill; clamped to what the glass holds
+  void pour();                         // fill to liquid.fill with a fresh head building
   // Steps to time t (seconds), sampling the driver at every step. drink_rate: fraction
   // of the cavity drunk per second meanwhile (a sip).
   void advance(InputDriver&, double t, double drink_rate = 0);
@@ -34,6 +36,7 @@ class Simulation {
   double fraction() const { return fraction_; }
   double spilled() const { return spilled_; }  // fraction of the cavity lost over the rim
   const SloshState& slosh() const { return slosh_; }
+  const FoamState& foam() const { return foam_; }
   double energy() const;
   const Vessel& vessel() const { return vessel_; }
   const FillTable& fill_table() const { return *table_; }
@@ -54,6 +57,7 @@ class Simulation {
   glm::dvec2 level_{0.0};   // the resting slope under the last acceleration
   SloshEnvironment env_;
   SloshState slosh_;
+  FoamState foam_;
   LiquidPlane surface_;
   double tilt_ = 0, azimuth_ = 0;
   bool first_step_ = true;

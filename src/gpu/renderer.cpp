@@ -51,6 +51,19 @@ FrameUniforms pack_uniforms(const FrameState& f, int width, int height, DebugVie
   u.pose_pos = {glm::vec3(f.pose.position), 0};
   const SurfaceWaves& w = f.liquid.waves;
   u.waves = {w.ring, w.cross.x, w.cross.y, w.radius};
+  const FoamFrame& fo = f.foam;
+  const FoamParams& fp = p.foam;
+  const bool head = f.has_liquid && fo.thickness > 1e-4;
+  u.foam = {fo.thickness, fo.dome, fp.density, head ? 1.0f : 0.0f};
+  u.foam_color = {fp.color, fp.anisotropy};
+  u.foam_detail = {fp.multiscatter, fp.bubble_size, fp.detail, float(head ? fo.bubbles.size() : 0)};
+  const size_t rings = std::min<size_t>(fo.lacing.size(), 8);
+  u.lacing_info = {float(rings), fp.lacing, 0, 0};
+  for (size_t i = 0; i < rings; ++i) u.lacing[i / 4][int(i % 4)] = float(fo.lacing[i]);
+  for (size_t i = 0; i < std::min<size_t>(fo.bubbles.size(), 12); ++i) {
+    const BigBubble& b = fo.bubbles[i];
+    u.bubbles[i] = {b.xz.x, b.xz.y, b.radius, b.popped ? 1.0f : 0.0f};
+  }
   for (int k = 0; k <= Vessel::kSegments; ++k) u.knots[k] = {v.r_outer[size_t(k)], v.r_inner[size_t(k)], 0, 0};
   return u;
 }

@@ -21,6 +21,9 @@ struct FrameUniforms {
   glm::ivec4 limits;
   glm::vec4 pose_x, pose_y, pose_z, pose_pos;
   glm::vec4 waves;
+  glm::vec4 foam, foam_color, foam_detail, lacing_info;
+  glm::vec4 lacing[2];
+  glm::vec4 bubbles[12];
   glm::vec4 knots[Vessel::kSegments + 1];
 };
 
@@ -34,7 +37,10 @@ static_assert(offsetof(FrameUniforms, output) == 352);
 static_assert(offsetof(FrameUniforms, limits) == 368);
 static_assert(offsetof(FrameUniforms, pose_x) == 384);
 static_assert(offsetof(FrameUniforms, waves) == 448);
-static_assert(offsetof(FrameUniforms, knots) == 464);
-static_assert(sizeof(FrameUniforms) == 464 + 16 * (Vessel::kSegments + 1));
+static_assert(offsetof(FrameUniforms, foam) == 464);
+static_assert(offsetof(FrameUniforms, lacing) == 528);
+static_assert(offsetof(FrameUniforms, bubbles) == 560);
+static_assert(offsetof(FrameUniforms, knots) == 752);
+static_assert(sizeof(FrameUniforms) == 752 + 16 * (Vessel::kSegments + 1));
 
 }  // namespace draught::gpu
