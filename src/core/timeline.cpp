@@ -66,7 +66,7 @@ void check_keys(const Reader& r, const json& obj, const std::string& where, std:
 TimelineAction parse_action(const Reader& r, const json& a, const std::string& at) {
   if (!a.is_object()) r.fail(at, "expected an action object, got " + short_dump(a));
   if (!a.contains("action"))
-    r.fail(at + ".action", "missing, expected one of tilt, rotate, shake, sip, orbit, set");
+    r.fail(at + ".action", "missing, expected one of tilt, rotate, shake, sip, orbit, set, pour");
   const std::string kind = r.string(a, "action", at + ".action");
   TimelineAction act{};
   const double zero = 0, one = 1;
@@ -113,8 +113,11 @@ TimelineAction parse_action(const Reader& r, const json& a, const std::string& a
     if (!a.contains("value")) r.fail(f + "value", "missing, expected " + expected_text(*act.param));
     act.value = param_value_from_json(*act.param, a["value"], r.file, f + "value");
     act.duration = duration(0, &zero);
+  } else if (kind == "pour") {
+    check_keys(r, a, f, {"at", "action"});
+    act.kind = TimelineAction::Kind::Pour;
   } else {
-    r.fail(at + ".action", "expected one of tilt, rotate, shake, sip, orbit, set, got \"" + kind + "\"");
+    r.fail(at + ".action", "expected one of tilt, rotate, shake, sip, orbit, set, pour, got \"" + kind + "\"");
   }
   return act;
 }
@@ -204,6 +207,12 @@ double Timeline::drink_rate_at(double t) const {
   return rate;
 }
 
+bool Timeline::pours_in(double t0, double t1) const {
+  for (auto& a : actions)
+    if (a.kind == TimelineAction::Kind::Pour && a.at >= t0 && a.at < t1) return true;
+  return false;
+}
+
 Params Timeline::params_at(double t, const Params& base) const {
   Params p = base;
   double orbit = 0;
@@ -251,8 +260,10 @@ MotionSample TimelineDriver::sample(double t) {
 
 void play_timeline(Simulation& sim, TimelineDriver& driver, const Timeline& tl, const Params& base, double t) {
   sim.set_params(tl.params_at(t, base));
+  if (sim.time() == 0 && tl.pours_in(0, 1e-9)) sim.pour();  // a pour at 0 shows in frame 0
   while (sim.time() + Simulation::kStep <= t + 1e-9) {
     const double next = sim.time() + Simulation::kStep;
+    if (tl.pours_in(sim.time(), next)) sim.pour();
     sim.step(driver.sample(next), tl.drink_rate_at(next));
   }
 }

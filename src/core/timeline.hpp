@@ -9,14 +9,16 @@
 //       { "at": 4,   "action": "sip",    "amount": 0.1, "duration": 1 },
 //       { "at": 0,   "action": "rotate", "degrees": 90, "duration": 2 },
 //       { "at": 0,   "action": "orbit",  "degrees": 45, "duration": 4 },
-//       { "at": 1,   "action": "set",    "param": "liquid.srm", "value": 12, "duration": 2 } ] }
+//       { "at": 1,   "action": "set",    "param": "liquid.srm", "value": 12, "duration": 2 },
+//       { "at": 0,   "action": "pour" } ] }
 //
 // tilt: lean the glass `angle` degrees towards `toward` (degrees from screen right, +X,
 // towards the viewer, +Z), tipping on its foot; from wherever it leans at `at`.
 // rotate: spin about its own axis. shake: move it to and fro horizontally (amplitude in
 // metres, frequency in Hz, along `toward`). sip: drink `amount` of the glass's volume.
 // orbit: move the camera around the glass. set: any parameter of the table; numbers
-// and vectors blend over `duration`, others switch at `at`. Easing is smooth
+// and vectors blend over `duration`, others switch at `at`. pour: the glass is filled to
+// liquid.fill and a fresh head builds (foam.rise_time), then settles. Easing is smooth
 // (zero speed at both ends) unless "ease": "linear".
 #pragma once
 
@@ -31,7 +33,7 @@ namespace draught {
 inline constexpr int kTimelineFormat = 1;
 
 struct TimelineAction {
-  enum class Kind { Tilt, Rotate, Shake, Sip, Orbit, Set } kind;
+  enum class Kind { Tilt, Rotate, Shake, Sip, Orbit, Set, Pour } kind;
   double at = 0, duration = 0;
   bool linear = false;
   double angle = 0, toward = 0;               // tilt (radians)
@@ -56,6 +58,7 @@ struct Timeline {
   double spin_at(double t) const;
   glm::dvec3 shake_at(double t) const;
   double drink_rate_at(double t) const;  // fraction of the cavity per second
+  bool pours_in(double t0, double t1) const;  // a pour action at a time in [t0, t1)
   // The parameters at time t: `base` with the set and orbit actions applied.
   Params params_at(double t, const Params& base) const;
 };

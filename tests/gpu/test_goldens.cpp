@@ -101,7 +101,12 @@ INSTANTIATE_TEST_SUITE_P(
                    0.002, 64},
         GoldenCase{"pint_lager_tilted", {}, 160, 160, 3, 0.002, 64, "gentle-tilt", 1.9},
         GoldenCase{"pint_lager_sloshing", {}, 160, 160, 3, 0.002, 64, "shake-and-settle", 1.3},
-        GoldenCase{"wine_spilling", {}, 160, 160, 3, 0.002, 64, "tilt-until-spill", 3.0}),
+        GoldenCase{"wine_spilling", {}, 160, 160, 3, 0.002, 64, "tilt-until-spill", 3.0},
+        // Foam: a head building during the pour, and half drunk with lacing and a concave head.
+        GoldenCase{"pint_lager_fresh_pour", {}, 160, 160, 3, 0.002, 64, "fresh-pour", 0.8},
+        GoldenCase{"pint_lager_half_drunk", {}, 160, 160, 3, 0.002, 64, "fresh-pour", 8.5},
+        GoldenCase{"nonic_stout_head", {"stout", "nonic", {}, {"eye=0,0.2,0.3", "target=0,0.14,0", "vfov=22"}}, 160,
+                   160, 3, 0.002, 64}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
