@@ -5,6 +5,11 @@
 // head (no shadow rays), micro-bubble detail from value noise, big bubbles as voids
 // with a denser ring around them, and lacing rings left on the glass.
 
+// Compiled in only for frames with a head (gpu/renderer.cpp builds the variants).
+#ifndef FOAM_HEAD
+#define FOAM_HEAD 0
+#endif
+
 bool has_foam() { return u_foam.w > 0.5; }
 
 // The head's thickness above the liquid at (x, z): domed or concave.

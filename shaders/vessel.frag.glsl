@@ -52,12 +52,14 @@ void main() {
   bool escaped = false;
   for (int e = 0; e < u_limits.x; ++e) {
     Hit h = scene_hit(o, d, medium, e == 0 ? 0.0 : 2e-6);
+#if FOAM_HEAD
     if (medium == AIR) {  // the head and its big bubbles sit in the air above the liquid
       float t_end = h.m == M_NONE ? 100.0 : h.t;
       bubble_caps(o, d, 0.0, t_end, l, radiance, thr);
       march_foam(o, d, 0.0, t_end, l, radiance, thr);
       if (max(thr.r, max(thr.g, thr.b)) < 1e-3) break;
     }
+#endif
     if (h.m == M_NONE) {
       escaped = true;
       break;
@@ -70,11 +72,13 @@ void main() {
       thr = vec3(0.0);
       break;
     }
-    if (h.m == M_GLASS_INNER && has_foam() && !below_liquid(p)) {  // lacing on the wall
+#if FOAM_HEAD
+    if (h.m == M_GLASS_INNER && !below_liquid(p)) {  // lacing on the wall
       float cover = lacing_cover(p);
       radiance += thr * cover * foam_light(d, l, 0.001, 0.0);
       thr *= 1.0 - cover;
     }
+#endif
     int next = other_side(h, medium, p);
     vec3 n = dot(h.n, d) < 0.0 ? h.n : -h.n;  // facing the incoming ray
     float n1 = medium_ior(medium), n2 = medium_ior(next);

@@ -37,6 +37,8 @@ int bench(int frames, const std::vector<int>& sizes, bool verbose) {
       {"nonic-stout", {"stout", "nonic", {}, {}}},
       {"wine-red", {"red-wine", "wine", {}, {}}},
       {"tulip-amber-floorless", {"amber-ale", "tulip", {"env.floor=false"}, {}}},
+      {"pint-lager-fresh-pour", {"lager", "", {}, {}}, "fresh-pour", 1.0},
+      {"nonic-stout-head-closeup", {"stout", "nonic", {}, {"eye=0,0.2,0.3", "target=0,0.14,0", "vfov=22"}}},
       {"pint-lager-sloshing", {"lager", "", {}, {}}, "shake-and-settle", 1.3},
       {"wine-red-spilling", {"red-wine", "", {}, {}}, "tilt-until-spill", 3.0},
   };
@@ -46,8 +48,8 @@ int bench(int frames, const std::vector<int>& sizes, bool verbose) {
   std::printf("renderer: %s (%s)%s%s; %d frames per row after 2 warm-up frames; %u hardware threads\n",
               ctx->renderer().c_str(), ctx->platform().c_str(), threads ? "; LP_NUM_THREADS=" : "",
               threads ? threads : "", frames, std::thread::hardware_concurrency());
-  std::printf("%-24s %-9s %10s %10s %10s %8s %10s %9s\n", "scene", "size", "median ms", "min ms", "max ms", "fps",
-              "tests/px", "max/px");
+  std::printf("%-26s %-9s %10s %10s %10s %8s %9s %7s %9s\n", "scene", "size", "median ms", "min ms", "max ms", "fps",
+              "tests/px", "max/px", "foam/px");
   for (const auto& s : scenes) {
     std::string log;
     Params p = resolve_scene(s.request, &log);
@@ -66,18 +68,19 @@ int bench(int frames, const std::vector<int>& sizes, bool verbose) {
       }
       // Work per pixel: intersection tests over the whole path (analytic bound, no marching).
       gpu::DebugImage cost = renderer.render_debug(f, size, size, gpu::DebugView::Cost);
-      double cost_sum = 0, cost_max = 0;
+      double cost_sum = 0, cost_max = 0, foam_sum = 0;
       for (size_t i = 0; i < cost.rgba.size(); i += 4) {
         cost_sum += cost.rgba[i];
         cost_max = std::max(cost_max, double(cost.rgba[i]));
+        foam_sum += cost.rgba[i + 1];  // foam march steps
       }
       const double cost_mean = cost_sum / (double(size) * size);
       double med = median(ms);
       char sz[32];
       std::snprintf(sz, sizeof sz, "%dx%d", size, size);
-      std::printf("%-24s %-9s %10.2f %10.2f %10.2f %8.1f %10.1f %9.0f\n", s.name, sz, med,
+      std::printf("%-26s %-9s %10.2f %10.2f %10.2f %8.1f %9.1f %7.0f %9.1f\n", s.name, sz, med,
                   *std::min_element(ms.begin(), ms.end()), *std::max_element(ms.begin(), ms.end()), 1000.0 / med,
-                  cost_mean, cost_max);
+                  cost_mean, cost_max, foam_sum / (double(size) * size));
       std::fflush(stdout);
     }
   }

@@ -101,10 +101,11 @@ ShaderSource with_define(ShaderSource src, const std::string& name) {
 }
 }  // namespace
 
-std::unique_ptr<Program> Renderer::build_program(bool waves) const {
+std::unique_ptr<Program> Renderer::build_program(int variant) const {
   ShaderSource vert = assemble_shader("fullscreen.vert.glsl", shader_dir_);
   ShaderSource frag = assemble_shader("vessel.frag.glsl", shader_dir_);
-  if (waves) frag = with_define(std::move(frag), "SURFACE_WAVES");
+  if (variant & kWaves) frag = with_define(std::move(frag), "SURFACE_WAVES");
+  if (variant & kFoam) frag = with_define(std::move(frag), "FOAM_HEAD");
   auto program = std::make_unique<Program>(vert, frag);
   GLuint block = glGetUniformBlockIndex(program->id(), "Frame");
   if (block == GL_INVALID_INDEX) throw ShaderError("vessel.frag.glsl: uniform block 'Frame' is missing");
@@ -121,7 +122,7 @@ std::unique_ptr<Program> Renderer::build_program(bool waves) const {
 
 Renderer::Renderer(const std::filesystem::path& shader_dir) : shader_dir_(shader_dir) {
   if (const char* env = std::getenv("DRAUGHT_SHADER_DIR"); shader_dir_.empty() && env && *env) shader_dir_ = env;
-  still_program_ = build_program(false);
+  programs_[0] = build_program(0);  // compiles now, so a broken shader is reported at once
   // The fill table: R32F, fetched texel by texel (float textures need not filter in ES 3.0).
   glGenTextures(1, &fill_tex_);
   glBindTexture(GL_TEXTURE_2D, fill_tex_);
@@ -156,11 +157,15 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug)
   glViewport(0, 0, width, height);
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
-  // A still surface draws with the variant that has no wave code (see vessel.glsl).
+  // Only the code a frame needs: waves and foam are compiled in when present (software
+  // rasterizers pay for code even where a uniform branch skips it). Built when first used.
   const SurfaceWaves& w = f.liquid.waves;
   const bool waves = f.has_liquid && (w.ring != 0 || w.cross.x != 0 || w.cross.y != 0);
-  if (waves && !waves_program_) waves_program_ = build_program(true);
-  glUseProgram((waves ? waves_program_ : still_program_)->id());
+  const bool foam = f.has_liquid && f.foam.thickness > 1e-4;
+  const int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0);
+  auto& program = programs_[variant];
+  if (!program) program = build_program(variant);
+  glUseProgram(program->id());
   glBindVertexArray(vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

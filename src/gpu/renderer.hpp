@@ -18,7 +18,7 @@ enum class DebugView { None = 0, Depth = 1, Normal = 2, Material = 3, Cost = 4 }
 
 // Raw debug channels per pixel, rows top-down: Depth/Material: (t, material, 0, 1);
 // Normal: (nx, ny, nz, material); Cost: (segment and torus intersections solved for
-// the whole path, 0, 0, 1). t is the distance to the first surface, 0 for none.
+// the whole path, foam march steps, 0, 1). t is the distance to the first surface, 0 for none.
 struct DebugImage {
   int width = 0, height = 0;
   std::vector<float> rgba;
@@ -56,10 +56,11 @@ class Renderer {
   void finish();
 
  private:
-  std::unique_ptr<Program> build_program(bool waves) const;
+  enum Variant { kWaves = 1, kFoam = 2 };  // bits: what the vessel shader is compiled with
+  std::unique_ptr<Program> build_program(int variant) const;
 
   std::filesystem::path shader_dir_;
-  std::unique_ptr<Program> still_program_, waves_program_;  // the latter built when first needed
+  std::unique_ptr<Program> programs_[4];  // by variant, built when first needed
   unsigned vao_ = 0, ubo_ = 0, fill_tex_ = 0;
   std::shared_ptr<const FillTable> uploaded_table_;  // what fill_tex_ holds
 };
