@@ -35,7 +35,7 @@ class FoamState {
   explicit FoamState(const FoamParams&);
   void set_params(const FoamParams& p) { params_ = p; }
   void pour();  // a fresh head builds from nothing
-  // Advance by dt; `level` is the liquid's height on the axis (glass frame), `radius` the
+  // Advance by dt (at most 1 s: a stalled caller does not age the head at once); `level` is the liquid's height on the axis (glass frame), `radius` the
   // inner radius there; the foam's top when the level drops is where lacing is left.
   void step(double dt, double level, double radius);
   FoamFrame frame(double radius) const;
