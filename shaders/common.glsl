@@ -40,7 +40,7 @@ layout(std140) uniform Frame {
   vec4 u_foam_detail;   // multiscatter weight, micro-bubble size, detail, big bubble count
   vec4 u_lacing_info;   // ring count, strength
   vec4 u_lacing[2];     // ring heights (glass frame y), 8 at most
-  vec4 u_bubbles[12];   // big bubbles: x, z, radius, 1 when popped (a void)
+  vec4 u_bubbles[12];   // big bubbles: centre xyz (glass frame), radius (< 0: popped, a void)
   vec4 u_knots[SEGMENTS + 1];  // outer radius, inner radius at y = k * dy
 };
 

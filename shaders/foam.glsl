@@ -10,7 +10,6 @@
 #define FOAM_HEAD 0
 #endif
 
-bool has_foam() { return u_foam.w > 0.5; }
 
 // The head's thickness above the liquid at (x, z): domed or concave.
 float foam_thickness_at(vec2 xz) {
@@ -18,13 +17,6 @@ float foam_thickness_at(vec2 xz) {
   return u_foam.x * max(1.0 + u_foam.y * (1.0 - 2.0 * u2), 0.1);
 }
 
-// Big bubble i: sits in the head's top, its cap standing out by 70 % of its radius.
-vec3 bubble_centre(int i) {
-  vec4 b = u_bubbles[i];
-  vec3 n = u_liquid_plane.xyz;
-  float y = (g_liquid_offset - n.x * b.x - n.z * b.y) / n.y;
-  return vec3(b.x, y, b.y) + n * (foam_thickness_at(b.xy) - 0.3 * b.z);
-}
 
 float hash13(vec3 p) {
   p = fract(p * 0.1031);
@@ -48,10 +40,10 @@ float foam_density(vec3 p, float height, float top) {
   float d = u_foam.z * max(1.0 + 1.6 * u_foam_detail.z * (value_noise(p / scale) - 0.5), 0.0);
   d *= clamp((top - height) / (0.12 * top), 0.0, 1.0);  // a soft top, a crisp underside
   for (int i = 0; i < int(u_foam_detail.w); ++i) {
-    float r = u_bubbles[i].z, dist = length(p - bubble_centre(i));
+    float r = abs(u_bubbles[i].w), dist = length(p - u_bubbles[i].xyz);
     if (dist < r) return 0.0;  // inside a big bubble, or the void a popped one left
     float ring = (dist - r) / (0.45 * r);
-    d *= 1.0 + (u_bubbles[i].w > 0.5 ? 0.6 : 1.8) * exp(-ring * ring);
+    d *= 1.0 + (u_bubbles[i].w < 0.0 ? 0.6 : 1.8) * exp(-ring * ring);
   }
   return d;
 }
@@ -84,13 +76,11 @@ float march_jitter() { return fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2
 
 int g_foam_steps = 0;  // march steps this pixel took (cost view)
 
-// Marches the head along o + t d for t in [t0, t1] (a stretch through air). Adds the light
-// it scatters to `radiance` and attenuates `thr`.
-void march_foam(vec3 o, vec3 d, float t0, float t1, vec3 l, inout vec3 radiance, inout vec3 thr) {
-  if (!has_foam()) return;
-  // The slab between the liquid plane and the highest possible top bounds the march.
+// The part of [t0, t1] along o + t d where the head (or a big bubble's cap) can be: the
+// slab from the lowest wave to the highest top, inside the cavity's bounding cylinder.
+bool foam_interval(vec3 o, vec3 d, inout float t0, inout float t1) {
   vec3 n = u_liquid_plane.xyz;
-  float top_max = u_foam.x * (1.0 + abs(u_foam.y)) + abs(u_waves.x) + abs(u_waves.y) + abs(u_waves.z);
+  float top_max = u_foam.x * (1.0 + abs(u_foam.y)) + abs(u_waves.x) + abs(u_waves.y) + abs(u_waves.z) + 0.006;
   float h0 = dot(n, o) - g_liquid_offset, dh = dot(n, d);
   float lo = -abs(u_waves.x) - abs(u_waves.y) - abs(u_waves.z);
   if (abs(dh) > 1e-9) {
@@ -98,13 +88,18 @@ void march_foam(vec3 o, vec3 d, float t0, float t1, vec3 l, inout vec3 radiance,
     t0 = max(t0, min(ta, tb));
     t1 = min(t1, max(ta, tb));
   } else if (h0 < lo || h0 > top_max) {
-    return;
+    return false;
   }
-  vec2 tr;  // and the cavity's bounding cylinder
-  if (!clip_to_bounds(o, d, u_vessel.y, u_vessel.x, u_rim.z, t0, tr)) return;
+  vec2 tr;
+  if (!clip_to_bounds(o, d, u_vessel.y, u_vessel.x, u_rim.z, t0, tr)) return false;
   t0 = tr.x;
   t1 = min(t1, tr.y);
-  if (t1 <= t0) return;
+  return t1 > t0;
+}
+
+// Marches the head along o + t d for t in [t0, t1] (a stretch through air, already cut to
+// foam_interval). Adds the light it scatters to `radiance` and attenuates `thr`.
+void march_foam(vec3 o, vec3 d, float t0, float t1, vec3 l, inout vec3 radiance, inout vec3 thr) {
   float len = t1 - t0;
   int steps = int(clamp(len * u_foam.z * 0.5, 6.0, 40.0));
   float dt = len / float(steps);
@@ -133,11 +128,10 @@ void march_foam(vec3 o, vec3 d, float t0, float t1, vec3 l, inout vec3 radiance,
 
 // A big bubble's cap is a thin soap film: it mirrors the surroundings at grazing angles.
 void bubble_caps(vec3 o, vec3 d, float t0, float t1, vec3 l, inout vec3 radiance, inout vec3 thr) {
-  if (!has_foam()) return;
   for (int i = 0; i < int(u_foam_detail.w); ++i) {
-    if (u_bubbles[i].w > 0.5) continue;  // popped
-    vec3 c = bubble_centre(i);
-    float r = u_bubbles[i].z;
+    if (u_bubbles[i].w < 0.0) continue;  // popped
+    vec3 c = u_bubbles[i].xyz;
+    float r = u_bubbles[i].w;
     vec3 oc = o - c;
     float b = dot(oc, d), disc = b * b - (dot(oc, oc) - r * r);
     if (disc <= 0.0) continue;

@@ -54,10 +54,12 @@ void main() {
     Hit h = scene_hit(o, d, medium, e == 0 ? 0.0 : 2e-6);
 #if FOAM_HEAD
     if (medium == AIR) {  // the head and its big bubbles sit in the air above the liquid
-      float t_end = h.m == M_NONE ? 100.0 : h.t;
-      bubble_caps(o, d, 0.0, t_end, l, radiance, thr);
-      march_foam(o, d, 0.0, t_end, l, radiance, thr);
-      if (max(thr.r, max(thr.g, thr.b)) < 1e-3) break;
+      float t0 = 0.0, t1 = h.m == M_NONE ? 100.0 : h.t;
+      if (foam_interval(o, d, t0, t1)) {
+        bubble_caps(o, d, t0, t1, l, radiance, thr);
+        march_foam(o, d, t0, t1, l, radiance, thr);
+        if (max(thr.r, max(thr.g, thr.b)) < 1e-3) break;
+      }
     }
 #endif
     if (h.m == M_NONE) {

@@ -81,6 +81,11 @@ BigBubble FoamState::bubble(int slot, double radius) const {
   return b;
 }
 
+double FoamFrame::thickness_at(double x, double z, double radius) const {
+  const double u2 = std::min((x * x + z * z) / std::max(radius * radius, 1e-12), 1.5);
+  return thickness * std::max(1.0 + dome * (1.0 - 2.0 * u2), 0.1);
+}
+
 FoamFrame FoamState::frame(double radius) const {
   FoamFrame f;
   f.thickness = thickness();

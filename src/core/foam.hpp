@@ -25,6 +25,9 @@ struct FoamFrame {
   double dome = 0;       // thickness scales by 1 + dome (1 - 2 u^2), u = distance from axis / radius
   std::vector<double> lacing;  // heights (glass frame y) of the rings left on the inner wall
   std::vector<BigBubble> bubbles;
+  // The thickness at (x, z) in the glass frame, for a surface of this radius (as
+  // shaders/foam.glsl foam_thickness_at).
+  double thickness_at(double x, double z, double radius) const;
 };
 
 class FoamState {

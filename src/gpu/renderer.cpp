@@ -60,9 +60,14 @@ FrameUniforms pack_uniforms(const FrameState& f, int width, int height, DebugVie
   const size_t rings = std::min<size_t>(fo.lacing.size(), 8);
   u.lacing_info = {float(rings), fp.lacing, 0, 0};
   for (size_t i = 0; i < rings; ++i) u.lacing[i / 4][int(i % 4)] = float(fo.lacing[i]);
+  // Big bubbles sit in the head's top, their caps standing out by 70 % of their radius.
+  const glm::dvec3 n = f.liquid.n;
   for (size_t i = 0; i < std::min<size_t>(fo.bubbles.size(), 12); ++i) {
     const BigBubble& b = fo.bubbles[i];
-    u.bubbles[i] = {b.xz.x, b.xz.y, b.radius, b.popped ? 1.0f : 0.0f};
+    const double y = (f.liquid.offset - n.x * b.xz.x - n.z * b.xz.y) / std::max(n.y, 1e-3);
+    const glm::dvec3 c = glm::dvec3(b.xz.x, y, b.xz.y) +
+                         n * (fo.thickness_at(b.xz.x, b.xz.y, f.liquid.waves.radius) - 0.3 * b.radius);
+    u.bubbles[i] = {glm::vec3(c), b.popped ? -b.radius : b.radius};
   }
   for (int k = 0; k <= Vessel::kSegments; ++k) u.knots[k] = {v.r_outer[size_t(k)], v.r_inner[size_t(k)], 0, 0};
   return u;
