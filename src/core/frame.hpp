@@ -3,6 +3,7 @@
 // or physics itself.
 #pragma once
 
+#include "core/bubbles.hpp"
 #include "core/fill_table.hpp"
 #include "core/foam.hpp"
 #include "core/intersect.hpp"
@@ -25,6 +26,7 @@ struct FrameState {
   double liquid_fraction = 0;                   // of the cavity volume
   bool has_liquid = false;
   FoamFrame foam;  // the head on the liquid, lacing, big bubbles
+  std::vector<Bubble> bubbles;  // rising in the liquid, glass frame
   glm::vec3 liquid_absorption{0};
   double mean_outer_radius = 0;
 };

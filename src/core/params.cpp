@@ -67,6 +67,15 @@ std::vector<ParamDesc> make_table() {
       ROW(foam.big_bubbles, Int, 6, 0.0f, 12.0f, "", "Large shiny bubbles on top of the head that grow and pop"),
       ROW(foam.lacing, Float, 0.6f, 0.0f, 1.0f, "", "Foam rings left on the glass each time the level drops"),
       ROW(foam.seed, Int, 1, 0.0f, 1000000.0f, "", "Seed of the foam's randomness (big bubbles, lacing)"),
+      // rising bubbles
+      ROW(bubbles.carbonation, Float, 0.6f, 0.0f, 1.0f, "",
+          "Dissolved CO2, 0 (still wine) to 1 (champagne): how many bubbles rise and how big"),
+      ROW(bubbles.sites, Int, 40, 0.0f, 400.0f, "", "Nucleation sites on the inner wall and the floor"),
+      ROW(bubbles.etched_base, Bool, false, 0.0f, 1.0f, "",
+          "A ring of sites etched into the floor, as in many flutes: one fine, fast stream"),
+      ROW(bubbles.size, Float, 0.0002f, 0.00002f, 0.001f, "m", "Bubble radius at birth (at full carbonation)"),
+      ROW(bubbles.max_bubbles, Int, 500, 0.0f, 2000.0f, "", "Most bubbles alive at once"),
+      ROW(bubbles.seed, Int, 1, 0.0f, 1000000.0f, "", "Seed of the nucleation sites and bubble jitter"),
       // environment
       ENUM_ROW(env.mode, "studio", (std::vector<std::string>{"studio", "constant"}),
                "studio: gradient sky, softbox and strip lights; constant: env.color everywhere"),

@@ -57,6 +57,15 @@ struct FoamParams {
   int seed;
 };
 
+struct BubbleParams {
+  float carbonation;  // 0 still wine .. 1 champagne: how many bubbles, how big
+  int sites;          // nucleation sites on the inner wall and the floor
+  bool etched_base;   // a ring of sites etched into the floor (a flute's fine stream)
+  float size;         // radius at birth, metres, at full carbonation
+  int max_bubbles;    // alive at once
+  int seed;
+};
+
 enum class EnvMode { Studio = 0, Constant = 1 };
 enum class Tonemap { None = 0, Aces = 1 };
 
@@ -100,6 +109,7 @@ struct Params {
   GlassParams glass;
   LiquidParams liquid;
   FoamParams foam;
+  BubbleParams bubbles;
   EnvParams env;
   LightParams light;
   CameraParams camera;

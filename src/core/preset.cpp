@@ -76,10 +76,10 @@ Preset parse_preset(const std::string& text, const std::string& file) {
   }
   for (auto& [d, v] : p.values) {
     const std::string g = group_of(d->path);
-    const bool drink_group = g == "liquid" || g == "foam";
+    const bool drink_group = g == "liquid" || g == "foam" || g == "bubbles";
     if ((p.kind == "glass" && g != "glass") || (p.kind == "drink" && !drink_group))
       throw InputError(file + ": field 'params." + d->path + "': a " + p.kind + " preset may set only " +
-                       (p.kind == "glass" ? "glass.*" : "liquid.* and foam.*") + " parameters (use kind \"scene\")");
+                       (p.kind == "glass" ? "glass.*" : "liquid.*, foam.* and bubbles.*") + " parameters (use kind \"scene\")");
   }
   return p;
 }

@@ -5,7 +5,7 @@
 //     "description": "...", "suggested_glass": "pint",
 //     "params": { "liquid": { "srm": 4, "ior": 1.34 } } }
 //
-// kind "glass" may set only glass.*, "drink" only liquid.* and foam.*, "scene" anything.
+// kind "glass" may set only glass.*, "drink" only liquid.*, foam.* and bubbles.*, "scene" anything.
 #pragma once
 
 #include "core/params.hpp"

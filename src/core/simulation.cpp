@@ -11,6 +11,15 @@ namespace {
 constexpr double kG = 9.80665;
 constexpr double kEmpty = 1e-4;  // below this fraction the glass shows no liquid
 
+BubbleSettings bubble_settings(const BubbleParams& p) {
+  return {p.carbonation, p.sites, p.etched_base, p.size, p.max_bubbles, p.seed};
+}
+
+bool same_bubbles(const BubbleParams& a, const BubbleParams& b) {
+  return a.carbonation == b.carbonation && a.sites == b.sites && a.etched_base == b.etched_base && a.size == b.size &&
+         a.max_bubbles == b.max_bubbles && a.seed == b.seed;
+}
+
 bool same_glass(const GlassParams& a, const GlassParams& b) {
   return a.profile == b.profile && a.wall_thickness == b.wall_thickness && a.base_thickness == b.base_thickness &&
          a.rim_radius == b.rim_radius;
@@ -32,14 +41,19 @@ Simulation::Simulation(const Params& p) : params_(p), foam_(p.foam) {
 void Simulation::rebuild_glass() {
   vessel_ = build_vessel(params_.glass);
   table_ = std::make_shared<const FillTable>(build_fill_table(vessel_));
+  rebuild_bubbles();
 }
+
+void Simulation::rebuild_bubbles() { bubbles_.emplace(bubble_settings(params_.bubbles), vessel_); }
 
 void Simulation::set_params(const Params& p) {
   const bool glass_changed = !same_glass(p.glass, params_.glass);
   const bool refill = p.liquid.fill != params_.liquid.fill;
+  const bool bubbles_changed = !same_bubbles(p.bubbles, params_.bubbles);
   params_ = p;
   foam_.set_params(p.foam);
   if (glass_changed) rebuild_glass();
+  else if (bubbles_changed) rebuild_bubbles();
   if (refill || glass_changed) fraction_ = std::clamp(double(p.liquid.fill), 0.0, 1.0);
   update_surface();
 }
@@ -53,6 +67,7 @@ void Simulation::set_fraction(double fraction) {
 void Simulation::pour() {
   fraction_ = std::clamp(double(params_.liquid.fill), 0.0, 1.0);
   foam_.pour();
+  bubbles_->clear();
   update_surface();
 }
 
@@ -128,6 +143,8 @@ void Simulation::step(const MotionSample& raw, double drink_rate) {
   // The head follows the volume (the level the drink would have upright), not the slosh.
   const double level = table_->offset_at(0, fraction_);
   foam_.step(dt, level, vessel_.inner_radius(std::clamp(level, vessel_.base, vessel_.height)));
+  // Bubbles rise against gravity: world up, seen from the glass.
+  bubbles_->step(dt, surface_, glm::inverse(m.pose.orientation) * glm::dvec3(0, 1, 0));
 }
 
 void Simulation::advance(InputDriver& driver, double t, double drink_rate) {
@@ -152,6 +169,7 @@ FrameState Simulation::frame() const {
   f.has_liquid = fraction_ > kEmpty;
   f.liquid_absorption = liquid_absorption(params_.liquid);
   f.foam = foam_.frame(surface_.waves.radius);
+  f.bubbles = bubbles_->bubbles();
   double sum = 0;
   for (double r : vessel_.r_outer) sum += r;
   f.mean_outer_radius = sum / double(vessel_.r_outer.size());

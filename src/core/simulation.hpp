@@ -3,6 +3,7 @@
 // CLI, the desktop viewer and the web page.
 #pragma once
 
+#include "core/bubbles.hpp"
 #include "core/fill_table.hpp"
 #include "core/foam.hpp"
 #include "core/frame.hpp"
@@ -10,6 +11,7 @@
 #include "core/slosh.hpp"
 
 #include <memory>
+#include <optional>
 
 namespace draught {
 
@@ -37,6 +39,7 @@ class Simulation {
   double spilled() const { return spilled_; }  // fraction of the cavity lost over the rim
   const SloshState& slosh() const { return slosh_; }
   const FoamState& foam() const { return foam_; }
+  const BubbleField& bubbles() const { return *bubbles_; }
   double energy() const;
   const Vessel& vessel() const { return vessel_; }
   const FillTable& fill_table() const { return *table_; }
@@ -46,6 +49,7 @@ class Simulation {
 
  private:
   void rebuild_glass();
+  void rebuild_bubbles();
   void update_surface();
   SloshEnvironment environment(const glm::dvec3& centre_accel, double dt) const;
 
@@ -58,6 +62,7 @@ class Simulation {
   SloshEnvironment env_;
   SloshState slosh_;
   FoamState foam_;
+  std::optional<BubbleField> bubbles_;  // rebuilt with the glass or the bubble settings
   LiquidPlane surface_;
   double tilt_ = 0, azimuth_ = 0;
   bool first_step_ = true;

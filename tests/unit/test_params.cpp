@@ -119,7 +119,7 @@ std::vector<ParamValue> out_of_range(const ParamDesc& d) {
 
 TEST(ParamTable, PathsAreUniqueAndGrouped) {
   std::set<std::string> seen;
-  const std::set<std::string> groups = {"glass", "liquid", "foam", "env", "light", "camera", "render"};
+  const std::set<std::string> groups = {"glass", "liquid", "foam", "bubbles", "env", "light", "camera", "render"};
   for (const auto& d : param_table()) {
     EXPECT_TRUE(seen.insert(d.path).second) << "duplicate path " << d.path;
     const auto dot = d.path.find('.');
@@ -352,7 +352,7 @@ TEST(ShippedPresets, DrinksLoadAndSuggestExistingGlasses) {
     EXPECT_EQ(p.kind, "drink") << f;
     EXPECT_EQ(p.name, f.stem().string()) << f;
     EXPECT_FALSE(p.values.empty()) << f;
-    for (auto& [d, v] : p.values) EXPECT_TRUE(d->path.starts_with("liquid.") || d->path.starts_with("foam.")) << f << ": " << d->path;
+    for (auto& [d, v] : p.values) EXPECT_TRUE(d->path.starts_with("liquid.") || d->path.starts_with("foam.") || d->path.starts_with("bubbles.")) << f << ": " << d->path;
     if (!p.suggested_glass.empty()) {
       EXPECT_TRUE(std::filesystem::exists(test::preset_source_dir() / "glasses" / (p.suggested_glass + ".json")))
           << f << " suggests a missing glass " << p.suggested_glass;
