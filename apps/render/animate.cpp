@@ -160,6 +160,7 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
   gpu::Renderer renderer(req.shader_dir);
 
   Simulation sim(timeline.params_at(0, base));
+  sim.settle_bubbles(4.0);  // a drink that has been standing (a pour clears them)
   TimelineDriver driver(timeline, sim.vessel().r_outer.front());
   std::unique_ptr<Encoder> encoder;
   if (video) {

@@ -21,7 +21,11 @@ CameraParams frame_camera(const CameraParams& c, const Vessel& v) {
   return out;
 }
 
-FrameState make_frame(const Params& p) { return Simulation(p).frame(); }
+FrameState make_frame(const Params& p) {
+  Simulation sim(p);
+  sim.settle_bubbles(4.0);
+  return sim.frame();
+}
 
 SceneGeometry scene_geometry(const FrameState& f) {
   return {&f.vessel, f.liquid, f.params.env.floor && !f.params.render.transparent, f.pose};

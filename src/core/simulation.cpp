@@ -71,6 +71,11 @@ void Simulation::pour() {
   update_surface();
 }
 
+void Simulation::settle_bubbles(double seconds) {
+  const glm::dvec3 up = glm::inverse(motion_.pose.orientation) * glm::dvec3(0, 1, 0);
+  for (double t = 0; t < std::min(seconds, 30.0); t += kStep) bubbles_->step(kStep, surface_, up);
+}
+
 void Simulation::update_surface() {
   // The surface normal: world up tilted by the slosh slope, seen from the glass.
   const glm::dvec3 n_world = glm::normalize(glm::dvec3(slosh_.slope.x, 1.0, slosh_.slope.y));

@@ -27,6 +27,9 @@ class Simulation {
   void set_params(const Params&);
   void set_fraction(double fraction);  // drink or refill; clamped to what the glass holds
   void pour();                         // fill to liquid.fill with a fresh head building
+  // Lets the bubbles rise for a while with the glass at rest, so a still picture (or
+  // the first frame of an animation) shows a drink that has been standing.
+  void settle_bubbles(double seconds);
   // Steps to time t (seconds), sampling the driver at every step. drink_rate: fraction
   // of the cavity drunk per second meanwhile (a sip).
   void advance(InputDriver&, double t, double drink_rate = 0);

@@ -270,6 +270,7 @@ void play_timeline(Simulation& sim, TimelineDriver& driver, const Timeline& tl, 
 
 FrameState timeline_frame(const Timeline& tl, const Params& base, double t) {
   Simulation sim(tl.params_at(0, base));
+  sim.settle_bubbles(4.0);
   TimelineDriver driver(tl, sim.vessel().r_outer.front());
   play_timeline(sim, driver, tl, base, t);
   return sim.frame();

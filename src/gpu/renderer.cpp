@@ -1,5 +1,6 @@
 #include "gpu/renderer.hpp"
 
+#include "core/bubble_view.hpp"
 #include "core/camera.hpp"
 #include "gpu/program.hpp"
 
@@ -141,6 +142,8 @@ Renderer::Renderer(const std::filesystem::path& shader_dir) : shader_dir_(shader
 }
 
 Renderer::~Renderer() {
+  glDeleteBuffers(1, &bubble_vbo_);
+  glDeleteVertexArrays(1, &bubble_vao_);
   glDeleteTextures(1, &fill_tex_);
   glDeleteBuffers(1, &ubo_);
   glDeleteVertexArrays(1, &vao_);
@@ -173,6 +176,52 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug)
   glUseProgram(program->id());
   glBindVertexArray(vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (debug == DebugView::None) draw_bubbles(f, width, height);
+}
+
+void Renderer::draw_bubbles(const FrameState& f, int width, int height) {
+  const std::vector<BubbleSprite> sprites = bubble_sprites(f, width, height);
+  if (sprites.empty()) return;
+  if (!bubble_program_) {
+    bubble_program_ = std::make_unique<Program>(assemble_shader("bubbles.vert.glsl", shader_dir_),
+                                                assemble_shader("bubbles.frag.glsl", shader_dir_));
+    glGenVertexArrays(1, &bubble_vao_);
+    glGenBuffers(1, &bubble_vbo_);
+    glBindVertexArray(bubble_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, bubble_vbo_);
+    for (GLuint a = 0; a < 2; ++a) {  // per instance: sprite, tint
+      glEnableVertexAttribArray(a);
+      glVertexAttribPointer(a, 4, GL_FLOAT, GL_FALSE, 8 * sizeof(float), reinterpret_cast<void*>(a * 4 * sizeof(float)));
+      glVertexAttribDivisor(a, 1);
+    }
+  }
+  std::vector<float> data;
+  data.reserve(sprites.size() * 8);
+  for (const BubbleSprite& s : sprites)
+    data.insert(data.end(), {s.centre.x, s.centre.y, s.radius, 0.0f, s.tint.r, s.tint.g, s.tint.b, 0.0f});
+  glBindVertexArray(bubble_vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, bubble_vbo_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(), GL_STREAM_DRAW);
+  const Params& p = f.params;
+  const GLuint id = bubble_program_->id();
+  glUseProgram(id);
+  // What a bubble mirrors: the studio around it (its lights are several times the sky).
+  const glm::vec3 sky = p.env.mode == int(EnvMode::Constant) ? p.env.color : 0.5f * (p.env.sky_top + p.env.sky_horizon);
+  const glm::vec3 env = sky * 2.0f + glm::vec3(0.15f * p.env.strip_intensity + 0.1f * p.env.backdrop_glow);
+  const CameraBasis cam = camera_basis(f.camera, width, height);
+  const glm::vec3 l = glm::length(p.light.direction) > 1e-6f ? glm::normalize(p.light.direction) : glm::vec3(0, 1, 0);
+  glUniform2f(glGetUniformLocation(id, "u_viewport"), float(width), float(height));
+  glUniform3fv(glGetUniformLocation(id, "u_env_light"), 1, &env.x);
+  const glm::vec3 glint = p.light.color * p.light.intensity * 0.8f;
+  glUniform3fv(glGetUniformLocation(id, "u_glint"), 1, &glint.x);
+  glUniform2f(glGetUniformLocation(id, "u_glint_dir"), 0.45f * glm::dot(l, cam.right), -0.45f * glm::dot(l, cam.up));
+  glUniform1f(glGetUniformLocation(id, "u_exposure"), p.render.exposure);
+  glUniform1i(glGetUniformLocation(id, "u_tonemap"), p.render.tonemap);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(sprites.size()));
+  glDisable(GL_BLEND);
+  glBindVertexArray(vao_);
 }
 
 void Renderer::finish() { glFinish(); }

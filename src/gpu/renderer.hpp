@@ -56,11 +56,15 @@ class Renderer {
   void finish();
 
  private:
+  void draw_bubbles(const FrameState&, int width, int height);
+
   enum Variant { kWaves = 1, kFoam = 2 };  // bits: what the vessel shader is compiled with
   std::unique_ptr<Program> build_program(int variant) const;
 
   std::filesystem::path shader_dir_;
   std::unique_ptr<Program> programs_[4];  // by variant, built when first needed
+  std::unique_ptr<Program> bubble_program_;  // pass 2: rising bubbles, built when first needed
+  unsigned bubble_vao_ = 0, bubble_vbo_ = 0;
   unsigned vao_ = 0, ubo_ = 0, fill_tex_ = 0;
   std::shared_ptr<const FillTable> uploaded_table_;  // what fill_tex_ holds
 };
