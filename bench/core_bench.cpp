@@ -2,6 +2,7 @@
 // profile, solving the fill height, building the fill table, and the reference
 // intersector per ray. GPU frame times come from `draught bench`. Results:
 // docs/PERFORMANCE.md.
+#include "core/bubble_view.hpp"
 #include "core/camera.hpp"
 #include "core/fill_table.hpp"
 #include "core/frame.hpp"
@@ -66,6 +67,17 @@ void BM_SimulateOneSecond(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_SimulateOneSecond)->Unit(benchmark::kMillisecond);
+
+// Where a standing lager's bubbles appear at 512x512 (refraction solved per bubble on the
+// CPU each frame), and one simulation step of the bubble field alone.
+void BM_BubbleSprites(benchmark::State& state) {
+  Simulation sim(glass_params("pint"));
+  sim.settle_bubbles(4.0);
+  const FrameState f = sim.frame();
+  state.counters["bubbles"] = double(f.bubbles.size());
+  for (auto _ : state) benchmark::DoNotOptimize(bubble_sprites(f, 512, 512));
+}
+BENCHMARK(BM_BubbleSprites)->Unit(benchmark::kMillisecond);
 
 // The reference intersector over a 64x64 view of the pint (rays per second).
 void BM_ReferenceFirstHit(benchmark::State& state) {
