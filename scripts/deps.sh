@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   libsdl2-dev ffmpeg
+  libimgui-dev xvfb xauth
 )
 
 missing=()

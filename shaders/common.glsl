@@ -41,6 +41,7 @@ layout(std140) uniform Frame {
   vec4 u_lacing_info;   // ring count, strength
   vec4 u_lacing[2];     // ring heights (glass frame y), 8 at most
   vec4 u_bubbles[12];   // big bubbles: centre xyz (glass frame), radius (< 0: popped, a void)
+  vec4 u_clip;          // cross-section: normal xyz (glass frame), offset; the side dot(n, p) > offset is cut away (n = 0, offset 1: off)
   vec4 u_knots[SEGMENTS + 1];  // outer radius, inner radius at y = k * dy
 };
 
@@ -61,6 +62,8 @@ const int M_RIM = 4;
 const int M_GLASS_BOTTOM = 5;
 const int M_CAVITY_FLOOR = 6;
 const int M_LIQUID_SURFACE = 7;
+const int M_CLIP_GLASS = 8;   // the cross-section's cut face through the glass
+const int M_CLIP_LIQUID = 9;  // and through the liquid
 
 // All intersections happen in the glass's frame; the surroundings are in the world.
 mat3 pose_rotation() { return mat3(u_pose_x.xyz, u_pose_y.xyz, u_pose_z.xyz); }
@@ -68,6 +71,9 @@ vec3 to_world_dir(vec3 v) { return pose_rotation() * v; }
 vec3 to_local_dir(vec3 v) { return v * pose_rotation(); }
 vec3 to_world_point(vec3 p) { return pose_rotation() * p + u_pose_pos.xyz; }
 vec3 to_local_point(vec3 p) { return (p - u_pose_pos.xyz) * pose_rotation(); }
+
+// The cross-section: what lies beyond the clip plane is cut away.
+bool clipped(vec3 p) { return dot(u_clip.xyz, p) > u_clip.w; }
 
 // Intersection work done by this pixel (segments and tori solved), for the cost view.
 int g_cost = 0;

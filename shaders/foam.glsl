@@ -34,7 +34,7 @@ float value_noise(vec3 x) {
 
 // Extinction at p; `height` is p's height above the liquid, `top` the head's thickness there.
 float foam_density(vec3 p, float height, float top) {
-  if (height < 0.0 || height > top || p.y > u_vessel.x || length(p.xz) > inner_radius(p.y)) return 0.0;
+  if (height < 0.0 || height > top || p.y > u_vessel.x || length(p.xz) > inner_radius(p.y) || clipped(p)) return 0.0;
   // Bubbles are bigger low in the head (they coarsen as liquid drains out of it).
   float scale = u_foam_detail.y * (1.0 + 1.5 * (1.0 - height / top));
   float d = u_foam.z * max(1.0 + 1.6 * u_foam_detail.z * (value_noise(p / scale) - 0.5), 0.0);
@@ -138,7 +138,7 @@ void bubble_caps(vec3 o, vec3 d, float t0, float t1, vec3 l, inout vec3 radiance
     float t = -b - sqrt(disc);
     if (t <= t0 || t >= t1) continue;
     vec3 p = o + t * d;
-    if (liquid_level(p) < foam_thickness_at(p.xz)) continue;  // only the cap above the foam
+    if (liquid_level(p) < foam_thickness_at(p.xz) || clipped(p)) continue;  // only the cap above the foam
     vec3 nn = normalize(p - c);
     float F = fresnel_dielectric(abs(dot(nn, d)), 1.0, 1.33);
     float film = 2.0 * F / (1.0 + F);  // two faces of the film

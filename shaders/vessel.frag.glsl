@@ -23,12 +23,14 @@ bool below_liquid(vec3 p) {
 // The medium on the far side of a surface, seen from `medium`.
 int other_side(Hit h, int medium, vec3 p) {
   if (h.m == M_LIQUID_SURFACE) return medium == LIQUID ? AIR : LIQUID;
+  if (h.m == M_CLIP_GLASS) return medium == AIR ? GLASS : AIR;
+  if (h.m == M_CLIP_LIQUID) return medium == AIR ? LIQUID : AIR;
   if (medium != GLASS) return GLASS;
   if (h.m == M_GLASS_INNER || h.m == M_CAVITY_FLOOR) return below_liquid(p) ? LIQUID : AIR;
   return AIR;
 }
 
-float surface_roughness(Hit h) { return h.m == M_LIQUID_SURFACE ? u_liquid.y : u_glass.y; }
+float surface_roughness(Hit h) { return h.m == M_LIQUID_SURFACE || h.m == M_CLIP_LIQUID ? u_liquid.y : u_glass.y; }
 
 void main() {
   // The path is followed in the glass's frame; the surroundings are looked up in the world.

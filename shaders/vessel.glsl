@@ -91,7 +91,7 @@ Hit hit_wall(vec3 o, vec3 d, bool inner, float tmin) {
       if (t <= tmin || p.y < y0 || p.y > y1 || c0 + c1 * t < 0.0) continue;
       if (p.y < ylo || p.y > yhi) continue;
       float r = length(p.xz);
-      if (inside_torus(r, p.y)) continue;
+      if (inside_torus(r, p.y) || clipped(p)) continue;
       vec3 nrm = r > 0.0 ? normalize(vec3(p.x / r, -s, p.z / r)) : vec3(0.0, -1.0, 0.0);
       return Hit(t, inner ? -nrm : nrm, inner ? M_GLASS_INNER : M_GLASS_OUTER);
     }
@@ -168,7 +168,7 @@ Hit hit_rim(vec3 o, vec3 d, float tmin) {
     if (t <= tmin || t >= best.t) continue;
     vec3 p = o + t * d;
     float pr = length(p.xz);
-    if (p.y < H && inside_body(pr, p.y)) continue;
+    if ((p.y < H && inside_body(pr, p.y)) || clipped(p)) continue;
     vec3 c = pr > 0.0 ? vec3(p.x / pr * R, H, p.z / pr * R) : vec3(0.0, H, 0.0);
     best = Hit(t, normalize(p - c), M_RIM);
   }
@@ -179,7 +179,7 @@ Hit hit_disk(vec3 o, vec3 d, float y, float rad, float tmin, vec3 n, int m) {
   if (abs(d.y) < 1e-12) return no_hit();
   float t = (y - o.y) / d.y;
   vec3 p = o + t * d;
-  if (t <= tmin || dot(p.xz, p.xz) > rad * rad) return no_hit();
+  if (t <= tmin || dot(p.xz, p.xz) > rad * rad || clipped(p)) return no_hit();
   return Hit(t, n, m);
 }
 
@@ -248,7 +248,8 @@ Hit hit_liquid_surface(vec3 o, vec3 d, float tmin) {
   }
 #endif
   vec3 p = o + t * d;
-  if (t <= tmin || p.y <= u_vessel.y || p.y >= u_vessel.x || length(p.xz) >= inner_radius(p.y)) return no_hit();
+  if (t <= tmin || p.y <= u_vessel.y || p.y >= u_vessel.x || length(p.xz) >= inner_radius(p.y) || clipped(p))
+    return no_hit();
 #if SURFACE_WAVES
   vec2 g = wave_gradient(p.xz);
   return Hit(t, normalize(n - vec3(g.x, 0.0, g.y)), M_LIQUID_SURFACE);
@@ -270,6 +271,21 @@ Hit hit_floor(vec3 o, vec3 d, float tmin) {
   return Hit(t, up, M_FLOOR);
 }
 
+// The cut face of the cross-section, where the plane passes through glass or liquid.
+// Its normal points out of what is kept, like every glass surface's.
+Hit hit_clip_cap(vec3 o, vec3 d, float tmin) {
+  float dn = dot(u_clip.xyz, d);
+  if (abs(dn) < 1e-12) return no_hit();
+  float t = (u_clip.w - dot(u_clip.xyz, o)) / dn;
+  if (t <= tmin) return no_hit();
+  vec3 p = o + t * d;
+  float r = length(p.xz);
+  if (inside_body(r, p.y) || inside_torus(r, p.y)) return Hit(t, u_clip.xyz, M_CLIP_GLASS);
+  bool in_cavity = p.y > u_vessel.y && p.y < u_vessel.x && r < inner_radius(p.y);
+  if (in_cavity && u_liquid.w > 0.5 && dot(u_liquid_plane.xyz, p) < g_liquid_offset) return Hit(t, u_clip.xyz, M_CLIP_LIQUID);
+  return no_hit();
+}
+
 void keep_nearest(inout Hit best, Hit h) {
   if (h.t < best.t) best = h;
 }
@@ -286,5 +302,6 @@ Hit scene_hit(vec3 o, vec3 d, int medium, float tmin) {
   keep_nearest(best, hit_disk(o, d, u_vessel.y, u_glass.z, tmin, vec3(0.0, 1.0, 0.0), M_CAVITY_FLOOR));
   if (medium != GLASS) keep_nearest(best, hit_liquid_surface(o, d, tmin));
   if (medium == AIR) keep_nearest(best, hit_floor(o, d, tmin));
+  if (dot(u_clip.xyz, u_clip.xyz) > 0.5) keep_nearest(best, hit_clip_cap(o, d, tmin));  // a cross-section
   return best;
 }

@@ -38,6 +38,8 @@ LiquidLeg trace_to_liquid(const FrameState& f, const SceneGeometry& geo, Ray r) 
         if (medium == Medium::Air && f.foam.thickness > 5e-4) return leg;
         next = medium == Medium::Liquid ? Medium::Air : Medium::Liquid;
         break;
+      case Material::ClipGlass: next = medium == Medium::Air ? Medium::Glass : Medium::Air; break;
+      case Material::ClipLiquid: next = medium == Medium::Air ? Medium::Liquid : Medium::Air; break;
       case Material::GlassInner:
       case Material::CavityFloor:
         next = medium != Medium::Glass ? Medium::Glass
@@ -71,6 +73,7 @@ std::vector<BubbleSprite> bubble_sprites(const FrameState& f, int width, int hei
   const glm::dvec3 right(cam.right), up(cam.up);
   const glm::dvec3 sigma = glm::dvec3(f.liquid_absorption) + double(f.params.liquid.haze);
   for (const Bubble& b : f.bubbles) {
+    if (geo.clipped(glm::dvec3(b.p))) continue;  // cut away with the cross-section
     const glm::dvec3 c = f.pose.orientation * glm::dvec3(b.p) + f.pose.position;
     // Miss of the pixel's liquid leg past the bubble centre, in the picture's axes.
     auto miss = [&](double px, double py, glm::dvec2& e, double& t, LiquidLeg& leg) {

@@ -28,7 +28,11 @@ FrameState make_frame(const Params& p) {
 }
 
 SceneGeometry scene_geometry(const FrameState& f) {
-  return {&f.vessel, f.liquid, f.params.env.floor && !f.params.render.transparent, f.pose};
+  SceneGeometry g{&f.vessel, f.liquid, f.params.env.floor && !f.params.render.transparent, f.pose};
+  const ClipParams& c = f.params.clip;
+  const double len = glm::length(glm::dvec3(c.normal));
+  if (c.enabled && len > 1e-4) g.clip = glm::dvec4(glm::dvec3(c.normal) / len, c.offset);
+  return g;
 }
 
 }  // namespace draught

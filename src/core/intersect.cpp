@@ -16,6 +16,8 @@ const char* material_name(Material m) {
     case Material::GlassBottom: return "glass-bottom";
     case Material::CavityFloor: return "cavity-floor";
     case Material::LiquidSurface: return "liquid-surface";
+    case Material::ClipGlass: return "clip-glass";
+    case Material::ClipLiquid: return "clip-liquid";
   }
   return "?";
 }
@@ -246,13 +248,41 @@ Hit first_hit(const SceneGeometry& s, const Ray& world_ray, double tmin) {
   const Vessel& v = *s.vessel;
   const glm::dquat to_local = glm::inverse(s.pose.orientation);
   const Ray ray{to_local * (world_ray.o - s.pose.position), to_local * world_ray.d};
+  // A surface's first hit that is not cut away by the cross-section.
+  auto kept = [&](auto&& hit_from) {
+    double from = tmin;
+    for (int i = 0; i < 16; ++i) {
+      const Hit h = hit_from(from);
+      if (!h.valid() || !s.clipped(ray.at(h.t))) return h;
+      from = h.t + 1e-9;
+    }
+    return Hit{};
+  };
   Hit best;
-  keep_nearest(best, hit_wall(v, false, ray, tmin));
-  keep_nearest(best, hit_wall(v, true, ray, tmin));
-  keep_nearest(best, hit_rim(v, ray, tmin));
-  keep_nearest(best, hit_disk(ray, 0.0, v.r_outer.front(), tmin, {0, -1, 0}, Material::GlassBottom));
-  keep_nearest(best, hit_disk(ray, v.base, v.inner_radius(v.base), tmin, {0, 1, 0}, Material::CavityFloor));
-  keep_nearest(best, hit_liquid_surface(v, s.liquid, ray, tmin));
+  keep_nearest(best, kept([&](double t) { return hit_wall(v, false, ray, t); }));
+  keep_nearest(best, kept([&](double t) { return hit_wall(v, true, ray, t); }));
+  keep_nearest(best, kept([&](double t) { return hit_rim(v, ray, t); }));
+  keep_nearest(best, kept([&](double t) {
+    return hit_disk(ray, 0.0, v.r_outer.front(), t, {0, -1, 0}, Material::GlassBottom);
+  }));
+  keep_nearest(best, kept([&](double t) {
+    return hit_disk(ray, v.base, v.inner_radius(v.base), t, {0, 1, 0}, Material::CavityFloor);
+  }));
+  keep_nearest(best, kept([&](double t) { return hit_liquid_surface(v, s.liquid, ray, t); }));
+  // The cut face, where the plane passes through glass or liquid.
+  const glm::dvec3 cn(s.clip);
+  if (glm::dot(cn, cn) > 0.5 && std::fabs(glm::dot(cn, ray.d)) > 1e-15) {
+    const double t = (s.clip.w - glm::dot(cn, ray.o)) / glm::dot(cn, ray.d);
+    const glm::dvec3 p = ray.at(t);
+    const double r = std::hypot(p.x, p.z);
+    const bool in_glass = p.y >= 0 && p.y <= v.height && r <= v.outer_radius(p.y) &&
+                          (p.y < v.base || r >= v.inner_radius(p.y));
+    const bool in_liquid = !in_glass && p.y > v.base && p.y < v.height && r < v.inner_radius(p.y) && s.liquid.below(p);
+    if (t > tmin && (in_glass || v.inside_torus(r, p.y)))
+      keep_nearest(best, {t, cn, Material::ClipGlass});
+    else if (t > tmin && in_liquid)
+      keep_nearest(best, {t, cn, Material::ClipLiquid});
+  }
   best.n = s.pose.orientation * best.n;
   if (s.floor && world_ray.d.y < 0) {
     const double t = -world_ray.o.y / world_ray.d.y;

@@ -27,6 +27,8 @@ enum class Material : int {
   GlassBottom = 5,
   CavityFloor = 6,
   LiquidSurface = 7,
+  ClipGlass = 8,   // the cross-section's cut face through the glass
+  ClipLiquid = 9,  // and through the liquid
 };
 const char* material_name(Material);
 
@@ -66,6 +68,8 @@ struct SceneGeometry {
   LiquidPlane liquid;
   bool floor = true;
   Pose pose;
+  glm::dvec4 clip{0, 0, 0, 1};  // cross-section (glass frame): dot(n, p) > offset is cut away; n = 0: none
+  bool clipped(const glm::dvec3& local) const { return glm::dot(glm::dvec3(clip), local) > clip.w; }
 };
 
 Hit hit_wall(const Vessel&, bool inner, const Ray&, double tmin);

@@ -101,6 +101,11 @@ std::vector<ParamDesc> make_table() {
       ROW(camera.eye, Vec3, vec3(0.0f, 0.13f, 0.42f), -10.0f, 10.0f, "m", "Camera position"),
       ROW(camera.target, Vec3, vec3(0.0f, 0.075f, 0.0f), -10.0f, 10.0f, "m", "Point the camera looks at"),
       ROW(camera.vfov, Float, 28.0f, 5.0f, 120.0f, "deg", "Vertical field of view"),
+      // cross-section
+      ROW(clip.enabled, Bool, false, 0.0f, 1.0f, "", "Cut the glass and its contents open along a plane (capped cuts)"),
+      ROW(clip.normal, Vec3, vec3(0.0f, 0.0f, 1.0f), -1.0f, 1.0f, "",
+          "Normal of the cut, in the glass's frame: the side it points to is removed"),
+      ROW(clip.offset, Float, 0.0f, -0.3f, 0.3f, "m", "Where the cut lies along its normal, from the glass's axis"),
       // output
       ENUM_ROW(render.tonemap, "aces", (std::vector<std::string>{"none", "aces"}),
                "none: clamp then sRGB; aces: filmic tone map then sRGB"),

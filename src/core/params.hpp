@@ -97,6 +97,12 @@ struct CameraParams {
   float vfov;  // degrees
 };
 
+struct ClipParams {
+  bool enabled;      // show a cross-section
+  glm::vec3 normal;  // glass frame; the side the normal points to is cut away
+  float offset;      // metres along the normal from the glass's axis foot
+};
+
 struct RenderParams {
   int tonemap;  // Tonemap
   float exposure;
@@ -113,6 +119,7 @@ struct Params {
   EnvParams env;
   LightParams light;
   CameraParams camera;
+  ClipParams clip;
   RenderParams render;
 };
 

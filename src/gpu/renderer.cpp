@@ -70,6 +70,8 @@ FrameUniforms pack_uniforms(const FrameState& f, int width, int height, DebugVie
                          n * (fo.thickness_at(b.xz.x, b.xz.y, f.liquid.waves.radius) - 0.3 * b.radius);
     u.bubbles[i] = {glm::vec3(c), b.popped ? -b.radius : b.radius};
   }
+  const float clip_len = glm::length(p.clip.normal);
+  u.clip = p.clip.enabled && clip_len > 1e-4f ? glm::vec4(p.clip.normal / clip_len, p.clip.offset) : glm::vec4(0, 0, 0, 1);
   for (int k = 0; k <= Vessel::kSegments; ++k) u.knots[k] = {v.r_outer[size_t(k)], v.r_inner[size_t(k)], 0, 0};
   return u;
 }
@@ -261,8 +263,9 @@ Image visualize_debug(const DebugImage& d, DebugView view) {
         tmin = std::min(tmin, d.px(x, y)[0]);
         tmax = std::max(tmax, d.px(x, y)[0]);
       }
-  static const std::uint8_t palette[8][3] = {{0, 0, 0},      {90, 90, 90},   {80, 160, 255}, {255, 140, 40},
-                                             {240, 240, 60}, {200, 60, 200}, {60, 200, 120}, {255, 60, 60}};
+  static const std::uint8_t palette[10][3] = {{0, 0, 0},      {90, 90, 90},   {80, 160, 255}, {255, 140, 40},
+                                              {240, 240, 60}, {200, 60, 200}, {60, 200, 120}, {255, 60, 60},
+                                              {150, 220, 255}, {255, 170, 170}};
   for (int y = 0; y < d.height; ++y)
     for (int x = 0; x < d.width; ++x) {
       const float* s = d.px(x, y);
@@ -276,7 +279,7 @@ Image visualize_debug(const DebugImage& d, DebugView view) {
       } else if (view == DebugView::Cost) {  // 0 tests black, 64 or more white
         o[0] = o[1] = o[2] = std::uint8_t(std::lround(std::clamp(s[0] / 64.0f, 0.0f, 1.0f) * 255));
       } else {
-        int m = std::clamp(int(std::lround(s[1])), 0, 7);
+        int m = std::clamp(int(std::lround(s[1])), 0, 9);
         for (int c = 0; c < 3; ++c) o[c] = palette[m][c];
       }
     }

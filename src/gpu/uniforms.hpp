@@ -24,6 +24,7 @@ struct FrameUniforms {
   glm::vec4 foam, foam_color, foam_detail, lacing_info;
   glm::vec4 lacing[2];
   glm::vec4 bubbles[12];
+  glm::vec4 clip;
   glm::vec4 knots[Vessel::kSegments + 1];
 };
 
@@ -40,7 +41,8 @@ static_assert(offsetof(FrameUniforms, waves) == 448);
 static_assert(offsetof(FrameUniforms, foam) == 464);
 static_assert(offsetof(FrameUniforms, lacing) == 528);
 static_assert(offsetof(FrameUniforms, bubbles) == 560);
-static_assert(offsetof(FrameUniforms, knots) == 752);
-static_assert(sizeof(FrameUniforms) == 752 + 16 * (Vessel::kSegments + 1));
+static_assert(offsetof(FrameUniforms, clip) == 752);
+static_assert(offsetof(FrameUniforms, knots) == 768);
+static_assert(sizeof(FrameUniforms) == 768 + 16 * (Vessel::kSegments + 1));
 
 }  // namespace draught::gpu

@@ -105,6 +105,9 @@ INSTANTIATE_TEST_SUITE_P(
         // Foam: a head building during the pour, and half drunk with lacing and a concave head.
         GoldenCase{"pint_lager_fresh_pour", {}, 160, 160, 3, 0.002, 64, "fresh-pour", 0.8},
         GoldenCase{"pint_lager_half_drunk", {}, 160, 160, 3, 0.002, 64, "fresh-pour", 8.5},
+        // A cross-section with capped cuts through glass, beer and head.
+        GoldenCase{"pint_lager_cross_section", {"lager", "pint", {"clip.enabled=true", "clip.normal=1,0,1"}, {}}, 160, 160, 3,
+                   0.002, 64},
         // Rising bubbles: the etched flute's stream and the wall's sites, refracted by the glass.
         GoldenCase{"flute_champagne", {"champagne", "flute", {}, {"eye=0,0.17,0.3", "target=0,0.17,0", "vfov=16"}}, 128,
                    192, 3, 0.002, 64},

@@ -68,7 +68,7 @@ TEST_P(Probe, DebugChannelsMatchReferenceIntersector) {
 
   int interior_mismatch = 0, edge_mismatch = 0, agree_hits = 0, depth_bad = 0, normal_bad = 0;
   double worst_depth = 0, worst_angle = 0;
-  std::vector<int> per_material(8, 0);
+  std::vector<int> per_material(10, 0);
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
       const Hit& h = ref.at(x, y);
@@ -90,7 +90,7 @@ TEST_P(Probe, DebugChannelsMatchReferenceIntersector) {
       if (angle > 0.25) ++normal_bad;
     }
   std::printf("[%s] %dx%d: %d agreeing hits; materials:", c.name, n, n, agree_hits);
-  for (int m = 1; m < 8; ++m)
+  for (int m = 1; m < 10; ++m)
     if (per_material[size_t(m)]) std::printf(" %s=%d", material_name(Material(m)), per_material[size_t(m)]);
   std::printf("; mismatches edge=%d interior=%d; worst glass |dt|=%.2e m, worst normal %.3f deg\n", edge_mismatch,
               interior_mismatch, worst_depth, worst_angle);
@@ -112,6 +112,10 @@ INSTANTIATE_TEST_SUITE_P(
         ProbeCase{"wine-glass", {"red-wine", "wine", {}, {}}, 96},
         ProbeCase{"empty-tulip-above", {"amber-ale", "tulip", {"liquid.fill=0"}, {"eye=0.03,0.4,0.12", "target=0,0.05,0"}}, 96},
         ProbeCase{"nonic-from-below", {"stout", "nonic", {"env.floor=false"}, {"eye=0.0,-0.12,0.3", "target=0,0.06,0"}}, 96},
+        // Cross-sections: cut faces through glass and liquid, from the front and from above.
+        ProbeCase{"pint-cross-section", {"lager", "pint", {"clip.enabled=true", "clip.normal=1,0,1"}, {}}, 96},
+        ProbeCase{"wine-cross-section-above",
+                  {"red-wine", "wine", {"clip.enabled=true", "clip.offset=0.01"}, {"eye=0.05,0.4,0.25", "target=0,0.14,0"}}, 96},
         // Tipped on its foot, sloshing with waves, spilling over the rim.
         ProbeCase{"pint-tilted", {}, 96, "gentle-tilt", 1.9},
         ProbeCase{"pint-sloshing", {}, 96, "shake-and-settle", 1.3},
