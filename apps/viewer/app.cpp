@@ -1,0 +1,388 @@
+#include "app.hpp"
+
+#include "editor.hpp"
+#include "params_panel.hpp"
+#include "preset_panel.hpp"
+#include "window.hpp"
+
+#include "core/files.hpp"
+#include "core/frame.hpp"
+#include "core/image.hpp"
+#include "core/input/combined.hpp"
+#include "core/simulation.hpp"
+#include "core/timeline.hpp"
+#include "gpu/renderer.hpp"
+#include "platform/sdl_gamepad.hpp"
+
+#include <GLES3/gl3.h>
+#include <imgui.h>
+#include <imgui_impl_sdl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <iterator>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace draught::viewer {
+
+namespace {
+
+using gpu::DebugView;
+
+// Screenshot mode steps the clock by a fixed 1/30 s per frame, so the picture is the same
+// on a fast GPU and on llvmpipe.
+constexpr double kScreenshotFps = 30;
+constexpr double kSipFraction = 0.10, kSipSeconds = 1.0;  // S: drink 10 % of the glass over 1 s
+constexpr double kZoomStep = 0.9;                          // camera distance per wheel click
+constexpr double kWheelSettle = 0.4;  // s: wheel clicks closer together are one undo step
+
+constexpr DebugView kViews[] = {DebugView::None, DebugView::Depth, DebugView::Normal, DebugView::Material,
+                                DebugView::Cost};
+constexpr const char* kViewNames[] = {"none", "depth", "normal", "material", "cost"};
+
+std::optional<Timeline> load_optional_timeline(const std::string& name) {
+  if (name.empty()) return std::nullopt;
+  return load_timeline(name);
+}
+
+// The scene as the CLI resolves it: flags first, then what the timeline names.
+Editor make_editor(const ViewerOptions& o, const std::optional<Timeline>& tl) {
+  std::string preset = o.preset, glass = o.glass;
+  if (tl && !o.preset_given && !tl->preset.empty()) preset = tl->preset;
+  if (tl && !o.glass_given && !tl->glass.empty()) glass = tl->glass;
+  return Editor(preset, glass);
+}
+
+class Viewer {
+ public:
+  explicit Viewer(const ViewerOptions& o)
+      : opt_(o),
+        timeline_(load_optional_timeline(o.timeline)),
+        editor_(make_editor(o, timeline_)),  // bad presets fail before a window opens
+        window_("draught", o.width, o.height),
+        rig_(make_input_driver(window_.has_game_controllers() ? "mouse+gamepad" : "mouse")),
+        preset_state_(make_preset_panel_state()),
+        show_panel_(!o.hide_panel) {
+    // With the controller subsystem up, the gamepad part is always there: it holds the glass
+    // upright until a controller reports motion, so one plugged in later just works.
+    if (rig_.gamepad) gamepad_ = std::make_unique<SdlGamepadInput>(*rig_.gamepad);
+    applied_revision_ = editor_.revision();
+    restart();
+  }
+  ~Viewer() {
+    if (debug_tex_) glDeleteTextures(1, &debug_tex_);
+  }
+
+  int run();
+
+ private:
+  void handle(const SDL_Event&);
+  void key(const SDL_Keysym&, bool repeat);
+  void mouse(const SDL_Event&);
+  void zoom(double clicks);
+  void restart();
+  void advance();
+  void draw_panel();
+  void draw_scene(int width, int height);
+  void draw_overlay(int width, int height);
+  void write_screenshot(int width, int height) const;
+
+  const ViewerOptions opt_;
+  std::optional<Timeline> timeline_;
+  Editor editor_;
+  Window window_;
+  gpu::Renderer renderer_;  // after window_: needs its context
+  InputRig rig_;
+  std::unique_ptr<SdlGamepadInput> gamepad_;
+  std::unique_ptr<Simulation> sim_;
+  std::unique_ptr<TimelineDriver> timeline_driver_;
+  ParamsPanelState params_state_;
+  PresetPanelState preset_state_;
+  unsigned applied_revision_ = 0;
+  bool show_panel_ = true, quit_ = false;
+  bool held_[2] = {false, false};  // mouse buttons whose press went to the rig
+  int view_ = 0;                    // index into kViews
+  double now_ = 0;                  // the app's clock, seconds: events, input samples, simulation
+  double timeline_start_ = 0, last_wheel_ = -1e9;
+  double sip_start_ = -1, sip_until_ = -1;  // the sip in progress, on the app's clock
+  double frame_ms_ = 0;             // smoothed
+  std::string note_;                // the overlay's last message (a debug view that failed, ...)
+  GLuint debug_tex_ = 0;
+};
+
+int Viewer::run() {
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  auto last = start;
+  for (int frame = 0; !quit_; ++frame) {
+    const auto t = clock::now();
+    const double dt_ms = std::chrono::duration<double, std::milli>(t - last).count();
+    last = t;
+    if (frame > 0) frame_ms_ = frame_ms_ == 0 ? dt_ms : 0.9 * frame_ms_ + 0.1 * dt_ms;
+    now_ = opt_.screenshot.empty() ? std::chrono::duration<double>(t - start).count() : frame / kScreenshotFps;
+
+    SDL_Event e;
+    while (SDL_PollEvent(&e)) handle(e);
+    window_.begin_frame();
+    if (show_panel_) draw_panel();
+    // A slider being dragged is one undo step, not one per frame.
+    editor_.settle(ImGui::IsAnyItemActive() || now_ - last_wheel_ < kWheelSettle);
+    advance();
+    int w = 0, h = 0;
+    window_.drawable_size(w, h);
+    draw_scene(w, h);
+    draw_overlay(w, h);
+    window_.end_frame();
+    if (!opt_.screenshot.empty() && frame + 1 >= opt_.frames) {
+      write_screenshot(w, h);  // the back buffer, before the swap makes it undefined
+      return 0;
+    }
+    window_.swap();
+  }
+  return 0;
+}
+
+void Viewer::handle(const SDL_Event& e) {
+  ImGui_ImplSDL2_ProcessEvent(&e);
+  if (gamepad_ && gamepad_->handle(e)) return;
+  switch (e.type) {
+    case SDL_QUIT: quit_ = true; break;
+    case SDL_KEYDOWN:
+      // Only a text field takes the keys away: a focused slider still lets R, P, S work.
+      if (!ImGui::GetIO().WantTextInput) key(e.key.keysym, e.key.repeat != 0);
+      break;
+    case SDL_MOUSEBUTTONDOWN:
+    case SDL_MOUSEBUTTONUP:
+    case SDL_MOUSEMOTION:
+    case SDL_MOUSEWHEEL: mouse(e); break;
+    default: break;
+  }
+}
+
+void Viewer::key(const SDL_Keysym& k, bool repeat) {
+  const bool ctrl = k.mod & KMOD_CTRL;
+  if (k.sym == SDLK_z && ctrl) {
+    if (!editor_.undo()) note_ = "nothing to undo";
+    return;
+  }
+  if (repeat || ctrl) return;
+  switch (k.sym) {
+    case SDLK_ESCAPE: quit_ = true; break;
+    case SDLK_F1: show_panel_ = !show_panel_; break;
+    case SDLK_r: restart(); note_ = timeline_ ? "timeline restarted" : "reset: upright, refilled"; break;
+    case SDLK_p: sim_->pour(); note_ = "pour"; break;
+    case SDLK_s:
+      if (timeline_) {
+        note_ = "sip: the timeline decides what is drunk";
+      } else {
+        sip_start_ = now_;
+        sip_until_ = now_ + kSipSeconds;
+        note_ = "sip";
+      }
+      break;
+    case SDLK_d:
+      view_ = (view_ + 1) % int(std::size(kViews));  // the overlay names it
+      note_.clear();
+      break;
+    default: break;
+  }
+}
+
+void Viewer::mouse(const SDL_Event& e) {
+  if (timeline_) return;  // the timeline moves the glass
+  const bool ui = ImGui::GetIO().WantCaptureMouse;
+  int ww = 0, wh = 0;
+  window_.window_size(ww, wh);
+  const Viewport vp{double(ww), double(wh)};
+  const auto which = [](Uint8 b) { return b == SDL_BUTTON_LEFT ? 0 : b == SDL_BUTTON_RIGHT ? 1 : -1; };
+  const MouseButton buttons[] = {MouseButton::left, MouseButton::right};
+  switch (e.type) {
+    case SDL_MOUSEBUTTONDOWN: {
+      const int b = which(e.button.button);
+      if (b < 0 || ui) return;
+      rig_.mouse->press(now_, buttons[b], e.button.x, e.button.y, vp, SDL_GetModState() & KMOD_SHIFT);
+      held_[b] = true;
+      break;
+    }
+    case SDL_MOUSEBUTTONUP: {
+      // A drag that ends over the panel still ends: the glass must not stay tipped.
+      const int b = which(e.button.button);
+      if (b < 0 || !held_[b]) return;
+      rig_.mouse->release(now_, buttons[b]);
+      held_[b] = false;
+      break;
+    }
+    case SDL_MOUSEMOTION:
+      if (held_[0] || held_[1] || !ui) rig_.mouse->move(now_, e.motion.x, e.motion.y, vp);
+      break;
+    case SDL_MOUSEWHEEL:
+      if (!ui) zoom(e.wheel.direction == SDL_MOUSEWHEEL_FLIPPED ? -e.wheel.y : e.wheel.y);
+      break;
+  }
+}
+
+// Wheel up moves the camera closer along its line of sight. Auto-framing would undo any
+// distance, so the first click takes over the framed camera and turns auto_frame off.
+void Viewer::zoom(double clicks) {
+  if (clicks == 0) return;
+  Params p = editor_.params();
+  CameraParams c = p.camera.auto_frame ? frame_camera(p.camera, sim_->vessel()) : p.camera;
+  const glm::vec3 back = c.eye - c.target;
+  const float dist = glm::length(back);
+  if (dist < 1e-6f) return;
+  const float next = std::clamp(dist * float(std::pow(kZoomStep, clicks)), 0.02f, 8.0f);
+  const ParamDesc* eye = find_param("camera.eye");
+  const ParamDesc* target = find_param("camera.target");
+  const glm::vec3 e = glm::clamp(c.target + back * (next / dist), glm::vec3(eye->min), glm::vec3(eye->max));
+  try {
+    set_param(p, *find_param("camera.auto_frame"), false);
+    set_param(p, *target, c.target);
+    set_param(p, *eye, e);
+  } catch (const ParamError& err) {
+    note_ = std::string("zoom: ") + err.what();
+    return;
+  }
+  editor_.change(p);
+  last_wheel_ = now_;
+}
+
+// A fresh simulation: the glass upright and filled to liquid.fill (or the timeline from 0).
+void Viewer::restart() {
+  sip_start_ = sip_until_ = -1;
+  if (timeline_) {
+    sim_ = std::make_unique<Simulation>(timeline_->params_at(0, editor_.params()));
+    timeline_driver_ = std::make_unique<TimelineDriver>(*timeline_, sim_->vessel().r_outer.front());
+    timeline_start_ = now_;
+  } else {
+    sim_ = std::make_unique<Simulation>(editor_.params());
+    if (rig_.gamepad) rig_.gamepad->recenter();  // the controller's pose now is "upright"
+  }
+  sim_->settle_bubbles(4.0);  // a drink that has been standing, as the CLI shows it
+}
+
+void Viewer::advance() {
+  const bool changed = editor_.revision() != applied_revision_;
+  applied_revision_ = editor_.revision();
+  if (timeline_) {
+    double t = now_ - timeline_start_;
+    if (t > timeline_->duration) {  // loop
+      restart();
+      t = 0;
+    }
+    if (changed) {  // the glass may have changed: the driver tips on the new foot
+      sim_->set_params(timeline_->params_at(sim_->time(), editor_.params()));
+      timeline_driver_ = std::make_unique<TimelineDriver>(*timeline_, sim_->vessel().r_outer.front());
+    }
+    play_timeline(*sim_, *timeline_driver_, *timeline_, editor_.params(), t);
+    return;
+  }
+  if (changed) sim_->set_params(editor_.params());
+  // A sip starts and ends between simulation steps of whole frames: step to each edge with
+  // the right drink rate, so a sip drinks exactly kSipFraction.
+  if (sip_start_ > sim_->time()) sim_->advance(*rig_.driver, std::min(now_, sip_start_));
+  if (sip_until_ > sim_->time()) sim_->advance(*rig_.driver, std::min(now_, sip_until_), kSipFraction / kSipSeconds);
+  sim_->advance(*rig_.driver, now_);
+}
+
+void Viewer::draw_panel() {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(std::min(400.0f, io.DisplaySize.x * 0.45f), io.DisplaySize.y - 20),
+                           ImGuiCond_FirstUseEver);
+  if (ImGui::Begin("draught")) {
+    preset_panel(editor_, preset_state_);
+    ImGui::Separator();
+    Params p = editor_.params();
+    if (params_panel(p, params_state_)) editor_.change(p);
+  }
+  ImGui::End();
+}
+
+void Viewer::draw_scene(int width, int height) {
+  const FrameState f = sim_->frame();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, width, height);
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  const DebugView view = kViews[view_];
+  if (view == DebugView::None) {
+    renderer_.draw(f, width, height);
+    return;
+  }
+  // Debug channels are floats: they need their own target, then a readable picture of them
+  // goes behind the UI as a texture.
+  try {
+    const Image img = gpu::visualize_debug(renderer_.render_debug(f, width, height, view), view);
+    if (!debug_tex_) {
+      glGenTextures(1, &debug_tex_);
+      glBindTexture(GL_TEXTURE_2D, debug_tex_);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
+    glBindTexture(GL_TEXTURE_2D, debug_tex_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(std::intptr_t(debug_tex_)), ImVec2(0, 0),
+                                             ImGui::GetIO().DisplaySize);
+  } catch (const std::exception& e) {
+    note_ = std::string("debug view: ") + e.what();
+    view_ = 0;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    renderer_.draw(f, width, height);
+  }
+}
+
+void Viewer::draw_overlay(int width, int height) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 10, 10), ImGuiCond_Always, ImVec2(1, 0));
+  ImGui::SetNextWindowBgAlpha(0.6f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                 ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs;
+  if (ImGui::Begin("##overlay", nullptr, flags)) {
+    if (frame_ms_ > 0) ImGui::Text("%.1f ms  %.0f fps", frame_ms_, 1000.0 / frame_ms_);
+    else ImGui::Text("-- ms");
+    ImGui::Text("%d x %d", width, height);
+    ImGui::Text("%s", window_.renderer().c_str());
+    if (timeline_)
+      ImGui::Text("timeline %s: %.1f / %.1f s", timeline_->name.c_str(), sim_->time(), timeline_->duration);
+    else
+      ImGui::Text("input: %s%s", rig_.driver->name(), gamepad_ && gamepad_->active() >= 0 ? " (controller moving)" : "");
+    ImGui::Text("%.0f %% full, %.1f %% spilled", 100.0 * sim_->fraction(), 100.0 * sim_->spilled());
+    if (view_ != 0) ImGui::Text("debug view: %s", kViewNames[view_]);
+    const ImVec4 grey(0.75f, 0.75f, 0.75f, 1.0f);
+    if (!note_.empty()) ImGui::TextColored(grey, "%s", note_.c_str());
+    ImGui::TextColored(grey, "F1 panel  R reset  P pour  S sip  D debug\nCtrl+Z undo  wheel zoom  Esc quit");
+  }
+  ImGui::End();
+}
+
+void Viewer::write_screenshot(int width, int height) const {
+  Image img{width, height, std::vector<std::uint8_t>(std::size_t(width) * std::size_t(height) * 4)};
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+  // GL rows are bottom-up, PNG rows top-down; the window is opaque whatever alpha says.
+  for (int y = 0; y < height / 2; ++y)
+    std::swap_ranges(img.px(0, y), img.px(0, y) + std::size_t(width) * 4, img.px(0, height - 1 - y));
+  for (std::size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
+  write_png(opt_.screenshot, img);
+  std::printf("wrote %s (%d x %d, %d frames, %s)\n", opt_.screenshot.c_str(), width, height, opt_.frames,
+              window_.renderer().c_str());
+}
+
+}  // namespace
+
+int run_viewer(const ViewerOptions& o) {
+  Viewer viewer(o);
+  return viewer.run();
+}
+
+}  // namespace draught::viewer

@@ -1,0 +1,155 @@
+// The viewer's editor without a window: undo steps, presets, and load/save errors that
+// leave everything as it was.
+#include "editor.hpp"
+
+#include "core/files.hpp"
+#include "core/preset.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <unistd.h>
+
+namespace draught::viewer {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every parameter as text: equal texts, equal parameters.
+std::string dump(const Params& p) { return preset_json(p, "scene", "x", "", {}); }
+
+Params with_fill(Params p, float fill) {
+  set_param(p, *find_param("liquid.fill"), fill);
+  return p;
+}
+
+class EditorTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() / ("draught-viewer-test-" + std::to_string(getpid()));
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  fs::path dir;
+};
+
+TEST_F(EditorTest, OpensLikeTheCli) {
+  Editor ed("lager", "");
+  EXPECT_EQ(ed.drink_label(), "lager");
+  EXPECT_EQ(ed.glass_label(), "pint");  // the drink's suggested glass
+  EXPECT_EQ(dump(ed.params()), dump(resolve_scene({"lager", "", {}, {}})));
+  EXPECT_THROW(Editor("no-such-drink", ""), InputError);
+}
+
+TEST_F(EditorTest, UndoStepsBackOneChangeAtATime) {
+  Editor ed("lager", "");
+  const std::string original = dump(ed.params());
+  EXPECT_FALSE(ed.undo());
+  ed.change(with_fill(ed.params(), 0.5f));
+  ed.settle(false);
+  ed.change(with_fill(ed.params(), 0.3f));
+  ed.settle(false);
+  EXPECT_EQ(ed.undo_depth(), 2u);
+  const unsigned rev = ed.revision();
+  ASSERT_TRUE(ed.undo());
+  EXPECT_GT(ed.revision(), rev);  // the app hands the old parameters to the simulation
+  EXPECT_FLOAT_EQ(ed.params().liquid.fill, 0.5f);
+  ASSERT_TRUE(ed.undo());
+  EXPECT_EQ(dump(ed.params()), original);
+  EXPECT_FALSE(ed.undo());
+}
+
+TEST_F(EditorTest, ADragIsOneUndoStep) {
+  Editor ed("lager", "");
+  const std::string original = dump(ed.params());
+  for (float f : {0.7f, 0.6f, 0.5f}) {
+    ed.change(with_fill(ed.params(), f));
+    ed.settle(true);  // the slider is still held
+  }
+  ed.settle(false);
+  EXPECT_EQ(ed.undo_depth(), 1u);
+  ASSERT_TRUE(ed.undo());
+  EXPECT_EQ(dump(ed.params()), original);
+}
+
+TEST_F(EditorTest, ChoosingADrinkBringsItsGlassAndCanBeUndone) {
+  Editor ed("lager", "");
+  const std::string lager = dump(ed.params());
+  ASSERT_TRUE(ed.choose_drink("stout")) << ed.status().text;
+  EXPECT_EQ(ed.drink_label(), "stout");
+  EXPECT_EQ(ed.glass_label(), "nonic");
+  ASSERT_TRUE(ed.choose_glass("tulip")) << ed.status().text;
+  EXPECT_EQ(ed.glass_label(), "tulip");
+  EXPECT_EQ(dump(ed.params()), dump(resolve_scene({"stout", "tulip", {}, {}})));
+  ASSERT_TRUE(ed.undo());
+  EXPECT_EQ(ed.glass_label(), "nonic");  // the names come back with the parameters
+  ASSERT_TRUE(ed.undo());
+  EXPECT_EQ(dump(ed.params()), lager);
+  EXPECT_EQ(ed.drink_label(), "lager");
+  EXPECT_EQ(ed.glass_label(), "pint");
+  ASSERT_TRUE(ed.choose_glass("flute"));  // undone back to lager: the glass goes with lager
+  EXPECT_EQ(dump(ed.params()), dump(resolve_scene({"lager", "flute", {}, {}})));
+}
+
+TEST_F(EditorTest, BadFilesChangeNothing) {
+  Editor ed("lager", "");
+  ed.change(with_fill(ed.params(), 0.4f));
+  ed.settle(false);
+  const std::string before = dump(ed.params());
+  const unsigned rev = ed.revision();
+
+  EXPECT_FALSE(ed.load((dir / "missing.json").string()));
+  EXPECT_TRUE(ed.status().error);
+  EXPECT_NE(ed.status().text.find("missing.json"), std::string::npos) << ed.status().text;
+
+  write_file_atomic(dir / "broken.json", "{ \"draught_preset\": 1, \"kind\": \"drink\", ");
+  EXPECT_FALSE(ed.load((dir / "broken.json").string()));
+  EXPECT_NE(ed.status().text.find("broken.json"), std::string::npos) << ed.status().text;
+
+  write_file_atomic(dir / "bad-value.json",
+                    R"({ "draught_preset": 1, "kind": "drink", "name": "x", "params": { "liquid": { "fill": 7 } } })");
+  EXPECT_FALSE(ed.load((dir / "bad-value.json").string()));
+  EXPECT_NE(ed.status().text.find("liquid.fill"), std::string::npos) << ed.status().text;
+
+  EXPECT_FALSE(ed.choose_glass("no-such-glass"));
+  EXPECT_FALSE(ed.save_as((dir / "no-such-dir" / "x.json").string(), "scene"));
+  EXPECT_FALSE(ed.save());  // nothing loaded or saved yet
+  EXPECT_EQ(dump(ed.params()), before);
+  EXPECT_EQ(ed.revision(), rev);
+  EXPECT_EQ(ed.drink_label(), "lager");
+}
+
+TEST_F(EditorTest, SavedScenesLoadBackTheSame) {
+  Editor ed("red-wine", "");
+  ed.change(with_fill(ed.params(), 0.33f));
+  ed.settle(false);
+  const std::string edited = dump(ed.params());
+  const fs::path file = dir / "mine.json";
+  ASSERT_TRUE(ed.save_as(file.string(), "scene")) << ed.status().text;
+  EXPECT_EQ(ed.file(), file.string());
+  EXPECT_EQ(load_preset(file).kind, "scene");
+
+  Editor other("lager", "");
+  ASSERT_TRUE(other.load(file.string())) << other.status().text;
+  EXPECT_EQ(dump(other.params()), edited);
+  EXPECT_EQ(other.drink_label(), "mine");
+  EXPECT_EQ(other.glass_label(), "(the scene's)");
+  ASSERT_TRUE(other.save()) << other.status().text;  // Save writes the loaded file again
+  EXPECT_EQ(load_preset(file).kind, "scene");
+}
+
+TEST_F(EditorTest, GlassAndDrinkFilesPlayTheirRole) {
+  Editor ed("lager", "");
+  ASSERT_TRUE(ed.choose_glass("weizen"));
+  const fs::path glass = dir / "my-glass.json";
+  ASSERT_TRUE(ed.save_as(glass.string(), "glass")) << ed.status().text;
+  EXPECT_EQ(load_preset(glass).kind, "glass");
+  ASSERT_TRUE(ed.choose_drink("stout"));  // into a nonic
+  ASSERT_TRUE(ed.load(glass.string())) << ed.status().text;
+  EXPECT_EQ(ed.glass_label(), "my-glass");
+  EXPECT_EQ(ed.drink_label(), "stout");
+  EXPECT_EQ(dump(ed.params()), dump(resolve_scene({"stout", glass.string(), {}, {}})));
+}
+
+}  // namespace
+}  // namespace draught::viewer
