@@ -52,7 +52,7 @@ Preset parse_preset(const std::string& text, const std::string& file) {
   };
   for (auto& [key, val] : j.items()) {
     static const char* known[] = {"draught_preset", "kind", "name", "description", "suggested_glass", "params"};
-    if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return key == k; }) == std::end(known))
+    if (std::find_if(std::begin(known), std::end(known), [&, &key = key](const char* k) { return key == k; }) == std::end(known))
       throw InputError(file + ": field '" + key +
                        "': unknown key, expected one of draught_preset, kind, name, description, "
                        "suggested_glass, params");

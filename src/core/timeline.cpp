@@ -56,7 +56,7 @@ struct Reader {
 
 void check_keys(const Reader& r, const json& obj, const std::string& where, std::initializer_list<const char*> keys) {
   for (auto& [key, val] : obj.items()) {
-    if (std::find_if(keys.begin(), keys.end(), [&](const char* k) { return key == k; }) != keys.end()) continue;
+    if (std::find_if(keys.begin(), keys.end(), [&, &key = key](const char* k) { return key == k; }) != keys.end()) continue;
     std::string list;
     for (const char* k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
     r.fail(where + key, "unknown key, expected one of " + list);

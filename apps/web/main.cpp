@@ -1,0 +1,440 @@
+// The web page's engine: the same Simulation and Renderer as the CLI, drawing into a WebGL2
+// canvas every animation frame. page.js drives it through the C functions below (strings
+// in, strings or JSON out); errors never escape as exceptions, they come back as text.
+#include "core/files.hpp"
+#include "core/frame.hpp"
+#include "core/input/combined.hpp"
+#include "core/params.hpp"
+#include "core/preset.hpp"
+#include "core/simulation.hpp"
+#include "gpu/renderer.hpp"
+
+#include <GLES3/gl3.h>
+#include <emscripten/emscripten.h>
+#include <emscripten/html5.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <string>
+
+namespace {
+
+using namespace draught;
+using nlohmann::json;
+
+// Adaptive quality: the canvas's backing store is its CSS size x devicePixelRatio x scale
+// (the browser stretches it); when even the smallest scale misses the budget, the number
+// of surface interactions per pixel is capped too.
+struct Quality {
+  bool adaptive = true;
+  double scale = 1.0;
+  double budget_ms = 33.0;
+  double ema_ms = 0;     // smoothed time between frames since the last change
+  double shown_ms = 0;   // the same, never reset (for the page)
+  int samples = 0;       // frames in ema_ms
+  int events_cap = 0;    // 0: render.max_events as set
+  static constexpr double kMinScale = 0.3, kMaxScale = 1.0;
+  static constexpr int kCapEvents = 6;
+  static constexpr double kStartPixels = 5e5;
+
+  // dt: milliseconds since the previous frame. Waits for a dozen frames after each change
+  // (three when far too slow), so one slow frame (a shader compiled) does not move it.
+  void update(double dt) {
+    if (!(dt > 0) || dt > 10000) return;  // a hidden tab, a debugger
+    shown_ms = shown_ms == 0 ? dt : 0.9 * shown_ms + 0.1 * dt;
+    if (!adaptive) return;
+    ema_ms = samples == 0 ? dt : 0.85 * ema_ms + 0.15 * dt;
+    if (++samples < (ema_ms > 3 * budget_ms ? 3 : 12)) return;
+    const double before = scale;
+    const int cap_before = events_cap;
+    if (ema_ms > budget_ms * 1.15) {
+      if (scale > kMinScale + 1e-9) {  // pixels cost scale^2
+        scale *= std::clamp(std::sqrt(budget_ms / ema_ms) * 0.97, 0.5, 0.95);
+        scale = std::max(kMinScale, std::round(scale * 20) / 20);
+      } else {
+        events_cap = kCapEvents;
+      }
+    } else if (ema_ms < budget_ms * 0.6) {
+      if (events_cap) events_cap = 0;
+      else scale = std::min(kMaxScale, std::round(scale * 1.12 * 20) / 20);
+    }
+    if (scale != before || events_cap != cap_before) samples = 0;
+    else samples = 6;  // keep watching, a little less eagerly
+  }
+};
+
+struct App {
+  EMSCRIPTEN_WEBGL_CONTEXT_HANDLE gl = 0;
+  std::string canvas;
+  std::unique_ptr<gpu::Renderer> renderer;
+  std::unique_ptr<Simulation> sim;
+  Params params;
+  InputRig rig;
+  int screen_degrees = 0;
+  std::string drink = "lager", glass;  // the picker's selection ("" glass: the drink's own)
+  double t0 = 0, last = -1;
+  long frames = 0;
+  Quality quality;
+  double css_w = 0, css_h = 0, dpr = 1;
+  int width = 0, height = 0;
+  bool context_lost = false;
+  double startup_ms = 0;
+  double cpu_ms = 0;  // smoothed time spent in frame(): simulation, bubble placement, GL calls
+  std::string error;  // a failure that stopped drawing
+};
+
+App* app = nullptr;
+std::string reply;  // what a C function returns lives here until the next call
+
+const char* answer(std::string s) {
+  reply = std::move(s);
+  return reply.c_str();
+}
+double now_s() { return emscripten_get_now() / 1000.0 - (app ? app->t0 : 0); }
+Viewport viewport(double w, double h) { return {std::max(1.0, w), std::max(1.0, h)}; }
+
+// New parameters from the page: the drink keeps moving; a new drink or glass is a full one.
+void use_params(const Params& p, bool refill) {
+  app->params = p;
+  if (!app->sim) return;
+  app->sim->set_params(p);
+  if (refill) app->sim->set_fraction(p.liquid.fill);
+}
+
+void resize_canvas() {
+  const double s = app->quality.scale * std::max(0.5, app->dpr);
+  const int w = std::clamp(int(std::lround(app->css_w * s)), 16, 4096);
+  const int h = std::clamp(int(std::lround(app->css_h * s)), 16, 4096);
+  if (w == app->width && h == app->height) return;
+  emscripten_set_canvas_element_size(app->canvas.c_str(), w, h);
+  app->width = w;
+  app->height = h;
+}
+
+void frame() {
+  if (!app || !app->renderer || app->context_lost) return;
+  const double t = now_s();
+  if (app->last >= 0 && app->frames > 3) app->quality.update((t - app->last) * 1000.0);
+  app->last = t;
+  resize_canvas();
+  try {
+    app->sim->advance(*app->rig.driver, t);
+    FrameState f = app->sim->frame();
+    if (app->quality.events_cap)
+      f.params.render.max_events = std::min(f.params.render.max_events, app->quality.events_cap);
+    emscripten_webgl_make_context_current(app->gl);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    app->renderer->draw(f, app->width, app->height);
+    ++app->frames;
+    const double cpu = (now_s() - t) * 1000.0;
+    app->cpu_ms = app->cpu_ms == 0 ? cpu : 0.9 * app->cpu_ms + 0.1 * cpu;
+  } catch (const std::exception& e) {
+    app->error = e.what();
+    emscripten_cancel_main_loop();
+  }
+}
+
+EM_BOOL on_context_lost(int, const void*, void*) {
+  app->context_lost = true;
+  app->error = "the WebGL context was lost (GPU reset or too many pages using WebGL); reload the page";
+  return EM_TRUE;
+}
+
+InputRig make_rig(const std::string& name) {
+  InputRig rig = make_input_driver(name);
+  if (rig.device) rig.device->set_screen_orientation(app->screen_degrees);
+  return rig;
+}
+
+json param_row(const ParamDesc& d) {
+  const std::string group = d.path.substr(0, d.path.find('.'));
+  return {{"path", d.path},
+          {"group", group},
+          {"name", d.path.substr(group.size() + 1)},
+          {"type", std::string(type_name(d.type))},
+          {"default", format_param(d, d.def)},
+          {"min", d.min},
+          {"max", d.max},
+          {"unit", d.unit},
+          {"doc", d.doc},
+          {"expected", expected_text(d)},
+          {"choices", d.choices}};
+}
+
+}  // namespace
+
+extern "C" {
+
+// Creates the WebGL2 context on `canvas` (a CSS selector), the renderer and the simulation
+// with the default preset, and starts drawing every animation frame. fixed_scale > 0 pins
+// the render scale (tests); 0 adapts it to the frame budget. "" or an error message.
+EMSCRIPTEN_KEEPALIVE const char* draught_start(const char* canvas, int preserve, double fixed_scale) {
+  if (app) return answer("already started");
+  app = new App;
+  app->canvas = canvas;
+  app->t0 = emscripten_get_now() / 1000.0;
+  EmscriptenWebGLContextAttributes a;
+  emscripten_webgl_init_context_attributes(&a);
+  a.majorVersion = 2;
+  a.minorVersion = 0;
+  a.alpha = EM_FALSE;
+  a.depth = EM_FALSE;
+  a.stencil = EM_FALSE;
+  a.antialias = EM_FALSE;
+  a.preserveDrawingBuffer = preserve ? EM_TRUE : EM_FALSE;
+  a.powerPreference = EM_WEBGL_POWER_PREFERENCE_HIGH_PERFORMANCE;
+  app->gl = emscripten_webgl_create_context(canvas, &a);
+  if (app->gl <= 0) return answer(app->error = "this browser cannot create a WebGL2 context (WebGL2 is required)");
+  emscripten_webgl_make_context_current(app->gl);
+  emscripten_set_webglcontextlost_callback(canvas, nullptr, EM_FALSE, on_context_lost);
+  if (fixed_scale > 0) {
+    app->quality.adaptive = false;
+    app->quality.scale = std::clamp(fixed_scale, 0.1, 2.0);
+  }
+  try {
+    app->params = resolve_scene(SceneRequest{});
+    app->sim = std::make_unique<Simulation>(app->params);
+    app->sim->settle_bubbles(2.0);
+    app->rig = make_rig("mouse");
+    app->renderer = std::make_unique<gpu::Renderer>();
+  } catch (const std::exception& e) {
+    app->renderer.reset();
+    return answer(app->error = e.what());
+  }
+  app->startup_ms = emscripten_get_now() - app->t0 * 1000.0;
+  emscripten_set_main_loop(frame, 0, 0);
+  return answer("");
+}
+
+// The canvas's CSS size and the device pixel ratio (page.js calls this on every resize).
+EMSCRIPTEN_KEEPALIVE void draught_resize(double css_w, double css_h, double dpr) {
+  if (!app) return;
+  app->css_w = css_w;
+  app->css_h = css_h;
+  app->dpr = dpr > 0 ? dpr : 1;
+  // Adaptive: start at about half a megapixel; the measured frame times take it from there.
+  Quality& q = app->quality;
+  if (q.adaptive && app->frames == 0) {
+    const double pixels = css_w * css_h * app->dpr * app->dpr;
+    if (pixels > Quality::kStartPixels)
+      q.scale = std::max(Quality::kMinScale, std::round(std::sqrt(Quality::kStartPixels / pixels) * 20) / 20);
+  }
+}
+
+// scale <= 0: adaptive to budget_ms per frame; else pinned.
+EMSCRIPTEN_KEEPALIVE void draught_set_quality(double scale, double budget_ms) {
+  if (!app) return;
+  Quality& q = app->quality;
+  q.adaptive = !(scale > 0);
+  if (!q.adaptive) {
+    q.scale = std::clamp(scale, 0.1, 2.0);
+    q.events_cap = 0;
+  }
+  if (budget_ms > 1) q.budget_ms = budget_ms;
+  q.samples = 0;
+}
+
+EMSCRIPTEN_KEEPALIVE int draught_frames() { return app ? int(app->frames) : 0; }
+
+EMSCRIPTEN_KEEPALIVE const char* draught_status() {
+  if (!app) return answer("{}");
+  json j = {{"frames", app->frames},
+            {"time", now_s()},
+            {"scale", app->quality.scale},
+            {"adaptive", app->quality.adaptive},
+            {"frame_ms", app->quality.shown_ms},
+            {"startup_ms", app->startup_ms},
+            {"cpu_ms", app->cpu_ms},
+            {"budget_ms", app->quality.budget_ms},
+            {"events_cap", app->quality.events_cap},
+            {"width", app->width},
+            {"height", app->height},
+            {"input", app->rig.driver ? app->rig.driver->name() : ""},
+            {"drink", app->drink},
+            {"glass", app->glass},
+            {"fraction", app->sim ? app->sim->fraction() : 0.0},
+            {"error", app->error}};
+  return answer(j.dump());
+}
+
+// Shipped presets: [{kind, name, description, suggested_glass}], glasses, drinks, scenes.
+EMSCRIPTEN_KEEPALIVE const char* draught_presets() {
+  try {
+    json out = json::array();
+    for (const Preset& p : list_presets())
+      out.push_back({{"kind", p.kind}, {"name", p.name}, {"description", p.description},
+                     {"suggested_glass", p.suggested_glass}});
+    return answer(out.dump());
+  } catch (const std::exception& e) {
+    return answer(json{{"error", e.what()}}.dump());
+  }
+}
+
+// The parameter table: [{path, group, name, type, default, min, max, unit, doc, expected,
+// choices}]; values as text in the form draught_set_param reads.
+EMSCRIPTEN_KEEPALIVE const char* draught_param_table() {
+  json out = json::array();
+  for (const ParamDesc& d : param_table()) out.push_back(param_row(d));
+  return answer(out.dump());
+}
+
+// The current values: {path: text}.
+EMSCRIPTEN_KEEPALIVE const char* draught_param_values() {
+  json out = json::object();
+  if (app)
+    for (const ParamDesc& d : param_table()) out[d.path] = format_param(d, get_param(app->params, d));
+  return answer(out.dump());
+}
+
+// Parses, validates and applies one value; "" or the message (field, what was expected).
+EMSCRIPTEN_KEEPALIVE const char* draught_set_param(const char* path, const char* text) {
+  if (!app) return answer("not started");
+  const ParamDesc* d = find_param(path);
+  if (!d) return answer(unknown_param_message(path));
+  try {
+    Params p = app->params;
+    set_param(p, *d, parse_param_text(*d, text));
+    use_params(p, false);
+    return answer("");
+  } catch (const ParamError& e) {
+    std::string msg = "field '" + e.field + "': expected " + e.expected;  // as the CLI's --set
+    if (e.expected.find(", got ") == std::string::npos) msg += ", got \"" + std::string(text) + "\"";
+    return answer(msg);
+  } catch (const std::exception& e) {
+    return answer(std::string(path) + ": " + e.what());
+  }
+}
+
+// A shipped drink or scene in a glass ("" = the drink's suggested glass), as the CLI's
+// --preset/--glass. "" or the error; nothing changes on error.
+EMSCRIPTEN_KEEPALIVE const char* draught_select(const char* drink, const char* glass) {
+  if (!app) return answer("not started");
+  try {
+    SceneRequest req;
+    req.preset = drink;
+    req.glass = glass;
+    Params p = resolve_scene(req);
+    app->drink = drink;
+    app->glass = glass;
+    use_params(p, true);
+    return answer("");
+  } catch (const std::exception& e) {
+    return answer(e.what());
+  }
+}
+
+// A preset file's text (from the page's file input). Parsed and validated completely first;
+// a glass replaces the glass, a drink the liquid, foam and bubbles, a scene everything (in its
+// suggested glass when it names one). {"error": "", "kind", "name"}; on error the state is kept.
+EMSCRIPTEN_KEEPALIVE const char* draught_load_preset(const char* text, const char* file) {
+  if (!app) return answer(json{{"error", "not started"}}.dump());
+  try {
+    const Preset pr = parse_preset(text, file);
+    const Params defaults = default_params();
+    Params p = app->params;
+    if (pr.kind == "glass") {
+      p.glass = defaults.glass;
+    } else if (pr.kind == "drink") {
+      p.liquid = defaults.liquid;
+      p.foam = defaults.foam;
+      p.bubbles = defaults.bubbles;
+    } else {
+      p = defaults;
+      if (!pr.suggested_glass.empty()) {
+        const Preset g = load_preset(find_preset(pr.suggested_glass, "glass"));
+        if (g.kind != "glass")
+          throw InputError(g.file + ": field 'kind': expected \"glass\" for suggested_glass, got \"" + g.kind + "\"");
+        apply_preset(g, p);
+      }
+    }
+    apply_preset(pr, p);
+    use_params(p, true);
+    return answer(json{{"error", ""}, {"kind", pr.kind}, {"name", pr.name}}.dump());
+  } catch (const std::exception& e) {
+    return answer(json{{"error", e.what()}}.dump());
+  }
+}
+
+// Everything as a scene preset (JSON text), loadable again by the page or the CLI.
+EMSCRIPTEN_KEEPALIVE const char* draught_export_preset(const char* name) {
+  if (!app) return answer("");
+  try {
+    return answer(preset_json(app->params, "scene", name, "Saved from the draught web page", {}));
+  } catch (const std::exception& e) {
+    return answer("");
+  }
+}
+
+// Fills the glass again with a fresh head building.
+EMSCRIPTEN_KEEPALIVE void draught_pour() {
+  if (app && app->sim) app->sim->pour();
+}
+
+// One of input_driver_names ("mouse", "touch+gyro", ...); "" or the error.
+EMSCRIPTEN_KEEPALIVE const char* draught_set_input(const char* name) {
+  if (!app) return answer("not started");
+  if (app->rig.driver && name == std::string(app->rig.driver->name())) return answer("");
+  try {
+    app->rig = make_rig(name);
+    return answer("");
+  } catch (const std::exception& e) {
+    return answer(e.what());
+  }
+}
+
+// Mouse: kind 0 press, 1 move, 2 release; button 0 left, 2 right; CSS pixels in a
+// viewport of vw x vh. Without a mouse part, the left button acts as one finger.
+EMSCRIPTEN_KEEPALIVE void draught_mouse(int kind, int button, double x, double y, double vw, double vh, int shift) {
+  if (!app) return;
+  const double t = now_s();
+  const Viewport vp = viewport(vw, vh);
+  const MouseButton b = button == 2 ? MouseButton::right : MouseButton::left;
+  if (MouseDriver* m = app->rig.mouse) {
+    if (kind == 0) m->press(t, b, x, y, vp, shift != 0);
+    else if (kind == 1) m->move(t, x, y, vp);
+    else m->release(t, b);
+  } else if (TouchDriver* d = app->rig.touch; d && button == 0) {
+    constexpr int kMouseFinger = 1 << 20;
+    if (kind == 0) d->down(t, kMouseFinger, x, y, vp);
+    else if (kind == 1) d->move(t, kMouseFinger, x, y, vp);
+    else d->up(t, kMouseFinger);
+  }
+}
+
+// Touch: kind 0 start, 1 move, 2 end, 3 cancel (every finger); id: Touch.identifier.
+EMSCRIPTEN_KEEPALIVE void draught_touch(int kind, int id, double x, double y, double vw, double vh) {
+  if (!app) return;
+  const double t = now_s();
+  const Viewport vp = viewport(vw, vh);
+  if (TouchDriver* d = app->rig.touch) {
+    if (kind == 0) d->down(t, id, x, y, vp);
+    else if (kind == 1) d->move(t, id, x, y, vp);
+    else if (kind == 2) d->up(t, id);
+    else d->cancel(t);
+  }
+}
+
+// devicemotion: sensor time (s), rotationRate in rad/s about the device's x, y, z (beta,
+// gamma, alpha), accelerationIncludingGravity in m/s^2.
+EMSCRIPTEN_KEEPALIVE void draught_device_motion(double t, double gx, double gy, double gz, double ax, double ay,
+                                                double az) {
+  if (app && app->rig.device) app->rig.device->motion(t, {gx, gy, gz}, {ax, ay, az});
+}
+
+// screen.orientation.angle
+EMSCRIPTEN_KEEPALIVE void draught_screen_orientation(int degrees) {
+  if (!app) return;
+  app->screen_degrees = degrees;
+  if (app->rig.device) app->rig.device->set_screen_orientation(degrees);
+}
+
+}  // extern "C"
+
+int main() {
+  // The presets are embedded at /presets (see cmake/web.cmake); preset_dirs() looks there.
+  setenv("DRAUGHT_PRESET_DIR", "/presets", 1);
+  return 0;
+}

@@ -1,0 +1,521 @@
+// draught's web page. The module (draught.js/.wasm, from apps/web/main.cpp) renders and
+// simulates; this file builds the panel from the parameter table the module exports, feeds
+// it input (mouse, touch, motion sensors) and shows what it is doing.
+//
+// URL options: ?size=WxH pins the canvas's CSS size; ?scale=S pins the render scale (else it
+// adapts to ?budget=MS per frame, default 33); ?preserve keeps the drawing buffer (tests read
+// pixels back).
+'use strict';
+(() => {
+  const $ = (id) => document.getElementById(id);
+  const query = new URLSearchParams(location.search);
+  const canvas = $('canvas');
+  const api = {};
+  let M = null;
+  // For tests and the console.
+  const page = (window.draught = {
+    ready: false,
+    error: '',
+    lastExport: '',
+    frames: () => (M ? M._draught_frames() : 0),
+    status: () => (M ? JSON.parse(api.status()) : {}),
+  });
+
+  function say(text, error = false) {
+    const m = $('message');
+    m.textContent = text;
+    m.classList.toggle('error', !!error);
+  }
+
+  const size = /^(\d+)x(\d+)$/.exec(query.get('size') || '');
+  if (size) {
+    document.body.classList.add('fixed-size');
+    canvas.style.width = size[1] + 'px';
+    canvas.style.height = size[2] + 'px';
+  }
+
+  if (typeof createDraught !== 'function') {
+    say('draught.js did not load', true);
+    return;
+  }
+  createDraught({ canvas, print: (t) => console.log(t), printErr: (t) => console.warn(t) }).then(start, (e) => {
+    page.error = 'could not load the renderer: ' + e;
+    say(page.error, true);
+  });
+
+  function start(module) {
+    M = module;
+    const fn = (name, ret, args) => M.cwrap(name, ret, args);
+    Object.assign(api, {
+      start: fn('draught_start', 'string', ['string', 'number', 'number']),
+      resize: fn('draught_resize', null, ['number', 'number', 'number']),
+      quality: fn('draught_set_quality', null, ['number', 'number']),
+      status: fn('draught_status', 'string', []),
+      presets: fn('draught_presets', 'string', []),
+      table: fn('draught_param_table', 'string', []),
+      values: fn('draught_param_values', 'string', []),
+      setParam: fn('draught_set_param', 'string', ['string', 'string']),
+      select: fn('draught_select', 'string', ['string', 'string']),
+      load: fn('draught_load_preset', 'string', ['string', 'string']),
+      exportPreset: fn('draught_export_preset', 'string', ['string']),
+      pour: fn('draught_pour', null, []),
+      setInput: fn('draught_set_input', 'string', ['string']),
+      mouse: fn('draught_mouse', null, ['number', 'number', 'number', 'number', 'number', 'number', 'number']),
+      touch: fn('draught_touch', null, ['number', 'number', 'number', 'number', 'number', 'number']),
+      motion: fn('draught_device_motion', null, ['number', 'number', 'number', 'number', 'number', 'number', 'number']),
+      screen: fn('draught_screen_orientation', null, ['number']),
+    });
+    page.api = api;
+    const scale = parseFloat(query.get('scale') || '0') || 0;
+    const err = api.start('#canvas', query.has('preserve') ? 1 : 0, scale);
+    if (err) {
+      page.error = err;
+      say(err, true);
+      return;
+    }
+    const budget = parseFloat(query.get('budget') || '0');
+    if (budget > 0) api.quality(scale, budget);
+    watchSize();
+    buildPickers();
+    buildPanel();
+    wireButtons();
+    wireInput();
+    setInterval(showStatus, 250);
+    page.ready = true;
+  }
+
+  // ---- size: CSS pixels and devicePixelRatio; the module picks the backing size ----
+  function watchSize() {
+    const send = () => {
+      const r = canvas.getBoundingClientRect();
+      api.resize(r.width, r.height, window.devicePixelRatio || 1);
+    };
+    send();
+    if (window.ResizeObserver) new ResizeObserver(send).observe(canvas);
+    window.addEventListener('resize', send);  // also fires when zoom changes the pixel ratio
+  }
+
+  let lastFrames = 0, lastTime = performance.now(), fps = 0, shownError = '';
+  function showStatus() {
+    const s = page.status();
+    const now = performance.now();
+    if (now - lastTime >= 1000) {  // frames per second over the last second or more
+      fps = (1000 * (s.frames - lastFrames)) / (now - lastTime);
+      lastFrames = s.frames;
+      lastTime = now;
+    }
+    let q = `quality ${Math.round(s.scale * 100)} %`;
+    if (s.events_cap) q += ` (${s.events_cap} events)`;
+    if (!s.adaptive) q += ' (fixed)';
+    $('quality').textContent = `${q} · ${s.width}×${s.height} · ${fps.toFixed(fps < 10 ? 1 : 0)} fps`;
+    $('input').textContent = 'input: ' + s.input;
+    if (s.error && s.error !== shownError) {
+      shownError = page.error = s.error;
+      say(s.error, true);
+    }
+  }
+
+  // ---- presets ----
+  let current = { drink: 'lager', glass: '' };
+  let presets = [];
+  function buildPickers() {
+    presets = JSON.parse(api.presets());
+    if (!Array.isArray(presets)) {
+      say(presets.error || 'no presets', true);
+      presets = [];
+    }
+    const drink = $('drink'), glass = $('glass');
+    for (const [kind, label] of [['drink', 'Drinks'], ['scene', 'Scenes']]) {
+      const group = document.createElement('optgroup');
+      group.label = label;
+      for (const p of presets.filter((p) => p.kind === kind)) group.append(option(p.name, p.name, p.description));
+      if (group.children.length) drink.append(group);
+    }
+    glass.append(option('', 'suggested'));
+    for (const p of presets.filter((p) => p.kind === 'glass')) glass.append(option(p.name, p.name, p.description));
+    drink.value = current.drink;
+    glass.value = current.glass;
+    suggestedLabel();
+    const choose = () => {
+      const err = api.select(drink.value, glass.value);
+      if (err) {
+        say(err, true);
+        drink.value = current.drink;
+        glass.value = current.glass;
+        return;
+      }
+      current = { drink: drink.value, glass: glass.value };
+      suggestedLabel();
+      refreshValues();
+      const p = presets.find((p) => p.name === current.drink && p.kind !== 'glass');
+      say(p ? p.description : '');
+    };
+    drink.addEventListener('change', choose);
+    glass.addEventListener('change', choose);
+  }
+  function suggestedLabel() {
+    const p = presets.find((p) => p.name === $('drink').value && p.kind !== 'glass');
+    $('glass').options[0].textContent = p && p.suggested_glass ? `suggested (${p.suggested_glass})` : 'suggested';
+  }
+  function option(value, text, title) {
+    const o = document.createElement('option');
+    o.value = value;
+    o.textContent = text;
+    if (title) o.title = title;
+    return o;
+  }
+
+  // ---- the parameter panel, from the table ----
+  const controls = new Map();  // path -> { show(text), row }
+  function buildPanel() {
+    const table = JSON.parse(api.table());
+    const root = $('params');
+    const groups = new Map();
+    for (const d of table) {
+      if (!groups.has(d.group)) groups.set(d.group, []);
+      groups.get(d.group).push(d);
+    }
+    for (const [group, rows] of groups) {
+      const details = document.createElement('details');
+      details.dataset.group = group;
+      if (group === 'liquid') details.open = true;
+      const summary = document.createElement('summary');
+      summary.textContent = group;
+      details.append(summary);
+      for (const d of rows) details.append(paramRow(d));
+      root.append(details);
+    }
+    refreshValues();
+  }
+
+  function refreshValues() {
+    const values = JSON.parse(api.values());
+    for (const [path, c] of controls) {
+      if (path in values) c.show(values[path]);
+      c.error('');
+    }
+  }
+
+  // Values go to the module once per animation frame (sliders fire faster than that).
+  const pending = new Map();
+  let flushQueued = false;
+  function commit(path, text) {
+    pending.set(path, text);
+    if (!flushQueued) {
+      flushQueued = true;
+      requestAnimationFrame(flush);
+    }
+  }
+  function flush() {
+    flushQueued = false;
+    for (const [path, text] of pending) {
+      const err = api.setParam(path, text);
+      controls.get(path).error(err);
+      if (err) say(err, true);
+      else if ($('message').classList.contains('error')) say('');
+    }
+    pending.clear();
+  }
+  page.setParam = (path, text) => {  // for tests and the console: same path as the panel
+    const err = api.setParam(path, String(text));
+    if (!err) refreshValues();
+    return err;
+  };
+
+  const fmt = (v) => String(Number(v.toPrecision(5)));
+  const notOnThePage = { 'render.supersample': 'exported and used by the CLI; the page renders at its adaptive scale instead' };
+  function paramRow(d) {
+    const row = document.createElement('div');
+    row.className = 'param';
+    row.dataset.path = d.path;
+    row.title = `${d.path}: ${d.doc}${d.unit ? ` (${d.unit})` : ''}\nexpected ${d.expected}; default ${d.default}` +
+      (notOnThePage[d.path] ? `\n(${notOnThePage[d.path]})` : '');
+    const label = document.createElement('label');
+    label.textContent = d.name.replace(/_/g, ' ');
+    const control = document.createElement('div');
+    control.className = 'control';
+    const err = document.createElement('div');
+    err.className = 'err';
+    row.append(label, control, err);
+    const input = (type, cls) => {
+      const i = document.createElement('input');
+      i.type = type;
+      if (cls) i.className = cls;
+      control.append(i);
+      return i;
+    };
+    const id = 'p-' + d.path.replace(/\./g, '-');
+    let show;
+    if (d.type === 'float' || d.type === 'int') {
+      const isInt = d.type === 'int';
+      // Wide ranges get a logarithmic (or cubic, from 0) slider.
+      const log = d.min > 0 && d.max / d.min >= 100;
+      const cubic = !log && d.min === 0 && d.max >= 100;
+      const toPos = (v) => {
+        const u = log ? Math.log(v / d.min) / Math.log(d.max / d.min) : (v - d.min) / (d.max - d.min);
+        return 1000 * (cubic ? Math.cbrt(Math.max(0, u)) : u);
+      };
+      const fromPos = (p) => {
+        const u = p / 1000;
+        const v = log ? d.min * Math.pow(d.max / d.min, u) : d.min + (d.max - d.min) * (cubic ? u * u * u : u);
+        return isInt ? Math.round(v) : v;
+      };
+      const slider = !(isInt && d.max - d.min > 5000);
+      let range;
+      if (slider) {
+        range = input('range');
+        range.min = 0;
+        range.max = 1000;
+        range.step = isInt && d.max - d.min <= 1000 && !log && !cubic ? 1000 / (d.max - d.min) : 1;
+      }
+      const num = input('number');
+      num.id = id;
+      num.step = isInt ? 1 : 'any';
+      num.min = d.min;
+      num.max = d.max;
+      if (range) {
+        range.addEventListener('input', () => {
+          const v = fromPos(+range.value);
+          num.value = isInt ? String(v) : fmt(v);
+          commit(d.path, num.value);
+        });
+      }
+      num.addEventListener('change', () => {
+        commit(d.path, num.value);
+        if (range && num.value !== '') range.value = toPos(+num.value);
+      });
+      show = (t) => {
+        num.value = t;
+        if (range) range.value = toPos(+t);
+      };
+    } else if (d.type === 'bool') {
+      const box = input('checkbox');
+      box.id = id;
+      box.addEventListener('change', () => commit(d.path, box.checked ? 'true' : 'false'));
+      show = (t) => (box.checked = t === 'true');
+    } else if (d.type === 'enum') {
+      const sel = document.createElement('select');
+      sel.id = id;
+      for (const c of d.choices) sel.append(option(c, c));
+      control.append(sel);
+      sel.addEventListener('change', () => commit(d.path, sel.value));
+      show = (t) => (sel.value = t);
+    } else if (d.type === 'color') {
+      // The picker shows the hue at unit brightness; values above 1 (radiances) keep their scale.
+      const pick = input('color');
+      const text = input('text');
+      text.id = id;
+      let k = 1;
+      const hex = (c) => '#' + c.map((x) => Math.round(Math.min(1, Math.max(0, x / k)) * 255).toString(16).padStart(2, '0')).join('');
+      pick.addEventListener('input', () => {
+        const c = [1, 3, 5].map((i) => (parseInt(pick.value.substr(i, 2), 16) / 255) * k);
+        text.value = c.map(fmt).join(',');
+        commit(d.path, text.value);
+      });
+      text.addEventListener('change', () => commit(d.path, text.value));
+      show = (t) => {
+        text.value = t;
+        const c = t.split(',').map(Number);
+        if (c.length === 3 && c.every(Number.isFinite)) {
+          k = Math.max(1, ...c);
+          pick.value = hex(c);
+        }
+      };
+    } else {  // vec3, curve: text as the CLI's --set takes it
+      const text = input('text');
+      text.id = id;
+      text.spellcheck = false;
+      text.addEventListener('change', () => commit(d.path, text.value));
+      show = (t) => (text.value = t);
+    }
+    label.htmlFor = id;
+    const unit = document.createElement('span');
+    unit.className = 'unit';
+    unit.textContent = d.unit;
+    control.append(unit);
+    controls.set(d.path, {
+      show,
+      error: (e) => {
+        err.textContent = e;
+        row.classList.toggle('bad', !!e);
+      },
+    });
+    return row;
+  }
+
+  // ---- buttons: pour, load, export, sensors ----
+  function wireButtons() {
+    $('pour').addEventListener('click', () => api.pour());
+    $('load').addEventListener('change', async (e) => {
+      const file = e.target.files[0];
+      e.target.value = '';  // the same file can be loaded again
+      if (!file) return;
+      page.loadText(await file.text(), file.name);
+    });
+    page.loadText = (text, name) => {
+      const r = JSON.parse(api.load(text, name));
+      if (r.error) {
+        say(r.error, true);  // nothing was applied
+        return r.error;
+      }
+      refreshValues();
+      say(`loaded ${r.kind} "${r.name}" from ${name}`);
+      return '';
+    };
+    $('export').addEventListener('click', () => {
+      const name = `${current.drink}-custom`;
+      const text = api.exportPreset(name);
+      page.lastExport = text;
+      const url = URL.createObjectURL(new Blob([text], { type: 'application/json' }));
+      const a = document.createElement('a');
+      a.href = url;
+      a.download = name + '.json';
+      document.body.append(a);
+      a.click();
+      a.remove();
+      setTimeout(() => URL.revokeObjectURL(url), 1000);
+      say(`exported ${name}.json`);
+    });
+    $('sensors').addEventListener('click', async () => {
+      try {
+        if (!window.DeviceMotionEvent && !window.DeviceOrientationEvent) throw new Error('this browser has no motion sensor events');
+        // iOS asks the user; both requests start within this click (the gesture it needs).
+        const asks = [window.DeviceMotionEvent, window.DeviceOrientationEvent]
+          .filter((E) => E && typeof E.requestPermission === 'function')
+          .map((E) => E.requestPermission());
+        for (const answer of await Promise.all(asks)) if (answer !== 'granted') throw new Error(`permission ${answer}`);
+        say(sensorsSeen ? 'motion sensors on' : 'motion sensors enabled; tilt the device (no readings yet)');
+      } catch (e) {
+        say('motion sensors: ' + (e.message || e), true);
+      }
+    });
+  }
+
+  // ---- input ----
+  // The rig: "mouse" or "touch" for gestures, "+gyro" once the device reports motion.
+  let gesture = matchMedia('(pointer: coarse)').matches && navigator.maxTouchPoints > 0 ? 'touch' : 'mouse';
+  let sensorsSeen = false;
+  function applyRig() {
+    const name = sensorsSeen ? gesture + '+gyro' : gesture;
+    const err = api.setInput(name);
+    if (err) say(err, true);
+  }
+
+  function wireInput() {
+    applyRig();
+    const local = (e) => {
+      const r = canvas.getBoundingClientRect();
+      return [e.clientX - r.left, e.clientY - r.top, r.width, r.height];
+    };
+    // Mouse (and pen) through pointer events; touch has its own events below.
+    let buttons = 0;
+    let fingers = 0;
+    const useGesture = (g) => {  // follows the pointer last used (hybrid laptops, tablets with mice)
+      if (g !== gesture && !buttons && !fingers) {
+        gesture = g;
+        applyRig();
+      }
+    };
+    canvas.addEventListener('pointerdown', (e) => {
+      if (e.pointerType === 'touch') return;
+      useGesture('mouse');
+      canvas.setPointerCapture(e.pointerId);
+      buttons |= 1 << e.button;
+      api.mouse(0, e.button, ...local(e), e.shiftKey ? 1 : 0);
+    });
+    canvas.addEventListener('pointermove', (e) => {
+      if (e.pointerType === 'touch' || !buttons) return;
+      api.mouse(1, 0, ...local(e), 0);
+    });
+    const up = (e) => {
+      if (e.pointerType === 'touch' || !(buttons & (1 << e.button))) return;
+      buttons &= ~(1 << e.button);
+      api.mouse(2, e.button, ...local(e), 0);
+    };
+    canvas.addEventListener('pointerup', up);
+    canvas.addEventListener('pointercancel', (e) => {
+      if (e.pointerType === 'touch') return;
+      for (const b of [0, 2]) if (buttons & (1 << b)) api.mouse(2, b, ...local(e), 0);
+      buttons = 0;
+    });
+    canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+
+    const touch = (kind) => (e) => {
+      e.preventDefault();
+      if (kind === 0) useGesture('touch');
+      fingers = e.touches.length;
+      if (kind === 3) {
+        api.touch(3, 0, 0, 0, 1, 1);
+        return;
+      }
+      for (const t of e.changedTouches) api.touch(kind, t.identifier, ...local(t));
+    };
+    const opts = { passive: false };
+    canvas.addEventListener('touchstart', touch(0), opts);
+    canvas.addEventListener('touchmove', touch(1), opts);
+    canvas.addEventListener('touchend', touch(2), opts);
+    canvas.addEventListener('touchcancel', touch(3), opts);
+
+    // Motion sensors. devicemotion carries what the driver wants (gyro, accel with gravity);
+    // where only deviceorientation arrives, both are derived from the angles.
+    const D2R = Math.PI / 180;
+    let lastMotion = -1e9;
+    const sensorsOn = () => {
+      if (!sensorsSeen) {
+        sensorsSeen = true;
+        applyRig();
+      }
+    };
+    window.addEventListener('devicemotion', (e) => {
+      const a = e.accelerationIncludingGravity, r = e.rotationRate;
+      if (!a || a.x == null || a.y == null || a.z == null) return;
+      lastMotion = e.timeStamp;
+      sensorsOn();
+      const rate = (v) => (v == null ? 0 : v * D2R);
+      api.motion(e.timeStamp / 1000, rate(r && r.beta), rate(r && r.gamma), rate(r && r.alpha), a.x, a.y, a.z);
+    });
+    let prev = null;
+    window.addEventListener('deviceorientation', (e) => {
+      if (e.beta == null || e.gamma == null) return;
+      if (e.timeStamp - lastMotion < 500) return;  // devicemotion is doing it
+      sensorsOn();
+      const R = rotation(e.alpha || 0, e.beta, e.gamma);
+      const t = e.timeStamp / 1000;
+      let w = [0, 0, 0];
+      if (prev && t > prev.t && t - prev.t < 0.5) {
+        // Body rates from R_prev^T R (the skew part over dt).
+        const d = mul(transpose(prev.R), R), dt = t - prev.t;
+        w = [(d[7] - d[5]) / (2 * dt), (d[2] - d[6]) / (2 * dt), (d[3] - d[1]) / (2 * dt)];
+      }
+      prev = { R, t };
+      // Gravity's reaction in the device frame: R^T (0, 0, g).
+      const g = 9.81, b = e.beta * D2R, c = e.gamma * D2R;
+      api.motion(t, w[0], w[1], w[2], -g * Math.sin(c) * Math.cos(b), g * Math.sin(b), g * Math.cos(b) * Math.cos(c));
+    });
+    const orientation = () => {
+      const a = screen.orientation ? screen.orientation.angle : window.orientation || 0;
+      api.screen(a | 0);
+    };
+    orientation();
+    if (screen.orientation) screen.orientation.addEventListener('change', orientation);
+    window.addEventListener('orientationchange', orientation);
+  }
+
+  // Row-major 3x3 matrices. W3C device orientation: R = Rz(alpha) Rx(beta) Ry(gamma).
+  function rotation(alpha, beta, gamma) {
+    const [a, b, c] = [alpha, beta, gamma].map((x) => (x * Math.PI) / 180);
+    const rz = [Math.cos(a), -Math.sin(a), 0, Math.sin(a), Math.cos(a), 0, 0, 0, 1];
+    const rx = [1, 0, 0, 0, Math.cos(b), -Math.sin(b), 0, Math.sin(b), Math.cos(b)];
+    const ry = [Math.cos(c), 0, Math.sin(c), 0, 1, 0, -Math.sin(c), 0, Math.cos(c)];
+    return mul(mul(rz, rx), ry);
+  }
+  function mul(p, q) {
+    const r = new Array(9).fill(0);
+    for (let i = 0; i < 3; ++i)
+      for (let j = 0; j < 3; ++j) for (let k = 0; k < 3; ++k) r[3 * i + j] += p[3 * i + k] * q[3 * k + j];
+    return r;
+  }
+  function transpose(p) {
+    return [p[0], p[3], p[6], p[1], p[4], p[7], p[2], p[5], p[8]];
+  }
+})();

@@ -1,0 +1,8 @@
+// The stb implementations core/image.cpp links against. Natively they come from Debian's
+// libstb; under Emscripten there is no such library, so the (Debian) headers are compiled
+// here. Only PNG is needed.
+#define STBI_ONLY_PNG
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb_image.h>
+#include <stb_image_write.h>

@@ -1,0 +1,98 @@
+// Shared pieces of the browser tests: Debian's chromium through playwright-core (never a
+// downloaded browser), the static server, pictures read back from the canvas.
+import { chromium } from 'playwright-core';
+import fs from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { serve, defaultRoot } from './server.mjs';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+export const artifacts = path.resolve(here, '../../out/web-tests');
+
+// Software WebGL (SwiftShader through ANGLE): no GPU or display needed.
+export const chromiumFlags = [
+  '--headless',
+  '--no-sandbox',
+  '--use-gl=angle',
+  '--use-angle=swiftshader',
+  '--enable-unsafe-swiftshader',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
+  '--no-first-run',
+  '--disable-quic',
+];
+
+export async function start() {
+  if (!fs.existsSync(path.join(defaultRoot, 'draught.wasm'))) throw new Error(`${defaultRoot}/draught.wasm is missing: run scripts/build-web.sh`);
+  fs.mkdirSync(artifacts, { recursive: true });
+  const server = await serve(0);
+  const executablePath = process.env.CHROMIUM || '/usr/bin/chromium';
+  const browser = await chromium.launch({ executablePath, args: chromiumFlags, headless: true });
+  const base = `http://127.0.0.1:${server.address().port}/`;
+  return {
+    browser,
+    base,
+    async close() {
+      await browser.close();
+      await new Promise((r) => server.close(r));
+    },
+  };
+}
+
+// A page at a small fixed size and render scale, its drawing buffer kept for read-back.
+export const testQuery = 'size=160x120&scale=1&preserve';
+
+export async function openPage(env, { query = testQuery, context = {} } = {}) {
+  const ctx = await env.browser.newContext({ viewport: { width: 720, height: 560 }, acceptDownloads: true, ...context });
+  const page = await ctx.newPage();
+  const log = [];
+  page.on('console', (m) => log.push(`${m.type()}: ${m.text()}`));
+  page.on('pageerror', (e) => log.push(`pageerror: ${e.message}`));
+  await page.goto(env.base + 'index.html?' + query);
+  await page.waitForFunction(() => window.draught && (window.draught.ready || window.draught.error), null, { timeout: 30000 });
+  const error = await page.evaluate(() => window.draught.error);
+  if (error) throw new Error('page did not start: ' + error + '\n' + log.join('\n'));
+  await waitFrames(page, 2);
+  page.draughtLog = log;
+  return page;
+}
+
+export async function waitFrames(page, n, timeout = 30000) {
+  const f0 = await page.evaluate(() => window.draught.frames());
+  await page.waitForFunction((f) => window.draught.frames() >= f, f0 + n, { timeout, polling: 20 });
+}
+
+// The canvas as RGBA bytes (needs ?preserve), with its size.
+export async function snapshot(page) {
+  return page.evaluate(() => {
+    const c = document.getElementById('canvas');
+    const o = document.createElement('canvas');
+    o.width = c.width;
+    o.height = c.height;
+    const g = o.getContext('2d');
+    g.drawImage(c, 0, 0);
+    return { width: o.width, height: o.height, data: Array.from(g.getImageData(0, 0, o.width, o.height).data) };
+  });
+}
+
+// Mean absolute difference per colour channel, 0..255.
+export function difference(a, b) {
+  if (a.width !== b.width || a.height !== b.height) throw new Error(`sizes differ: ${a.width}x${a.height} vs ${b.width}x${b.height}`);
+  let sum = 0;
+  for (let i = 0; i < a.data.length; i += 4)
+    for (let c = 0; c < 3; ++c) sum += Math.abs(a.data[i + c] - b.data[i + c]);
+  return sum / ((a.data.length / 4) * 3);
+}
+
+// Mean brightness, 0..255, and whether anything but one flat colour was drawn.
+export function stats(img) {
+  let sum = 0, min = 255, max = 0;
+  for (let i = 0; i < img.data.length; i += 4) {
+    const v = (img.data[i] + img.data[i + 1] + img.data[i + 2]) / 3;
+    sum += v;
+    min = Math.min(min, v);
+    max = Math.max(max, v);
+  }
+  return { mean: sum / (img.data.length / 4), min, max };
+}

@@ -1,0 +1,314 @@
+// Browser tests of the web page (out/web) in Debian's chromium with software WebGL2. Plain
+// node + assert; ends with "web tests: N passed, M failed" and a non-zero exit on failure.
+// `node run.mjs [substring]` runs only the tests whose name contains it.
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { start, openPage, waitFrames, snapshot, difference, stats, artifacts } from './lib.mjs';
+
+const tests = [];
+const test = (name, fn) => tests.push({ name, fn });
+
+let env;        // browser + server
+let desk;       // the desktop page most tests share (mouse, no touch)
+const desktop = async () => (desk ??= await openPage(env));
+
+// Pixels move a little on their own (rising bubbles, the foam's big bubbles): a change must
+// stand well above that.
+async function noise(page) {
+  const a = await snapshot(page);
+  await waitFrames(page, 3);
+  return { before: a, noise: difference(a, await snapshot(page)) };
+}
+const changed = (d, n) => Math.max(2.0, 4 * n);
+const notes = [];  // measured differences, printed with the test's result
+const note = (text) => notes.push(text);
+
+const values = (page) => page.evaluate(() => JSON.parse(window.draught.api.values()));
+const status = (page) => page.evaluate(() => window.draught.status());
+const message = (page) => page.evaluate(() => ({ text: document.getElementById('message').textContent,
+  error: document.getElementById('message').classList.contains('error') }));
+async function canvasCentre(page) {
+  const r = await page.evaluate(() => {
+    const b = document.getElementById('canvas').getBoundingClientRect();
+    return { x: b.left, y: b.top, w: b.width, h: b.height };
+  });
+  return { x: r.x + r.w / 2, y: r.y + r.h / 2, ...r };
+}
+
+// ---- the tests ----
+
+test('the page loads, builds its pickers and draws without errors', async () => {
+  const page = await desktop();
+  assert.equal(await page.title(), 'draught');
+  const drinks = await page.$$eval('#drink option', (o) => o.map((x) => x.value));
+  const glasses = await page.$$eval('#glass option', (o) => o.map((x) => x.value));
+  for (const d of ['lager', 'stout', 'red-wine']) assert.ok(drinks.includes(d), `drink ${d} in ${drinks}`);
+  for (const g of ['', 'pint', 'nonic', 'wine']) assert.ok(glasses.includes(g), `glass ${g} in ${glasses}`);
+  const bad = page.draughtLog.filter((l) => l.startsWith('error') || l.startsWith('pageerror'));
+  assert.deepEqual(bad, []);
+  await page.screenshot({ path: path.join(artifacts, 'page.png') });
+});
+
+test('a WebGL2 context exists', async () => {
+  const page = await desktop();
+  const gl = await page.evaluate(() => {
+    const g = document.getElementById('canvas').getContext('webgl2');  // the module's own context
+    return g && { webgl2: g instanceof WebGL2RenderingContext, version: g.getParameter(g.VERSION) };
+  });
+  assert.ok(gl && gl.webgl2, 'canvas has a WebGL2 context');
+  assert.match(gl.version, /WebGL 2\.0/);
+});
+
+test('frames are drawn and the frame counter increases', async () => {
+  const page = await desktop();
+  const f0 = await page.evaluate(() => window.draught.frames());
+  await waitFrames(page, 3);
+  assert.ok((await page.evaluate(() => window.draught.frames())) >= f0 + 3);
+  const img = await snapshot(page);
+  assert.equal(img.width, 160);
+  assert.equal(img.height, 120);
+  const s = stats(img);
+  assert.ok(s.max - s.min > 60, `a picture, not a flat colour (min ${s.min}, max ${s.max})`);
+});
+
+test('the parameter panel comes from the table; bad values are refused with a message', async () => {
+  const page = await desktop();
+  const table = await page.evaluate(() => JSON.parse(window.draught.api.table()));
+  assert.ok(table.length > 50);
+  assert.equal(await page.locator('.param').count(), table.length);
+  const fill = table.find((d) => d.path === 'liquid.fill');
+  assert.ok((await page.getAttribute('.param[data-path="liquid.fill"]', 'title')).includes(fill.doc));
+  assert.ok((await page.locator('details').count()) >= 8, 'grouped');
+  assert.equal(await page.locator('.param[data-path="bubbles.etched_base"] input[type=checkbox]').count(), 1);
+  assert.equal(await page.locator('.param[data-path="liquid.haze_color"] input[type=color]').count(), 1);
+  assert.equal(await page.locator('.param[data-path="env.mode"] select').count(), 1);
+  assert.equal(await page.locator('.param[data-path="liquid.srm"] input[type=range]').count(), 1);
+
+  const before = (await values(page))['liquid.fill'];
+  await page.fill('#p-liquid-fill', '7');
+  await page.dispatchEvent('#p-liquid-fill', 'change');
+  await page.waitForFunction(() => document.getElementById('message').classList.contains('error'));
+  const m = await message(page);
+  assert.match(m.text, /^field 'liquid\.fill': expected .*, got "7"$/);
+  assert.equal((await values(page))['liquid.fill'], before, 'the bad value was not applied');
+  assert.match(await page.textContent('.param[data-path="liquid.fill"] .err'), /expected/);
+
+  await page.fill('#p-liquid-fill', '0.5');
+  await page.dispatchEvent('#p-liquid-fill', 'change');
+  await page.waitForFunction(() => JSON.parse(window.draught.api.values())['liquid.fill'] === '0.5');
+  assert.equal(await page.textContent('.param[data-path="liquid.fill"] .err'), '');
+});
+
+test('switching preset changes the picture', async () => {
+  const page = await desktop();
+  await page.selectOption('#drink', 'lager');
+  await waitFrames(page, 3);
+  const { before, noise: n } = await noise(page);
+  await page.selectOption('#drink', 'stout');
+  await waitFrames(page, 3);
+  const stout = await snapshot(page);
+  const d = difference(before, stout);
+  note(`lager->stout ${d.toFixed(1)}, noise ${n.toFixed(2)}`);
+  assert.ok(d > changed(d, n) && d > 6, `lager -> stout: difference ${d.toFixed(2)} (noise ${n.toFixed(2)})`);
+  assert.equal((await status(page)).drink, 'stout');
+  assert.equal((await values(page))['glass.ior'] !== undefined, true);
+  await page.selectOption('#glass', 'wine');
+  await waitFrames(page, 3);
+  const d2 = difference(stout, await snapshot(page));
+  note(`pint->wine ${d2.toFixed(1)}`);
+  assert.ok(d2 > changed(d2, n), `pint -> wine glass: difference ${d2.toFixed(2)}`);
+  await page.screenshot({ path: path.join(artifacts, 'stout-in-wine-glass.png') });
+  await page.selectOption('#glass', '');
+  await page.selectOption('#drink', 'lager');
+  await waitFrames(page, 3);
+});
+
+test('a mouse drag tilts the glass', async () => {
+  const page = await desktop();
+  const { before, noise: n } = await noise(page);
+  const c = await canvasCentre(page);
+  await page.mouse.move(c.x, c.y);
+  await page.mouse.down();
+  await page.mouse.move(c.x + 30, c.y, { steps: 4 });
+  await waitFrames(page, 6);
+  const tilted = await snapshot(page);
+  await page.mouse.up();
+  const d = difference(before, tilted);
+  note(`drag ${d.toFixed(1)}, noise ${n.toFixed(2)}`);
+  assert.ok(d > changed(d, n), `difference ${d.toFixed(2)} (noise ${n.toFixed(2)})`);
+  await waitFrames(page, 12);  // back upright
+});
+
+test('a broken preset file shows the error and keeps the last good state', async () => {
+  const page = await desktop();
+  const v0 = await values(page);
+  const { before, noise: n } = await noise(page);
+  const broken = '{ "draught_preset": 1, "kind": "drink", "name": "bad",\n  "params": { "liquid": { "srm": 12, "fill": 7 } } }';
+  await page.setInputFiles('#load', { name: 'broken.json', mimeType: 'application/json', buffer: Buffer.from(broken) });
+  await page.waitForFunction(() => /broken\.json/.test(document.getElementById('message').textContent));
+  let m = await message(page);
+  assert.ok(m.error, 'shown as an error');
+  assert.match(m.text, /broken\.json/);
+  assert.match(m.text, /liquid\.fill/);
+  assert.match(m.text, /expected/);
+  assert.deepEqual(await values(page), v0, 'nothing applied (liquid.srm is unchanged too)');
+
+  await page.setInputFiles('#load', { name: 'syntax.json', mimeType: 'application/json', buffer: Buffer.from('{ "kind": "drink", ') });
+  await page.waitForFunction(() => /syntax\.json/.test(document.getElementById('message').textContent));
+  m = await message(page);
+  assert.ok(m.error);
+  assert.deepEqual(await values(page), v0);
+  await waitFrames(page, 3);
+  const d = difference(before, await snapshot(page));
+  note(`${d.toFixed(2)}, noise ${n.toFixed(2)}`);
+  assert.ok(d < Math.max(2, 4 * n), `picture kept: difference ${d.toFixed(2)} (noise ${n.toFixed(2)})`);
+
+  const good = JSON.stringify({ draught_preset: 1, kind: 'drink', name: 'dark', params: { liquid: { srm: 40 } } });
+  await page.setInputFiles('#load', { name: 'dark.json', mimeType: 'application/json', buffer: Buffer.from(good) });
+  await page.waitForFunction(() => /loaded drink "dark"/.test(document.getElementById('message').textContent));
+  assert.equal((await values(page))['liquid.srm'], '40');
+});
+
+test('export downloads the current state as a preset that loads back', async () => {
+  const page = await desktop();
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#export')]);
+  assert.match(download.suggestedFilename(), /\.json$/);
+  const text = fs.readFileSync(await download.path(), 'utf8');
+  const j = JSON.parse(text);
+  assert.equal(j.draught_preset, 1);
+  assert.equal(j.kind, 'scene');
+  assert.equal(j.params.liquid.srm, 40);
+  assert.equal(await page.evaluate((t) => window.draught.loadText(t, 'exported.json'), text), '');
+  await page.selectOption('#drink', 'lager');
+});
+
+test('devicemotion tilts the liquid (rig picks up the gyro)', async () => {
+  const page = await desktop();
+  await page.selectOption('#drink', 'lager');
+  await waitFrames(page, 3);
+  assert.equal((await status(page)).input, 'mouse');
+  const { before, noise: n } = await noise(page);
+  // The device rolled 35 degrees (gravity's reaction no longer along the screen's y).
+  await page.evaluate(async () => {
+    const a = (35 * Math.PI) / 180, g = 9.81;
+    for (let i = 0; i < 20; ++i) {
+      window.dispatchEvent(new DeviceMotionEvent('devicemotion', {
+        accelerationIncludingGravity: { x: g * Math.sin(a), y: g * Math.cos(a), z: 0 },
+        rotationRate: { alpha: 0, beta: 0, gamma: 0 }, interval: 16 }));
+      await new Promise((r) => setTimeout(r, 16));
+    }
+  });
+  await waitFrames(page, 6);
+  assert.equal((await status(page)).input, 'mouse+gyro');
+  const d = difference(before, await snapshot(page));
+  note(`${d.toFixed(2)}, noise ${n.toFixed(2)}`);
+  assert.ok(d > changed(d, n), `difference ${d.toFixed(2)} (noise ${n.toFixed(2)})`);
+  await page.screenshot({ path: path.join(artifacts, 'device-motion.png') });
+});
+
+test('adaptive quality lowers the render scale to hold the frame budget and says so', async () => {
+  const page = await desktop();
+  await page.evaluate(() => window.draught.api.quality(0, 5));  // adaptive, 5 ms: SwiftShader cannot
+  await page.waitForFunction(() => window.draught.status().scale < 1, null, { timeout: 30000, polling: 100 });
+  await page.waitForFunction(() => /quality \d+ %/.test(document.getElementById('quality').textContent) &&
+                                   !/quality 100 %/.test(document.getElementById('quality').textContent),
+                             null, { timeout: 5000 });
+  const s = await status(page);
+  assert.ok(s.width < 160 && s.height < 120, `backing store ${s.width}x${s.height}`);
+  await page.screenshot({ path: path.join(artifacts, 'adaptive.png') });
+  // The pages below get the (single) software GPU to themselves.
+  await page.context().close();
+  desk = null;
+});
+
+test('deviceorientation tilts the liquid', async () => {
+  const page = await openPage(env);
+  try {
+    const { before, noise: n } = await noise(page);
+    await page.evaluate(async () => {
+      // Held upright (beta 90), then rolled 35 degrees to the side about the screen's normal:
+      // in W3C angles that ends at alpha 90, beta 55, gamma -90 (gravity along the device's
+      // (sin 35, cos 35, 0), the screen still facing the same way).
+      for (let i = 0; i < 24; ++i) {
+        const u = Math.min(1, Math.max(0, (i - 4) / 12));
+        window.dispatchEvent(new DeviceOrientationEvent('deviceorientation',
+          { alpha: 90 * u, beta: 90 - 35 * u, gamma: -89.9 * u, absolute: false }));
+        await new Promise((r) => setTimeout(r, 20));
+      }
+    });
+    await waitFrames(page, 6);
+    assert.equal((await status(page)).input, 'mouse+gyro');
+    const d = difference(before, await snapshot(page));
+    note(`${d.toFixed(2)}, noise ${n.toFixed(2)}`);
+    assert.ok(d > changed(d, n), `difference ${d.toFixed(2)} (noise ${n.toFixed(2)})`);
+    await page.screenshot({ path: path.join(artifacts, 'device-orientation.png') });
+  } finally {
+    await page.context().close();
+  }
+});
+
+test('touch: one finger tilts, two fingers rotate and move the glass', async () => {
+  const page = await openPage(env, { context: { hasTouch: true } });
+  try {
+    const cdp = await page.context().newCDPSession(page);
+    const touch = (type, points) => cdp.send('Input.dispatchTouchEvent', { type, touchPoints: points.map(([x, y], id) => ({ x, y, id })) });
+    const c = await canvasCentre(page);
+    const { before, noise: n } = await noise(page);
+    await touch('touchStart', [[c.x, c.y]]);
+    for (let i = 1; i <= 4; ++i) await touch('touchMove', [[c.x + 8 * i, c.y]]);
+    await waitFrames(page, 6);
+    assert.equal((await status(page)).input, 'touch');
+    const d1 = difference(before, await snapshot(page));
+    note(`one finger ${d1.toFixed(1)}, noise ${n.toFixed(2)}`);
+    await page.screenshot({ path: path.join(artifacts, 'touch-tilt.png') });
+    assert.ok(d1 > changed(d1, n), `one finger: difference ${d1.toFixed(2)} (noise ${n.toFixed(2)})`);
+    await touch('touchEnd', []);
+    await waitFrames(page, 12);  // upright again
+
+    const rest = await snapshot(page);
+    const pair = (angle, shift) => {
+      const r = 25, s = Math.sin(angle), co = Math.cos(angle);
+      return [[c.x + shift - r * co, c.y - r * s], [c.x + shift + r * co, c.y + r * s]];
+    };
+    await touch('touchStart', pair(0, 0));
+    for (let i = 1; i <= 4; ++i) await touch('touchMove', pair((i * Math.PI) / 8, i * 5));
+    await waitFrames(page, 6);
+    const d2 = difference(rest, await snapshot(page));
+    note(`two fingers ${d2.toFixed(1)}`);
+    assert.ok(d2 > changed(d2, n), `two fingers: difference ${d2.toFixed(2)} (noise ${n.toFixed(2)})`);
+    await touch('touchEnd', []);
+  } finally {
+    await page.context().close();
+  }
+});
+
+// ---- runner ----
+const only = process.argv[2];
+const t0 = Date.now();
+let passed = 0, failed = 0;
+try {
+  env = await start();
+  for (const t of tests) {
+    if (only && !t.name.includes(only)) continue;
+    const t1 = Date.now();
+    notes.length = 0;
+    try {
+      await t.fn();
+      ++passed;
+      console.log(`ok   ${t.name} (${((Date.now() - t1) / 1000).toFixed(1)} s${notes.length ? '; ' + notes.join(', ') : ''})`);
+    } catch (e) {
+      ++failed;
+      console.log(`FAIL ${t.name} (${((Date.now() - t1) / 1000).toFixed(1)} s)\n     ${String(e && e.stack || e).split('\n').slice(0, 6).join('\n     ')}`);
+      if (desk && desk.draughtLog.length) console.log('     page log: ' + desk.draughtLog.slice(-5).join(' | '));
+    }
+  }
+} catch (e) {
+  ++failed;
+  console.log(`FAIL setting up the browser: ${e && e.stack || e}`);
+} finally {
+  if (env) await env.close();
+}
+console.log(`${((Date.now() - t0) / 1000).toFixed(1)} s; pictures in ${artifacts}`);
+console.log(`web tests: ${passed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);
