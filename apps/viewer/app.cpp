@@ -189,6 +189,13 @@ void Viewer::key(const SDL_Keysym& k, bool repeat) {
       view_ = (view_ + 1) % int(std::size(kViews));  // the overlay names it
       note_.clear();
       break;
+    case SDLK_c: {  // cross-section on/off (an undoable change, like a panel edit)
+      Params p = editor_.params();
+      p.clip.enabled = !p.clip.enabled;
+      editor_.change(p);
+      note_ = p.clip.enabled ? "cross-section on (clip group in the panel)" : "cross-section off";
+      break;
+    }
     default: break;
   }
 }
@@ -360,7 +367,7 @@ void Viewer::draw_overlay(int width, int height) {
     if (view_ != 0) ImGui::Text("debug view: %s", kViewNames[view_]);
     const ImVec4 grey(0.75f, 0.75f, 0.75f, 1.0f);
     if (!note_.empty()) ImGui::TextColored(grey, "%s", note_.c_str());
-    ImGui::TextColored(grey, "F1 panel  R reset  P pour  S sip  D debug\nCtrl+Z undo  wheel zoom  Esc quit");
+    ImGui::TextColored(grey, "F1 panel  R reset  P pour  S sip  D debug  C cut\nCtrl+Z undo  wheel zoom  Esc quit");
   }
   ImGui::End();
 }
