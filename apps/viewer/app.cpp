@@ -34,6 +34,15 @@ namespace {
 
 using gpu::DebugView;
 
+// Quality tiers for slow machines: a lower internal resolution (scaled up when shown)
+// and fewer surface interactions per path.
+struct Tier {
+  const char* name;
+  float scale;
+  int max_events;
+};
+constexpr Tier kTiers[] = {{"low", 0.5f, 6}, {"medium", 0.75f, 9}, {"high", 1.0f, 32}};
+
 // Screenshot mode steps the clock by a fixed 1/30 s per frame, so the picture is the same
 // on a fast GPU and on llvmpipe.
 constexpr double kScreenshotFps = 30;
@@ -67,7 +76,8 @@ class Viewer {
         window_("draught", o.width, o.height),
         rig_(make_input_driver(window_.has_game_controllers() ? "mouse+gamepad" : "mouse")),
         preset_state_(make_preset_panel_state()),
-        show_panel_(!o.hide_panel) {
+        show_panel_(!o.hide_panel),
+        tier_(o.quality) {
     // With the controller subsystem up, the gamepad part is always there: it holds the glass
     // upright until a controller reports motion, so one plugged in later just works.
     if (rig_.gamepad) gamepad_ = std::make_unique<SdlGamepadInput>(*rig_.gamepad);
@@ -107,6 +117,7 @@ class Viewer {
   bool show_panel_ = true, quit_ = false;
   bool held_[2] = {false, false};  // mouse buttons whose press went to the rig
   int view_ = 0;                    // index into kViews
+  int tier_ = 2;                    // quality: index into kTiers (high)
   double now_ = 0;                  // the app's clock, seconds: events, input samples, simulation
   double timeline_start_ = 0, last_wheel_ = -1e9;
   double sip_start_ = -1, sip_until_ = -1;  // the sip in progress, on the app's clock
@@ -187,6 +198,10 @@ void Viewer::key(const SDL_Keysym& k, bool repeat) {
       break;
     case SDLK_d:
       view_ = (view_ + 1) % int(std::size(kViews));  // the overlay names it
+      note_.clear();
+      break;
+    case SDLK_q:
+      tier_ = (tier_ + 2) % int(std::size(kTiers));  // high -> medium -> low -> high
       note_.clear();
       break;
     case SDLK_c: {  // cross-section on/off (an undoable change, like a panel edit)
@@ -311,12 +326,22 @@ void Viewer::draw_panel() {
 }
 
 void Viewer::draw_scene(int width, int height) {
-  const FrameState f = sim_->frame();
+  FrameState f = sim_->frame();
+  const Tier& tier = kTiers[tier_];
+  f.params.render.max_events = std::min(f.params.render.max_events, tier.max_events);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, width, height);
   glClearColor(0, 0, 0, 1);
   glClear(GL_COLOR_BUFFER_BIT);
   const DebugView view = kViews[view_];
+  if (view == DebugView::None && tier.scale < 1.0f) {
+    const int sw = std::max(1, int(width * tier.scale)), sh = std::max(1, int(height * tier.scale));
+    gpu::RenderTarget target(sw, sh, false);  // bound for drawing and reading
+    renderer_.draw(f, sw, sh);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, sw, sh, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    return;  // the target unbinds itself
+  }
   if (view == DebugView::None) {
     renderer_.draw(f, width, height);
     return;
@@ -365,9 +390,12 @@ void Viewer::draw_overlay(int width, int height) {
       ImGui::Text("input: %s%s", rig_.driver->name(), gamepad_ && gamepad_->active() >= 0 ? " (controller moving)" : "");
     ImGui::Text("%.0f %% full, %.1f %% spilled", 100.0 * sim_->fraction(), 100.0 * sim_->spilled());
     if (view_ != 0) ImGui::Text("debug view: %s", kViewNames[view_]);
+    const Tier& tier = kTiers[tier_];
+    ImGui::Text("quality %s (%.0f %% resolution, %d events)", tier.name, 100.0 * tier.scale,
+                std::min(editor_.params().render.max_events, tier.max_events));
     const ImVec4 grey(0.75f, 0.75f, 0.75f, 1.0f);
     if (!note_.empty()) ImGui::TextColored(grey, "%s", note_.c_str());
-    ImGui::TextColored(grey, "F1 panel  R reset  P pour  S sip  D debug  C cut\nCtrl+Z undo  wheel zoom  Esc quit");
+    ImGui::TextColored(grey, "F1 panel  R reset  P pour  S sip  D debug  C cut  Q quality\nCtrl+Z undo  wheel zoom  Esc quit");
   }
   ImGui::End();
 }
