@@ -1,5 +1,7 @@
 #include "core/bubbles.hpp"
 
+#include "core/hash.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -24,18 +26,6 @@ constexpr double kMaxRadius = 1.5e-3; // m
 constexpr double kStokes = 2.0 * 9.81 / (9.0 * 1e-6);  // 1/(m s)
 constexpr double kSpeedCap = 0.25, kMinSpeed = 0.01, kMaxSpeed = 0.30;  // m/s
 constexpr double kMinWobbleHz = 2.0, kMaxWobbleHz = 5.0;
-
-// A counter-based splitmix64 mix of (seed, site, emission, channel) into [0, 1).
-double hash01(std::uint64_t seed, std::uint64_t site, std::uint64_t n, std::uint64_t k) {
-  std::uint64_t z = seed * 0x9E3779B97F4A7C15ull;
-  for (std::uint64_t v : {site, n, k}) {
-    z += v + 0x9E3779B97F4A7C15ull;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-  }
-  return double(z >> 11) * 0x1.0p-53;
-}
 
 double speed(double r) {
   const double stokes = kStokes * r * r;

@@ -1,5 +1,7 @@
 #include "core/foam.hpp"
 
+#include "core/hash.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -8,16 +10,6 @@
 namespace draught {
 
 namespace {
-// splitmix64: a deterministic stream of numbers from (seed, slot, generation).
-double hash01(std::uint64_t a, std::uint64_t b, std::uint64_t c, std::uint64_t k) {
-  std::uint64_t z = a * 0x9E3779B97F4A7C15ull ^ (b + 0x632BE59BD9B4E019ull) * 0xBF58476D1CE4E5B9ull ^
-                    (c + 1) * 0x94D049BB133111EBull ^ (k + 7) * 0xD6E8FEB86659FD93ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return double(z >> 11) * 0x1.0p-53;
-}
-
 constexpr double kLacingStep = 0.008;  // the level falls this far between two rings
 }  // namespace
 

@@ -93,19 +93,24 @@ void Simulation::update_surface() {
   surface_.offset = fraction_ > kEmpty ? std::min(table_->offset_at(tilt_, fraction_), rim_offset(vessel_, tilt_)) : -1.0;
   // Waves stay below the rim now, not only from the next step on (a refill, a spill).
   // Wave shapes reach at most 1 (ring) and 1.5625 (cross) anywhere on the surface.
-  const double headroom = std::max(rim_offset(vessel_, tilt_) - surface_.offset, 0.0);
+  const double room = headroom();
   const double peak = std::abs(slosh_.ring) + 1.5625 * (std::abs(slosh_.cross.x) + std::abs(slosh_.cross.y));
-  if (peak > 0.9 * headroom) {
-    const double k = peak > 0 ? 0.9 * headroom / peak : 0.0;
+  if (peak > 0.9 * room) {
+    const double k = peak > 0 ? 0.9 * room / peak : 0.0;
     slosh_.ring *= k, slosh_.ring_rate *= k, slosh_.cross *= k, slosh_.cross_rate *= k;
   }
   // Where the surface crosses the axis: its radius and depth set the slosh frequency.
-  const double axis = n.y > 0.2 ? surface_.offset / n.y : vessel_.base + 0.5 * (vessel_.height - vessel_.base);
-  const double level = std::clamp(axis, vessel_.base + 1e-4, vessel_.height);
-  surface_.waves.radius = std::max(vessel_.inner_radius(level), 1e-3);
+  surface_.waves.radius = std::max(vessel_.inner_radius(axis_level()), 1e-3);
   surface_.waves.ring = slosh_.ring;
   surface_.waves.cross = slosh_.cross;
 }
+
+double Simulation::axis_level() const {
+  const double axis = surface_.n.y > 0.2 ? surface_.offset / surface_.n.y : vessel_.height;
+  return std::clamp(axis, vessel_.base + 1e-4, vessel_.height);
+}
+
+double Simulation::headroom() const { return std::max(rim_offset(vessel_, tilt_) - surface_.offset, 0.0); }
 
 SloshEnvironment Simulation::environment(const glm::dvec3& accel, double dt) const {
   SloshEnvironment e;
@@ -117,11 +122,9 @@ SloshEnvironment Simulation::environment(const glm::dvec3& accel, double dt) con
   e.level_slope = level;
   e.level_rate = first_step_ ? glm::dvec2(0.0) : (level - level_) / dt;
   e.radius = surface_.waves.radius;
-  const double axis = surface_.n.y > 0.2 ? surface_.offset / surface_.n.y : vessel_.height;
-  e.depth = std::max(axis - vessel_.base, 1e-4);
+  e.depth = axis_level() - vessel_.base;
   // Waves stay below the rim: at most part of the headroom between surface and rim.
-  const double headroom = std::max(rim_offset(vessel_, tilt_) - surface_.offset, 0.0);
-  e.max_wave = std::min(0.4 * headroom, 0.25 * e.radius);
+  e.max_wave = std::min(0.4 * headroom(), 0.25 * e.radius);
   return e;
 }
 
@@ -130,8 +133,7 @@ void Simulation::step(const MotionSample& raw, double drink_rate) {
   const double dt = kStep;
   time_ += dt;
   // Acceleration of the liquid's middle: the glass's own plus what its rotation adds there.
-  const double axis = surface_.n.y > 0.2 ? surface_.offset / surface_.n.y : vessel_.height;
-  const double centre = 0.5 * (vessel_.base + std::clamp(axis, vessel_.base, vessel_.height));
+  const double centre = 0.5 * (vessel_.base + axis_level());
   const glm::dvec3 r = m.pose.orientation * glm::dvec3(0, centre, 0);
   const glm::dvec3 w = m.angular_velocity;
   const glm::dvec3 alpha =

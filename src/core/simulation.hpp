@@ -54,6 +54,10 @@ class Simulation {
   void rebuild_glass();
   void rebuild_bubbles();
   void update_surface();
+  // Where the surface plane crosses the glass's axis (the rim height for a surface
+  // nearly along the axis), and how far it is below the lowest rim point.
+  double axis_level() const;
+  double headroom() const;
   SloshEnvironment environment(const glm::dvec3& centre_accel, double dt) const;
 
   Params params_;

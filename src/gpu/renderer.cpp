@@ -70,8 +70,7 @@ FrameUniforms pack_uniforms(const FrameState& f, int width, int height, DebugVie
                          n * (fo.thickness_at(b.xz.x, b.xz.y, f.liquid.waves.radius) - 0.3 * b.radius);
     u.bubbles[i] = {glm::vec3(c), b.popped ? -b.radius : b.radius};
   }
-  const float clip_len = glm::length(p.clip.normal);
-  u.clip = p.clip.enabled && clip_len > 1e-4f ? glm::vec4(p.clip.normal / clip_len, p.clip.offset) : glm::vec4(0, 0, 0, 1);
+  u.clip = glm::vec4(scene_geometry(f).clip);  // normalised there; (0, 0, 0, 1) when off
   for (int k = 0; k <= Vessel::kSegments; ++k) u.knots[k] = {v.r_outer[size_t(k)], v.r_inner[size_t(k)], 0, 0};
   return u;
 }
@@ -170,7 +169,7 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug)
   // Only the code a frame needs: waves and foam are compiled in when present (software
   // rasterizers pay for code even where a uniform branch skips it). Built when first used.
   const SurfaceWaves& w = f.liquid.waves;
-  const bool waves = f.has_liquid && (w.ring != 0 || w.cross.x != 0 || w.cross.y != 0);
+  const bool waves = f.has_liquid && !w.flat();
   const bool foam = f.has_liquid && f.foam.thickness > 1e-4;
   const int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0);
   auto& program = programs_[variant];
