@@ -2,13 +2,13 @@
 // profile, solving the fill height, building the fill table, and the reference
 // intersector per ray. GPU frame times come from `draught bench`. Results:
 // docs/PERFORMANCE.md.
-#include "core/bubble_view.hpp"
-#include "core/camera.hpp"
-#include "core/fill_table.hpp"
-#include "core/frame.hpp"
-#include "core/preset.hpp"
-#include "core/simulation.hpp"
-#include "core/timeline.hpp"
+#include "core/bubbles/bubble_view.hpp"
+#include "core/scene/camera.hpp"
+#include "core/vessel/fill_table.hpp"
+#include "core/scene/frame.hpp"
+#include "core/params/preset.hpp"
+#include "core/sim/simulation.hpp"
+#include "core/params/timeline.hpp"
 
 #include <benchmark/benchmark.h>
 

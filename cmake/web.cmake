@@ -39,22 +39,16 @@ endforeach()
 
 # ---- sources: all of core (it has no GL and no platform code), the renderer without
 # the EGL context, the embedded shaders ----
-file(GLOB web_core CONFIGURE_DEPENDS "${DRAUGHT_ROOT}/src/core/*.cpp" "${DRAUGHT_ROOT}/src/core/input/*.cpp")
+include("${CMAKE_CURRENT_LIST_DIR}/core_sources.cmake")
+set(web_core ${DRAUGHT_CORE_SOURCES_ABS})
 # (Clang 14, Emscripten 3.1.6's compiler, cannot capture structured bindings in lambdas;
 # src/ spells such captures out: [&, &key = key].)
-set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${web_core})
 set(web_gpu
   "${DRAUGHT_ROOT}/src/gpu/shader_source.cpp"
   "${DRAUGHT_ROOT}/src/gpu/program.cpp"
   "${DRAUGHT_ROOT}/src/gpu/renderer.cpp")
-file(GLOB web_shaders CONFIGURE_DEPENDS "${DRAUGHT_ROOT}/shaders/*.glsl")
-set(web_embedded "${CMAKE_BINARY_DIR}/generated/embedded_shaders.cpp")
-add_custom_command(
-  OUTPUT "${web_embedded}"
-  COMMAND ${CMAKE_COMMAND} -DOUT=${web_embedded} -DDIR=${DRAUGHT_ROOT}/shaders
-          -P "${DRAUGHT_ROOT}/cmake/embed_shaders.cmake"
-  DEPENDS ${web_shaders} "${DRAUGHT_ROOT}/cmake/embed_shaders.cmake"
-  COMMENT "Embedding shaders")
+include("${CMAKE_CURRENT_LIST_DIR}/shaders.cmake")
+draught_embed_shaders(web_embedded)
 
 set(web_flags -fexceptions)  # the core reports bad input by throwing
 add_library(draught_web_core STATIC ${web_core} ${web_gpu} "${web_embedded}")

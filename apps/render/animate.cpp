@@ -3,9 +3,9 @@
 // and frame i is the state at exactly i / fps seconds.
 #include "commands.hpp"
 
-#include "core/files.hpp"
-#include "core/simulation.hpp"
-#include "core/timeline.hpp"
+#include "core/io/files.hpp"
+#include "core/sim/simulation.hpp"
+#include "core/params/timeline.hpp"
 #include "gpu/context.hpp"
 #include "gpu/renderer.hpp"
 

@@ -2,8 +2,8 @@
 // test: it prints a table and asserts nothing.
 #include "commands.hpp"
 
-#include "core/frame.hpp"
-#include "core/timeline.hpp"
+#include "core/scene/frame.hpp"
+#include "core/params/timeline.hpp"
 #include "gpu/context.hpp"
 #include "gpu/renderer.hpp"
 

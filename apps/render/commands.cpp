@@ -1,9 +1,9 @@
 #include "commands.hpp"
 
-#include "core/files.hpp"
-#include "core/frame.hpp"
-#include "core/preset.hpp"
-#include "core/timeline.hpp"
+#include "core/io/files.hpp"
+#include "core/scene/frame.hpp"
+#include "core/params/preset.hpp"
+#include "core/params/timeline.hpp"
 #include "gpu/context.hpp"
 #include "gpu/renderer.hpp"
 

@@ -1,7 +1,7 @@
 // The `draught` CLI's commands. main.cpp only parses flags; each command lives here.
 #pragma once
 
-#include "core/preset.hpp"
+#include "core/params/preset.hpp"
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 // draught: headless renderer of drinks in glassware.
 #include "commands.hpp"
 
-#include "core/files.hpp"
+#include "core/io/files.hpp"
 #include "gpu/shader_source.hpp"
 
 #include <CLI/CLI.hpp>

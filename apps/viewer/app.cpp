@@ -5,12 +5,12 @@
 #include "preset_panel.hpp"
 #include "window.hpp"
 
-#include "core/files.hpp"
-#include "core/frame.hpp"
-#include "core/image.hpp"
+#include "core/io/files.hpp"
+#include "core/scene/frame.hpp"
+#include "core/io/image.hpp"
 #include "core/input/combined.hpp"
-#include "core/simulation.hpp"
-#include "core/timeline.hpp"
+#include "core/sim/simulation.hpp"
+#include "core/params/timeline.hpp"
 #include "gpu/renderer.hpp"
 #include "platform/sdl_gamepad.hpp"
 

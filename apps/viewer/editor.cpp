@@ -1,7 +1,7 @@
 #include "editor.hpp"
 
-#include "core/files.hpp"
-#include "core/preset.hpp"
+#include "core/io/files.hpp"
+#include "core/params/preset.hpp"
 
 #include <filesystem>
 #include <utility>

@@ -3,7 +3,7 @@
 // before it lands; a preset action that fails leaves everything as it was.
 #pragma once
 
-#include "core/params.hpp"
+#include "core/params/params.hpp"
 
 #include <cstddef>
 #include <deque>

@@ -1,7 +1,7 @@
 // draught-viewer: the drink in a desktop window, with a parameter panel and live input.
 #include "app.hpp"
 
-#include "core/files.hpp"
+#include "core/io/files.hpp"
 
 #include <CLI/CLI.hpp>
 

@@ -3,7 +3,7 @@
 // There is no list of parameters here: a new row in param_table() shows up by itself.
 #pragma once
 
-#include "core/params.hpp"
+#include "core/params/params.hpp"
 
 #include <string>
 

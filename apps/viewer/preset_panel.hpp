@@ -4,7 +4,7 @@
 
 #include "editor.hpp"
 
-#include "core/preset.hpp"
+#include "core/params/preset.hpp"
 
 #include <string>
 #include <vector>

@@ -1,12 +1,12 @@
 // The web page's engine: the same Simulation and Renderer as the CLI, drawing into a WebGL2
 // canvas every animation frame. page.js drives it through the C functions below (strings
 // in, strings or JSON out); errors never escape as exceptions, they come back as text.
-#include "core/files.hpp"
-#include "core/frame.hpp"
+#include "core/io/files.hpp"
+#include "core/scene/frame.hpp"
 #include "core/input/combined.hpp"
-#include "core/params.hpp"
-#include "core/preset.hpp"
-#include "core/simulation.hpp"
+#include "core/params/params.hpp"
+#include "core/params/preset.hpp"
+#include "core/sim/simulation.hpp"
 #include "gpu/renderer.hpp"
 
 #include <GLES3/gl3.h>

@@ -1,4 +1,4 @@
-// The stb implementations core/image.cpp links against. Natively they come from Debian's
+// The stb implementations core/io/image.cpp links against. Natively they come from Debian's
 // libstb; under Emscripten there is no such library, so the (Debian) headers are compiled
 // here. Only PNG is needed.
 #define STBI_ONLY_PNG

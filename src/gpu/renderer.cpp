@@ -1,7 +1,7 @@
 #include "gpu/renderer.hpp"
 
-#include "core/bubble_view.hpp"
-#include "core/camera.hpp"
+#include "core/bubbles/bubble_view.hpp"
+#include "core/scene/camera.hpp"
 #include "gpu/program.hpp"
 
 #include <GLES3/gl3.h>

@@ -2,8 +2,8 @@
 // into an offscreen framebuffer and reads back images. It does no physics.
 #pragma once
 
-#include "core/frame.hpp"
-#include "core/image.hpp"
+#include "core/scene/frame.hpp"
+#include "core/io/image.hpp"
 #include "gpu/uniforms.hpp"
 
 #include <filesystem>

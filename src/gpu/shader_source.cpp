@@ -1,6 +1,6 @@
 #include "gpu/shader_source.hpp"
 
-#include "core/files.hpp"
+#include "core/io/files.hpp"
 
 #include <regex>
 #include <sstream>

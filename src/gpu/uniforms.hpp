@@ -2,7 +2,7 @@
 // size and offsets so the two cannot drift apart silently.
 #pragma once
 
-#include "core/vessel.hpp"
+#include "core/vessel/vessel.hpp"
 
 #include <glm/glm.hpp>
 

@@ -1,8 +1,8 @@
 // End-to-end tests of the `draught` CLI: the commands that should work.
 #include "cli_helpers.hpp"
 
-#include "core/image.hpp"
-#include "core/params.hpp"
+#include "core/io/image.hpp"
+#include "core/params/params.hpp"
 
 #include <regex>
 #include <set>

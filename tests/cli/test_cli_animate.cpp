@@ -3,7 +3,7 @@
 // Small images and few frames throughout: CI has two cores.
 #include "cli_helpers.hpp"
 
-#include "core/image.hpp"
+#include "core/io/image.hpp"
 
 #include <regex>
 

@@ -2,9 +2,9 @@
 // DRAUGHT_DEVICE=software in CTest), and scene set-up shared by the GPU tests.
 #pragma once
 
-#include "core/frame.hpp"
-#include "core/preset.hpp"
-#include "core/timeline.hpp"
+#include "core/scene/frame.hpp"
+#include "core/params/preset.hpp"
+#include "core/params/timeline.hpp"
 #include "gpu/context.hpp"
 #include "gpu/renderer.hpp"
 

@@ -5,7 +5,7 @@
 // --bless) the render and an amplified diff go to <build>/golden-diff/.
 //
 // Re-bless deliberately with scripts/bless-goldens.sh, and look at every image.
-#include "core/image.hpp"
+#include "core/io/image.hpp"
 #include "gpu_fixture.hpp"
 
 #include <gtest/gtest.h>

@@ -9,7 +9,7 @@
 //   float ray's direction error grows into distance on far, grazing floor hits), and
 //   never more than 1 mm on the glass itself.
 // - normal: <= 0.25 degrees on 99.5 % of agreeing pixels.
-#include "core/camera.hpp"
+#include "core/scene/camera.hpp"
 #include "gpu_fixture.hpp"
 
 #include <gtest/gtest.h>

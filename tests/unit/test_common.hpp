@@ -1,9 +1,9 @@
 // Helpers shared by the unit tests (header only; tests/CMakeLists.txt globs *.cpp).
 #pragma once
 
-#include "core/params.hpp"
-#include "core/preset.hpp"
-#include "core/vessel.hpp"
+#include "core/params/params.hpp"
+#include "core/params/preset.hpp"
+#include "core/vessel/vessel.hpp"
 
 #include <filesystem>
 #include <string>

@@ -5,7 +5,7 @@
 //                                                    panel sits) clearly differs from OTHER,
 //                                                    the same scene without the panel
 // Prints what it measured; exits 1 naming the check that failed.
-#include "core/image.hpp"
+#include "core/io/image.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -2,8 +2,8 @@
 // leave everything as it was.
 #include "editor.hpp"
 
-#include "core/files.hpp"
-#include "core/preset.hpp"
+#include "core/io/files.hpp"
+#include "core/params/preset.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // gamepad motion sensors, a scripted timeline, or a combination, picked at run time.
 #pragma once
 
-#include "core/motion.hpp"
+#include "core/scene/motion.hpp"
 
 namespace draught {
 

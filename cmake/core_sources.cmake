@@ -1,0 +1,34 @@
+# The one list of core sources, shared by the native build (CMakeLists.txt) and the web
+# build (cmake/web.cmake). Paths are relative to the repository root. Core has no GL.
+set(DRAUGHT_CORE_SOURCES
+  src/core/params/params.cpp
+  src/core/params/json_input.cpp
+  src/core/params/preset.cpp
+  src/core/params/timeline.cpp
+  src/core/scene/camera.cpp
+  src/core/scene/motion.cpp
+  src/core/scene/frame.cpp
+  src/core/vessel/profile.cpp
+  src/core/vessel/vessel.cpp
+  src/core/vessel/fill_table.cpp
+  src/core/liquid/beverage.cpp
+  src/core/liquid/slosh.cpp
+  src/core/foam/foam.cpp
+  src/core/bubbles/bubbles.cpp
+  src/core/bubbles/bubble_view.cpp
+  src/core/reference/intersect.cpp
+  src/core/reference/optics.cpp
+  src/core/sim/simulation.cpp
+  src/core/io/image.cpp
+  src/core/io/files.cpp
+  src/core/input/gesture.cpp
+  src/core/input/fusion.cpp
+  src/core/input/imu_driver.cpp
+  src/core/input/device_motion.cpp
+  src/core/input/combined.cpp
+)
+# The same list as absolute paths, for builds whose source dir is not the root.
+set(DRAUGHT_CORE_SOURCES_ABS "")
+foreach(src ${DRAUGHT_CORE_SOURCES})
+  list(APPEND DRAUGHT_CORE_SOURCES_ABS "${CMAKE_CURRENT_LIST_DIR}/../${src}")
+endforeach()

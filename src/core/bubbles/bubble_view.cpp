@@ -1,0 +1,128 @@
+#include "core/bubbles/bubble_view.hpp"
+
+#include "core/scene/camera.hpp"
+#include "core/reference/optics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace draught {
+
+namespace {
+
+enum class Medium { Air, Glass, Liquid };
+
+// The leg of a camera path inside the liquid (world frame), and what it crossed to get there.
+struct LiquidLeg {
+  bool ok = false;
+  Ray ray;
+  double before = 0;     // path length before the liquid
+  glm::dvec3 thr{1.0};   // Fresnel and glass absorption on the way
+};
+
+LiquidLeg trace_to_liquid(const FrameState& f, const SceneGeometry& geo, Ray r) {
+  const double n_of[3] = {1.0, f.params.glass.ior, f.params.liquid.ior};
+  const glm::dquat to_local = glm::inverse(f.pose.orientation);
+  LiquidLeg leg;
+  Medium medium = Medium::Air;
+  for (int e = 0; e < 6; ++e) {
+    const Hit h = first_hit(geo, r, 1e-6);
+    if (!h.valid() || h.m == Material::Floor) return leg;
+    const glm::dvec3 p = r.at(h.t);
+    leg.before += h.t;
+    if (medium == Medium::Glass) leg.thr *= glm::exp(-glm::dvec3(f.params.glass.absorption) * h.t);
+    Medium next = Medium::Air;
+    switch (h.m) {
+      case Material::LiquidSurface:
+        // From above, the head sits on the surface: what is under it is hidden.
+        if (medium == Medium::Air && f.foam.thickness > 5e-4) return leg;
+        next = medium == Medium::Liquid ? Medium::Air : Medium::Liquid;
+        break;
+      case Material::ClipGlass: next = medium == Medium::Air ? Medium::Glass : Medium::Air; break;
+      case Material::ClipLiquid: next = medium == Medium::Air ? Medium::Liquid : Medium::Air; break;
+      case Material::GlassInner:
+      case Material::CavityFloor:
+        next = medium != Medium::Glass ? Medium::Glass
+                                       : (geo.liquid.below(to_local * (p - f.pose.position)) ? Medium::Liquid : Medium::Air);
+        break;
+      default: next = medium == Medium::Glass ? Medium::Air : Medium::Glass;
+    }
+    const glm::dvec3 n = glm::dot(h.n, r.d) < 0 ? h.n : -h.n;
+    const double n1 = n_of[int(medium)], n2 = n_of[int(next)];
+    const auto refracted = refract_dir(r.d, n, n1 / n2);
+    if (!refracted) return leg;  // total internal reflection: not a straight view of the liquid
+    leg.thr *= 1.0 - fresnel_dielectric(-glm::dot(n, r.d), n1, n2);
+    r = Ray{p, glm::normalize(*refracted)};
+    medium = next;
+    if (medium == Medium::Liquid) {
+      leg.ok = true;
+      leg.ray = r;
+      return leg;
+    }
+  }
+  return leg;
+}
+
+}  // namespace
+
+std::vector<BubbleSprite> bubble_sprites(const FrameState& f, int width, int height) {
+  std::vector<BubbleSprite> out;
+  if (!f.has_liquid || f.bubbles.empty()) return out;
+  const SceneGeometry geo = scene_geometry(f);
+  const CameraBasis cam = camera_basis(f.camera, width, height);
+  const glm::dvec3 right(cam.right), up(cam.up);
+  const glm::dvec3 sigma = glm::dvec3(f.liquid_absorption) + double(f.params.liquid.haze);
+  for (const Bubble& b : f.bubbles) {
+    if (geo.clipped(glm::dvec3(b.p))) continue;  // cut away with the cross-section
+    const glm::dvec3 c = f.pose.orientation * glm::dvec3(b.p) + f.pose.position;
+    // Miss of the pixel's liquid leg past the bubble centre, in the picture's axes.
+    auto miss = [&](double px, double py, glm::dvec2& e, double& t, LiquidLeg& leg) {
+      leg = trace_to_liquid(f, geo, camera_ray(cam, px, py, width, height));
+      if (!leg.ok) return false;
+      t = glm::dot(c - leg.ray.o, leg.ray.d);
+      const glm::dvec3 d = c - leg.ray.at(t);
+      e = {glm::dot(d, right), glm::dot(d, up)};
+      return t > 0;
+    };
+    // Start where the bubble would be without the glass; Newton with a numeric Jacobian.
+    const glm::dvec3 v = c - glm::dvec3(cam.eye);
+    const double z = glm::dot(v, glm::dvec3(cam.forward));
+    if (z <= 0) continue;
+    double px = (glm::dot(v, right) / (z * cam.tan_half_vfov * cam.aspect) + 1) * 0.5 * width;
+    double py = (1 - glm::dot(v, up) / (z * cam.tan_half_vfov)) * 0.5 * height;
+    glm::dvec2 e;
+    double t = 0, det = 0;
+    LiquidLeg leg;
+    bool ok = false;
+    for (int it = 0; it < 6; ++it) {
+      if (!miss(px, py, e, t, leg)) break;
+      glm::dvec2 ex, ey;
+      double tx, ty;
+      LiquidLeg lx, ly;
+      if (!miss(px + 0.5, py, ex, tx, lx) || !miss(px, py + 0.5, ey, ty, ly)) break;
+      const glm::dmat2 J((ex - e) / 0.5, (ey - e) / 0.5);  // metres of miss per pixel
+      det = glm::determinant(J);
+      if (!(std::abs(det) > 1e-18)) break;
+      const glm::dvec2 step = glm::inverse(J) * e;
+      px -= step.x;
+      py -= step.y;
+      if (glm::length(e) < 0.05 * b.radius) {
+        ok = miss(px, py, e, t, leg);
+        break;
+      }
+    }
+    if (!ok || px < -10 || py < -10 || px > width + 10 || py > height + 10) continue;
+    // Nothing between the leg's start and the bubble: it is inside this stretch of liquid.
+    if (first_hit(geo, leg.ray, 1e-6).t < t) continue;
+    BubbleSprite s;
+    s.centre = {float(px), float(py)};
+    s.radius = float(b.radius / std::sqrt(std::abs(det)));  // metres over metres-per-pixel
+    s.tint = glm::vec3(leg.thr * glm::exp(-sigma * t));
+    s.distance = float(leg.before + t);
+    if (s.radius > 0.05f) out.push_back(s);
+  }
+  std::sort(out.begin(), out.end(), [](const BubbleSprite& a, const BubbleSprite& b) { return a.distance > b.distance; });
+  return out;
+}
+
+}  // namespace draught

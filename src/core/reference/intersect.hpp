@@ -1,0 +1,82 @@
+// The C++ reference intersector: the same analytic math as shaders/vessel.glsl, in
+// double precision. Tests compare the GPU's debug outputs against it pixel by pixel.
+#pragma once
+
+#include "core/scene/motion.hpp"
+#include "core/liquid/slosh.hpp"
+#include "core/vessel/vessel.hpp"
+
+#include <glm/glm.hpp>
+
+#include <limits>
+
+namespace draught {
+
+struct Ray {
+  glm::dvec3 o, d;  // d normalised
+  glm::dvec3 at(double t) const { return o + t * d; }
+};
+
+// Material ids: the same numbers are written by the shader's material debug output.
+enum class Material : int {
+  None = 0,
+  Floor = 1,
+  GlassOuter = 2,
+  GlassInner = 3,
+  Rim = 4,
+  GlassBottom = 5,
+  CavityFloor = 6,
+  LiquidSurface = 7,
+  ClipGlass = 8,   // the cross-section's cut face through the glass
+  ClipLiquid = 9,  // and through the liquid
+};
+const char* material_name(Material);
+
+struct Hit {
+  double t = std::numeric_limits<double>::infinity();
+  glm::dvec3 n{0.0};  // glass surfaces: pointing out of the glass; liquid and floor: up
+  Material m = Material::None;
+  bool valid() const { return m != Material::None; }
+};
+
+// Real roots of x^4 + b x^3 + c x^2 + d x + e, ascending; returns the count.
+int solve_quartic(double b, double c, double d, double e, double roots[4]);
+// Real roots of x^3 + a x^2 + b x + c; returns the count.
+int solve_cubic(double a, double b, double c, double roots[3]);
+
+// Ray against the cone r = r0 + (r1 - r0) (y - y0) / (y1 - y0) for y in [y0, y1].
+// Returns up to 2 parameters t > tmin, ascending.
+int intersect_cone(const Ray&, double r0, double r1, double y0, double y1, double tmin, double out[2]);
+// Ray against a torus around the Y axis (major R, minor r, centre height cy); all roots.
+int intersect_torus(const Ray&, double R, double r, double cy, double out[4]);
+
+// The liquid, in the glass's local frame: the part of the cavity below the surface
+// dot(n, p) = offset + waves.height(p.x, p.z).
+struct LiquidPlane {
+  glm::dvec3 n{0, 1, 0};
+  double offset = -1;  // below the floor: no liquid
+  SurfaceWaves waves;
+  double level(const glm::dvec3& p) const {
+    return glm::dot(n, p) - offset - (waves.flat() ? 0.0 : waves.height(p.x, p.z));
+  }
+  bool below(const glm::dvec3& p) const { return level(p) < 0; }
+};
+
+// Rays are in the world; the glass stands in it at `pose` (the floor is world y = 0).
+struct SceneGeometry {
+  const Vessel* vessel;
+  LiquidPlane liquid;
+  bool floor = true;
+  Pose pose;
+  glm::dvec4 clip{0, 0, 0, 1};  // cross-section (glass frame): dot(n, p) > offset is cut away; n = 0: none
+  bool clipped(const glm::dvec3& local) const { return glm::dot(glm::dvec3(clip), local) > clip.w; }
+};
+
+Hit hit_wall(const Vessel&, bool inner, const Ray&, double tmin);
+Hit hit_rim(const Vessel&, const Ray&, double tmin);
+// Where a ray first meets the liquid's (wavy) surface inside the cavity, local frame.
+Hit hit_liquid_surface(const Vessel&, const LiquidPlane&, const Ray& local_ray, double tmin);
+// Nearest surface along the world ray (glass, liquid surface, floor); normals in the world.
+Hit first_hit(const SceneGeometry&, const Ray&, double tmin = 1e-7);
+
+}  // namespace draught

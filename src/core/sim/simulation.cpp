@@ -1,0 +1,186 @@
+#include "core/sim/simulation.hpp"
+
+#include "core/liquid/beverage.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace draught {
+
+namespace {
+constexpr double kG = 9.80665;
+constexpr double kEmpty = 1e-4;  // below this fraction the glass shows no liquid
+
+BubbleSettings bubble_settings(const BubbleParams& p) {
+  return {p.carbonation, p.sites, p.etched_base, p.size, p.max_bubbles, p.seed};
+}
+
+bool same_bubbles(const BubbleParams& a, const BubbleParams& b) {
+  return a.carbonation == b.carbonation && a.sites == b.sites && a.etched_base == b.etched_base && a.size == b.size &&
+         a.max_bubbles == b.max_bubbles && a.seed == b.seed;
+}
+
+bool same_glass(const GlassParams& a, const GlassParams& b) {
+  return a.profile == b.profile && a.wall_thickness == b.wall_thickness && a.base_thickness == b.base_thickness &&
+         a.rim_radius == b.rim_radius;
+}
+
+glm::dvec3 clamp_length(const glm::dvec3& v, double max_len) {
+  const double len = glm::length(v);
+  return len > max_len ? v * (max_len / len) : v;
+}
+}  // namespace
+
+Simulation::Simulation(const Params& p) : params_(p), foam_(p.foam) {
+  rebuild_glass();
+  fraction_ = std::clamp(double(p.liquid.fill), 0.0, 1.0);
+  env_.radius = vessel_.inner_radius(vessel_.height);
+  update_surface();
+}
+
+void Simulation::rebuild_glass() {
+  vessel_ = build_vessel(params_.glass);
+  table_ = std::make_shared<const FillTable>(build_fill_table(vessel_));
+  rebuild_bubbles();
+}
+
+void Simulation::rebuild_bubbles() { bubbles_.emplace(bubble_settings(params_.bubbles), vessel_); }
+
+void Simulation::set_params(const Params& p) {
+  const bool glass_changed = !same_glass(p.glass, params_.glass);
+  const bool refill = p.liquid.fill != params_.liquid.fill;
+  const bool bubbles_changed = !same_bubbles(p.bubbles, params_.bubbles);
+  params_ = p;
+  foam_.set_params(p.foam);
+  if (glass_changed) rebuild_glass();
+  else if (bubbles_changed) rebuild_bubbles();
+  if (refill || glass_changed) fraction_ = std::clamp(double(p.liquid.fill), 0.0, 1.0);
+  update_surface();
+}
+
+void Simulation::set_fraction(double fraction) {
+  if (!std::isfinite(fraction)) return;
+  fraction_ = std::clamp(fraction, 0.0, 1.0);
+  update_surface();
+}
+
+void Simulation::pour() {
+  fraction_ = std::clamp(double(params_.liquid.fill), 0.0, 1.0);
+  foam_.pour();
+  bubbles_->clear();
+  update_surface();
+}
+
+void Simulation::settle_bubbles(double seconds) {
+  const glm::dvec3 up = glm::inverse(motion_.pose.orientation) * glm::dvec3(0, 1, 0);
+  for (double t = 0; t < std::min(seconds, 30.0); t += kStep) bubbles_->step(kStep, surface_, up);
+}
+
+void Simulation::update_surface() {
+  // The surface normal: world up tilted by the slosh slope, seen from the glass.
+  const glm::dvec3 n_world = glm::normalize(glm::dvec3(slosh_.slope.x, 1.0, slosh_.slope.y));
+  const glm::dvec3 n = glm::normalize(glm::inverse(motion_.pose.orientation) * n_world);
+  tilt_ = std::acos(std::clamp(n.y, -1.0, 1.0));
+  azimuth_ = std::atan2(n.z, n.x);
+  // Past the rim the excess spills; what stays is the new volume.
+  const double capacity = table_->capacity_at(tilt_);
+  if (fraction_ > capacity) {
+    spilled_ += fraction_ - capacity;
+    fraction_ = capacity;
+  }
+  surface_.n = n;
+  // Never above the lowest rim point (the table is accurate to ~0.1 %; the rim is exact).
+  surface_.offset = fraction_ > kEmpty ? std::min(table_->offset_at(tilt_, fraction_), rim_offset(vessel_, tilt_)) : -1.0;
+  // Waves stay below the rim now, not only from the next step on (a refill, a spill).
+  // Wave shapes reach at most 1 (ring) and 1.5625 (cross) anywhere on the surface.
+  const double room = headroom();
+  const double peak = std::abs(slosh_.ring) + 1.5625 * (std::abs(slosh_.cross.x) + std::abs(slosh_.cross.y));
+  if (peak > 0.9 * room) {
+    const double k = peak > 0 ? 0.9 * room / peak : 0.0;
+    slosh_.ring *= k, slosh_.ring_rate *= k, slosh_.cross *= k, slosh_.cross_rate *= k;
+  }
+  // Where the surface crosses the axis: its radius and depth set the slosh frequency.
+  surface_.waves.radius = std::max(vessel_.inner_radius(axis_level()), 1e-3);
+  surface_.waves.ring = slosh_.ring;
+  surface_.waves.cross = slosh_.cross;
+}
+
+double Simulation::axis_level() const {
+  const double axis = surface_.n.y > 0.2 ? surface_.offset / surface_.n.y : vessel_.height;
+  return std::clamp(axis, vessel_.base + 1e-4, vessel_.height);
+}
+
+double Simulation::headroom() const { return std::max(rim_offset(vessel_, tilt_) - surface_.offset, 0.0); }
+
+SloshEnvironment Simulation::environment(const glm::dvec3& accel, double dt) const {
+  SloshEnvironment e;
+  // The surface rests perpendicular to the effective gravity g - a.
+  const double gy = std::max(kG + accel.y, 0.2 * kG);
+  glm::dvec2 level = glm::dvec2(accel.x, accel.z) / gy;
+  e.max_slope = 1.5;  // ~56 degrees
+  if (glm::length(level) > e.max_slope) level *= e.max_slope / glm::length(level);
+  e.level_slope = level;
+  e.level_rate = first_step_ ? glm::dvec2(0.0) : (level - level_) / dt;
+  e.radius = surface_.waves.radius;
+  e.depth = axis_level() - vessel_.base;
+  // Waves stay below the rim: at most part of the headroom between surface and rim.
+  e.max_wave = std::min(0.4 * headroom(), 0.25 * e.radius);
+  return e;
+}
+
+void Simulation::step(const MotionSample& raw, double drink_rate) {
+  const MotionSample m = sanitize(raw);
+  const double dt = kStep;
+  time_ += dt;
+  // Acceleration of the liquid's middle: the glass's own plus what its rotation adds there.
+  const double centre = 0.5 * (vessel_.base + axis_level());
+  const glm::dvec3 r = m.pose.orientation * glm::dvec3(0, centre, 0);
+  const glm::dvec3 w = m.angular_velocity;
+  const glm::dvec3 alpha =
+      first_step_ ? glm::dvec3(0.0) : clamp_length((w - motion_.angular_velocity) / dt, 2000.0);
+  const glm::dvec3 accel = clamp_length(m.linear_acceleration + glm::cross(alpha, r) + glm::cross(w, glm::cross(w, r)), 200.0);
+  env_ = environment(accel, dt);
+  if (first_step_) slosh_.slope = env_.level_slope;
+  step_slosh(slosh_, params_.liquid, env_, dt);
+  level_ = env_.level_slope;
+  motion_ = m;
+  first_step_ = false;
+  if (std::isfinite(drink_rate) && drink_rate > 0) fraction_ = std::max(fraction_ - drink_rate * dt, 0.0);
+  update_surface();
+  // The head follows the volume (the level the drink would have upright), not the slosh.
+  const double level = table_->offset_at(0, fraction_);
+  foam_.step(dt, level, vessel_.inner_radius(std::clamp(level, vessel_.base, vessel_.height)));
+  // Bubbles rise against gravity: world up, seen from the glass.
+  bubbles_->step(dt, surface_, glm::inverse(m.pose.orientation) * glm::dvec3(0, 1, 0));
+}
+
+void Simulation::advance(InputDriver& driver, double t, double drink_rate) {
+  if (!std::isfinite(t)) return;
+  if (t - time_ > kMaxCatchUp) time_ = t - kMaxCatchUp;
+  while (time_ + kStep <= t + 1e-9) step(driver.sample(time_ + kStep), drink_rate);
+}
+
+double Simulation::energy() const { return slosh_energy(slosh_, params_.liquid, env_); }
+
+FrameState Simulation::frame() const {
+  FrameState f;
+  f.params = params_;
+  f.vessel = vessel_;
+  f.fill_table = table_;
+  f.camera = frame_camera(params_.camera, vessel_);
+  f.pose = motion_.pose;
+  f.liquid = surface_;
+  f.liquid_tilt = tilt_;
+  f.liquid_azimuth = azimuth_;
+  f.liquid_fraction = fraction_;
+  f.has_liquid = fraction_ > kEmpty;
+  f.liquid_absorption = liquid_absorption(params_.liquid);
+  f.foam = foam_.frame(surface_.waves.radius);
+  f.bubbles = bubbles_->bubbles();
+  double sum = 0;
+  for (double r : vessel_.r_outer) sum += r;
+  f.mean_outer_radius = sum / double(vessel_.r_outer.size());
+  return f;
+}
+
+}  // namespace draught

@@ -1,0 +1,78 @@
+// The drink's state over time: where the glass is, how much is in it, how the surface
+// sloshes. Fixed time steps, no randomness: the same inputs give the same frames in the
+// CLI, the desktop viewer and the web page.
+#pragma once
+
+#include "core/bubbles/bubbles.hpp"
+#include "core/vessel/fill_table.hpp"
+#include "core/foam/foam.hpp"
+#include "core/scene/frame.hpp"
+#include "core/input/driver.hpp"
+#include "core/liquid/slosh.hpp"
+
+#include <memory>
+#include <optional>
+
+namespace draught {
+
+class Simulation {
+ public:
+  static constexpr double kStep = 1.0 / 240.0;  // seconds
+  static constexpr double kMaxCatchUp = 0.25;   // a longer gap (a stalled app) is skipped, not simulated
+
+  explicit Simulation(const Params&);
+
+  // New parameters (a preset switch, a slider). The vessel and its fill table are
+  // rebuilt only when the glass changed; a changed liquid.fill refills the glass.
+  void set_params(const Params&);
+  void set_fraction(double fraction);  // drink or refill; clamped to what the glass holds
+  void pour();                         // fill to liquid.fill with a fresh head building
+  // Lets the bubbles rise for a while with the glass at rest, so a still picture (or
+  // the first frame of an animation) shows a drink that has been standing.
+  void settle_bubbles(double seconds);
+  // Steps to time t (seconds), sampling the driver at every step. drink_rate: fraction
+  // of the cavity drunk per second meanwhile (a sip).
+  void advance(InputDriver&, double t, double drink_rate = 0);
+  // One step with this motion (tests, or callers that sample themselves).
+  void step(const MotionSample&, double drink_rate = 0);
+
+  FrameState frame() const;
+  double time() const { return time_; }
+  double fraction() const { return fraction_; }
+  double spilled() const { return spilled_; }  // fraction of the cavity lost over the rim
+  const SloshState& slosh() const { return slosh_; }
+  const FoamState& foam() const { return foam_; }
+  const BubbleField& bubbles() const { return *bubbles_; }
+  double energy() const;
+  const Vessel& vessel() const { return vessel_; }
+  const FillTable& fill_table() const { return *table_; }
+  const MotionSample& motion() const { return motion_; }
+  // The liquid surface in the glass's frame as it is now.
+  const LiquidPlane& surface() const { return surface_; }
+
+ private:
+  void rebuild_glass();
+  void rebuild_bubbles();
+  void update_surface();
+  // Where the surface plane crosses the glass's axis (the rim height for a surface
+  // nearly along the axis), and how far it is below the lowest rim point.
+  double axis_level() const;
+  double headroom() const;
+  SloshEnvironment environment(const glm::dvec3& centre_accel, double dt) const;
+
+  Params params_;
+  Vessel vessel_;
+  std::shared_ptr<const FillTable> table_;
+  double time_ = 0, fraction_ = 0, spilled_ = 0;
+  MotionSample motion_;
+  glm::dvec2 level_{0.0};   // the resting slope under the last acceleration
+  SloshEnvironment env_;
+  SloshState slosh_;
+  FoamState foam_;
+  std::optional<BubbleField> bubbles_;  // rebuilt with the glass or the bubble settings
+  LiquidPlane surface_;
+  double tilt_ = 0, azimuth_ = 0;
+  bool first_step_ = true;
+};
+
+}  // namespace draught

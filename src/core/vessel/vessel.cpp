@@ -1,0 +1,75 @@
+#include "core/vessel/vessel.hpp"
+
+#include "core/vessel/profile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace draught {
+
+namespace {
+double lerp_knots(const std::vector<double>& k, double dy, double y) {
+  const int n = int(k.size()) - 1;
+  double s = std::clamp(y / dy, 0.0, double(n));
+  int i = std::min(int(s), n - 1);
+  double f = s - i;
+  return k[size_t(i)] * (1 - f) + k[size_t(i) + 1] * f;
+}
+
+double frustum_volume(double r0, double r1, double h) {
+  return std::numbers::pi * h / 3.0 * (r0 * r0 + r0 * r1 + r1 * r1);
+}
+}  // namespace
+
+double Vessel::outer_radius(double y) const { return lerp_knots(r_outer, dy, y); }
+double Vessel::inner_radius(double y) const { return lerp_knots(r_inner, dy, y); }
+
+bool Vessel::inside_torus(double r, double y) const {
+  const double a = r - rim_major, b = y - height;
+  return a * a + b * b < rim_minor * rim_minor;
+}
+
+double Vessel::cavity_volume_below(double h) const {
+  h = std::clamp(h, base, height);
+  double v = 0;
+  for (int k = 0; k < kSegments; ++k) {
+    double y0 = std::max(k * dy, base), y1 = std::min((k + 1) * dy, h);
+    if (y1 <= y0) continue;
+    v += frustum_volume(inner_radius(y0), inner_radius(y1), y1 - y0);
+  }
+  return v;
+}
+
+double Vessel::cavity_volume() const { return cavity_volume_below(height); }
+
+double Vessel::fill_height(double fraction) const {
+  const double target = std::clamp(fraction, 0.0, 1.0) * cavity_volume();
+  double lo = base, hi = height;
+  for (int i = 0; i < 64; ++i) {
+    double mid = 0.5 * (lo + hi);
+    (cavity_volume_below(mid) < target ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+Vessel build_vessel(const GlassParams& g) {
+  ProfileCurve curve(g.profile);
+  Vessel v;
+  v.height = curve.height();
+  v.dy = v.height / Vessel::kSegments;
+  const double wall = g.wall_thickness;
+  v.base = std::clamp(double(g.base_thickness), 0.001, v.height - 0.01);
+  for (int k = 0; k <= Vessel::kSegments; ++k) {
+    double r = curve.radius(k * v.dy);
+    v.r_outer.push_back(r);
+    v.r_inner.push_back(std::max(r - wall, 0.0));
+  }
+  const double top = v.r_outer.back();
+  v.rim_minor = std::clamp(double(g.rim_radius), 0.5 * wall, 2.0 * wall);
+  v.rim_major = top - 0.5 * wall;
+  v.bound_radius = std::max(*std::max_element(v.r_outer.begin(), v.r_outer.end()), v.rim_major + v.rim_minor);
+  return v;
+}
+
+}  // namespace draught
