@@ -5,6 +5,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/params/json_input.cpp
   src/core/params/preset.cpp
   src/core/params/timeline.cpp
+  src/core/scene/scene.cpp
   src/core/scene/camera.cpp
   src/core/scene/motion.cpp
   src/core/scene/frame.cpp
@@ -19,6 +20,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/reference/intersect.cpp
   src/core/reference/optics.cpp
   src/core/sim/simulation.cpp
+  src/core/sim/scene_simulation.cpp
   src/core/io/image.cpp
   src/core/io/files.cpp
   src/core/input/gesture.cpp

@@ -173,7 +173,7 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
   const auto t0 = std::chrono::steady_clock::now();
   for (int i = 0; i < frames; ++i) {
     play_timeline(sim, driver, timeline, base, i / fps);
-    const Image img = renderer.render(sim.frame(), req.width, req.height);
+    const Image img = renderer.render(assemble_frame(timeline.params_at(i / fps, base), {sim.frame()}), req.width, req.height);
     if (encoder) {
       encoder->write(img);
     } else {

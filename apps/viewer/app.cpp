@@ -326,7 +326,8 @@ void Viewer::draw_panel() {
 }
 
 void Viewer::draw_scene(int width, int height) {
-  FrameState f = sim_->frame();
+  const Params scene = timeline_ ? timeline_->params_at(sim_->time(), editor_.params()) : editor_.params();
+  FrameState f = assemble_frame(scene, {sim_->frame()});
   const Tier& tier = kTiers[tier_];
   f.params.render.max_events = std::min(f.params.render.max_events, tier.max_events);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -122,7 +122,7 @@ void frame() {
   resize_canvas();
   try {
     app->sim->advance(*app->rig.driver, t);
-    FrameState f = app->sim->frame();
+    FrameState f = assemble_frame(app->params, {app->sim->frame()});
     if (app->quality.events_cap)
       f.params.render.max_events = std::min(f.params.render.max_events, app->quality.events_cap);
     emscripten_webgl_make_context_current(app->gl);

@@ -14,8 +14,11 @@
 namespace draught::gpu {
 
 FrameUniforms pack_uniforms(const FrameState& f, int width, int height, DebugView debug) {
-  const Params& p = f.params;
-  const Vessel& v = f.vessel;
+  // Today's pass draws the first vessel of the scene (the multi-object pass replaces this).
+  const SceneParams& p = f.params;
+  const VesselFrame& vf = f.vessels.front();
+  const VesselParams& vp = vf.params;
+  const Vessel& v = vf.vessel;
   FrameUniforms u{};
   CameraBasis cam = camera_basis(f.camera, width, height);
   u.cam_eye = {cam.eye, cam.tan_half_vfov};
@@ -25,12 +28,12 @@ FrameUniforms pack_uniforms(const FrameState& f, int width, int height, DebugVie
   u.viewport = {width, height, 1.0f / width, 1.0f / height};
   u.vessel = {v.height, v.base, v.dy, 1.0 / v.dy};
   u.rim = {v.rim_major, v.rim_minor, v.bound_radius, v.r_outer.front()};
-  u.glass = {p.glass.ior, p.glass.roughness, v.inner_radius(v.base), f.mean_outer_radius};
-  u.glass_absorb = {p.glass.absorption, 0};
-  u.liquid_plane = {glm::vec3(f.liquid.n), f.liquid_fraction};
-  u.liquid = {p.liquid.ior, p.liquid.roughness, p.liquid.haze, f.has_liquid ? 1.0f : 0.0f};
-  u.liquid_absorb = {f.liquid_absorption, 0};
-  u.haze_color = {p.liquid.haze_color, 0};
+  u.glass = {vp.glass.ior, vp.glass.roughness, v.inner_radius(v.base), vf.mean_outer_radius};
+  u.glass_absorb = {vp.glass.absorption, 0};
+  u.liquid_plane = {glm::vec3(vf.liquid.n), vf.liquid_fraction};
+  u.liquid = {vp.liquid.ior, vp.liquid.roughness, vp.liquid.haze, vf.has_liquid ? 1.0f : 0.0f};
+  u.liquid_absorb = {vf.liquid_absorption, 0};
+  u.haze_color = {vp.liquid.haze_color, 0};
   glm::vec3 ld = glm::length(p.light.direction) > 1e-6f ? glm::normalize(p.light.direction) : glm::vec3(0, 1, 0);
   u.light_dir = {ld, p.light.intensity};
   u.light_color = {p.light.color, std::cos(glm::radians(p.light.size))};
@@ -45,16 +48,16 @@ FrameUniforms pack_uniforms(const FrameState& f, int width, int height, DebugVie
   u.output = {float(p.render.tonemap), p.render.exposure, p.render.transparent ? 1.0f : 0.0f, float(debug)};
   if (debug == DebugView::Material) u.output.w = float(DebugView::Depth);  // same channels
   u.limits = {p.render.max_events, 0, 0, 0};
-  const glm::dmat3 rot = glm::mat3_cast(f.pose.orientation);
+  const glm::dmat3 rot = glm::mat3_cast(vf.pose.orientation);
   u.pose_x = {glm::vec3(rot[0]), 0};
   u.pose_y = {glm::vec3(rot[1]), 0};
   u.pose_z = {glm::vec3(rot[2]), 0};
-  u.pose_pos = {glm::vec3(f.pose.position), 0};
-  const SurfaceWaves& w = f.liquid.waves;
+  u.pose_pos = {glm::vec3(vf.pose.position), 0};
+  const SurfaceWaves& w = vf.liquid.waves;
   u.waves = {w.ring, w.cross.x, w.cross.y, w.radius};
-  const FoamFrame& fo = f.foam;
-  const FoamParams& fp = p.foam;
-  const bool head = f.has_liquid && fo.thickness > 1e-4;
+  const FoamFrame& fo = vf.foam;
+  const FoamParams& fp = vp.foam;
+  const bool head = vf.has_liquid && fo.thickness > 1e-4;
   u.foam = {fo.thickness, fo.dome, fp.density, head ? 1.0f : 0.0f};
   u.foam_color = {fp.color, fp.anisotropy};
   u.foam_detail = {fp.multiscatter, fp.bubble_size, fp.detail, float(head ? fo.bubbles.size() : 0)};
@@ -62,15 +65,15 @@ FrameUniforms pack_uniforms(const FrameState& f, int width, int height, DebugVie
   u.lacing_info = {float(rings), fp.lacing, 0, 0};
   for (size_t i = 0; i < rings; ++i) u.lacing[i / 4][int(i % 4)] = float(fo.lacing[i]);
   // Big bubbles sit in the head's top, their caps standing out by 70 % of their radius.
-  const glm::dvec3 n = f.liquid.n;
+  const glm::dvec3 n = vf.liquid.n;
   for (size_t i = 0; i < std::min<size_t>(fo.bubbles.size(), 12); ++i) {
     const BigBubble& b = fo.bubbles[i];
-    const double y = (f.liquid.offset - n.x * b.xz.x - n.z * b.xz.y) / std::max(n.y, 1e-3);
+    const double y = (vf.liquid.offset - n.x * b.xz.x - n.z * b.xz.y) / std::max(n.y, 1e-3);
     const glm::dvec3 c = glm::dvec3(b.xz.x, y, b.xz.y) +
-                         n * (fo.thickness_at(b.xz.x, b.xz.y, f.liquid.waves.radius) - 0.3 * b.radius);
+                         n * (fo.thickness_at(b.xz.x, b.xz.y, vf.liquid.waves.radius) - 0.3 * b.radius);
     u.bubbles[i] = {glm::vec3(c), b.popped ? -b.radius : b.radius};
   }
-  u.clip = glm::vec4(scene_geometry(f).clip);  // normalised there; (0, 0, 0, 1) when off
+  u.clip = glm::vec4(scene_geometry(f).vessels.front().clip);  // normalised there; (0, 0, 0, 1) when off
   for (int k = 0; k <= Vessel::kSegments; ++k) u.knots[k] = {v.r_outer[size_t(k)], v.r_inner[size_t(k)], 0, 0};
   return u;
 }
@@ -157,20 +160,21 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug)
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, fill_tex_);
-  if (f.fill_table && f.fill_table != uploaded_table_) {  // only when the glass changed
+  if (f.vessels.front().fill_table && f.vessels.front().fill_table != uploaded_table_) {  // only when the glass changed
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, FillTable::kVolumes, FillTable::kTilts, GL_RED, GL_FLOAT,
-                    f.fill_table->offset.data());
-    uploaded_table_ = f.fill_table;
+                    f.vessels.front().fill_table->offset.data());
+    uploaded_table_ = f.vessels.front().fill_table;
   }
   glViewport(0, 0, width, height);
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
   // Only the code a frame needs: waves and foam are compiled in when present (software
   // rasterizers pay for code even where a uniform branch skips it). Built when first used.
-  const SurfaceWaves& w = f.liquid.waves;
-  const bool waves = f.has_liquid && !w.flat();
-  const bool foam = f.has_liquid && f.foam.thickness > 1e-4;
+  const VesselFrame& vf = f.vessels.front();
+  const SurfaceWaves& w = vf.liquid.waves;
+  const bool waves = vf.has_liquid && !w.flat();
+  const bool foam = vf.has_liquid && vf.foam.thickness > 1e-4;
   const int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0);
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
@@ -203,7 +207,7 @@ void Renderer::draw_bubbles(const FrameState& f, int width, int height) {
   glBindVertexArray(bubble_vao_);
   glBindBuffer(GL_ARRAY_BUFFER, bubble_vbo_);
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(), GL_STREAM_DRAW);
-  const Params& p = f.params;
+  const SceneParams& p = f.params;
   const GLuint id = bubble_program_->id();
   glUseProgram(id);
   // What a bubble mirrors: the studio around it (its lights are several times the sky).

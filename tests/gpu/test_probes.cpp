@@ -141,7 +141,7 @@ TEST(Probe, LiquidSurfaceAtSolvedFillHeight) {
     for (int x = 0; x < n; ++x) {
       if (int(std::lround(depth.px(x, y)[1])) != int(Material::LiquidSurface)) continue;
       Ray r = camera_ray(cam, x + 0.5, y + 0.5, n, n);
-      EXPECT_NEAR(r.at(depth.px(x, y)[0]).y, f.vessel.fill_height(0.6), 2e-5);
+      EXPECT_NEAR(r.at(depth.px(x, y)[0]).y, f.vessels[0].vessel.fill_height(0.6), 2e-5);
       ++checked;
     }
   EXPECT_GT(checked, 200);

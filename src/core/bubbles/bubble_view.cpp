@@ -1,6 +1,7 @@
 #include "core/bubbles/bubble_view.hpp"
 
 #include "core/scene/camera.hpp"
+#include "core/reference/media.hpp"
 #include "core/reference/optics.hpp"
 
 #include <algorithm>
@@ -12,49 +13,44 @@ namespace {
 
 enum class Medium { Air, Glass, Liquid };
 
-// The leg of a camera path inside the liquid (world frame), and what it crossed to get there.
+// The leg of a camera path inside one glass's liquid (world frame), and what it crossed
+// to get there: other glasses and their drinks, in any order.
 struct LiquidLeg {
   bool ok = false;
   Ray ray;
   double before = 0;     // path length before the liquid
-  glm::dvec3 thr{1.0};   // Fresnel and glass absorption on the way
+  glm::dvec3 thr{1.0};   // Fresnel, glass and other drinks' absorption on the way
 };
 
-LiquidLeg trace_to_liquid(const FrameState& f, const SceneGeometry& geo, Ray r) {
-  const double n_of[3] = {1.0, f.params.glass.ior, f.params.liquid.ior};
-  const glm::dquat to_local = glm::inverse(f.pose.orientation);
+LiquidLeg trace_to_liquid(const FrameState& f, const SceneGeometry& geo, int target, Ray r) {
   LiquidLeg leg;
   Medium medium = Medium::Air;
-  for (int e = 0; e < 6; ++e) {
+  int inside = -1;  // the object whose glass or liquid the path is in
+  for (int e = 0; e < 6 + 4 * int(f.vessels.size()); ++e) {
     const Hit h = first_hit(geo, r, 1e-6);
     if (!h.valid() || h.m == Material::Floor) return leg;
-    const glm::dvec3 p = r.at(h.t);
+    if (inside >= 0 && h.object != inside) return leg;  // objects do not overlap: numerical trouble
+    const VesselFrame& v = f.vessels[size_t(h.object)];
+    const VesselParams& p = v.params;
+    const double n_of[3] = {1.0, p.glass.ior, p.liquid.ior};
+    const glm::dvec3 p_hit = r.at(h.t);
     leg.before += h.t;
-    if (medium == Medium::Glass) leg.thr *= glm::exp(-glm::dvec3(f.params.glass.absorption) * h.t);
-    Medium next = Medium::Air;
-    switch (h.m) {
-      case Material::LiquidSurface:
-        // From above, the head sits on the surface: what is under it is hidden.
-        if (medium == Medium::Air && f.foam.thickness > 5e-4) return leg;
-        next = medium == Medium::Liquid ? Medium::Air : Medium::Liquid;
-        break;
-      case Material::ClipGlass: next = medium == Medium::Air ? Medium::Glass : Medium::Air; break;
-      case Material::ClipLiquid: next = medium == Medium::Air ? Medium::Liquid : Medium::Air; break;
-      case Material::GlassInner:
-      case Material::CavityFloor:
-        next = medium != Medium::Glass ? Medium::Glass
-                                       : (geo.liquid.below(to_local * (p - f.pose.position)) ? Medium::Liquid : Medium::Air);
-        break;
-      default: next = medium == Medium::Glass ? Medium::Air : Medium::Glass;
-    }
+    if (medium == Medium::Glass) leg.thr *= glm::exp(-glm::dvec3(p.glass.absorption) * h.t);
+    if (medium == Medium::Liquid)  // another glass's drink on the way
+      leg.thr *= glm::exp(-(glm::dvec3(v.liquid_absorption) + double(p.liquid.haze)) * h.t);
+    const bool below = v.liquid.below(glm::inverse(v.pose.orientation) * (p_hit - v.pose.position));
+    // From above, a head sits on the surface: what is under it is hidden.
+    if (h.m == Material::LiquidSurface && medium == Medium::Air && v.foam.thickness > 5e-4) return leg;
+    const Medium next = Medium(int(medium_across(h.m, MediumKind(int(medium)), below)));
     const glm::dvec3 n = glm::dot(h.n, r.d) < 0 ? h.n : -h.n;
     const double n1 = n_of[int(medium)], n2 = n_of[int(next)];
     const auto refracted = refract_dir(r.d, n, n1 / n2);
     if (!refracted) return leg;  // total internal reflection: not a straight view of the liquid
     leg.thr *= 1.0 - fresnel_dielectric(-glm::dot(n, r.d), n1, n2);
-    r = Ray{p, glm::normalize(*refracted)};
+    r = Ray{p_hit, glm::normalize(*refracted)};
     medium = next;
-    if (medium == Medium::Liquid) {
+    inside = medium == Medium::Air ? -1 : h.object;
+    if (medium == Medium::Liquid && h.object == target) {
       leg.ok = true;
       leg.ray = r;
       return leg;
@@ -63,21 +59,35 @@ LiquidLeg trace_to_liquid(const FrameState& f, const SceneGeometry& geo, Ray r) 
   return leg;
 }
 
+void add_sprites(const FrameState&, const SceneGeometry&, int target, const CameraBasis&, int width, int height,
+                 std::vector<BubbleSprite>& out);
 }  // namespace
 
 std::vector<BubbleSprite> bubble_sprites(const FrameState& f, int width, int height) {
   std::vector<BubbleSprite> out;
-  if (!f.has_liquid || f.bubbles.empty()) return out;
   const SceneGeometry geo = scene_geometry(f);
   const CameraBasis cam = camera_basis(f.camera, width, height);
+  for (size_t k = 0; k < f.vessels.size(); ++k) {
+    const VesselFrame& vf = f.vessels[k];
+    if (!vf.has_liquid || vf.bubbles.empty()) continue;
+    add_sprites(f, geo, int(k), cam, width, height, out);
+  }
+  std::sort(out.begin(), out.end(), [](const BubbleSprite& a, const BubbleSprite& b) { return a.distance > b.distance; });
+  return out;
+}
+
+namespace {
+void add_sprites(const FrameState& f, const SceneGeometry& geo, int target, const CameraBasis& cam, int width,
+                 int height, std::vector<BubbleSprite>& out) {
+  const VesselFrame& vf = f.vessels[size_t(target)];
   const glm::dvec3 right(cam.right), up(cam.up);
-  const glm::dvec3 sigma = glm::dvec3(f.liquid_absorption) + double(f.params.liquid.haze);
-  for (const Bubble& b : f.bubbles) {
-    if (geo.clipped(glm::dvec3(b.p))) continue;  // cut away with the cross-section
-    const glm::dvec3 c = f.pose.orientation * glm::dvec3(b.p) + f.pose.position;
+  const glm::dvec3 sigma = glm::dvec3(vf.liquid_absorption) + double(vf.params.liquid.haze);
+  for (const Bubble& b : vf.bubbles) {
+    if (geo.vessels[size_t(target)].clipped(glm::dvec3(b.p))) continue;  // cut away with the cross-section
+    const glm::dvec3 c = vf.pose.orientation * glm::dvec3(b.p) + vf.pose.position;
     // Miss of the pixel's liquid leg past the bubble centre, in the picture's axes.
     auto miss = [&](double px, double py, glm::dvec2& e, double& t, LiquidLeg& leg) {
-      leg = trace_to_liquid(f, geo, camera_ray(cam, px, py, width, height));
+      leg = trace_to_liquid(f, geo, target, camera_ray(cam, px, py, width, height));
       if (!leg.ok) return false;
       t = glm::dot(c - leg.ray.o, leg.ray.d);
       const glm::dvec3 d = c - leg.ray.at(t);
@@ -121,8 +131,7 @@ std::vector<BubbleSprite> bubble_sprites(const FrameState& f, int width, int hei
     s.distance = float(leg.before + t);
     if (s.radius > 0.05f) out.push_back(s);
   }
-  std::sort(out.begin(), out.end(), [](const BubbleSprite& a, const BubbleSprite& b) { return a.distance > b.distance; });
-  return out;
 }
+}  // namespace
 
 }  // namespace draught

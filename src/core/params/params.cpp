@@ -202,7 +202,15 @@ std::string_view type_name(ParamType t) {
 }
 
 const std::vector<ParamDesc>& param_table() {
-  static const std::vector<ParamDesc> table = make_table();
+  static const std::vector<ParamDesc> table = [] {
+    std::vector<ParamDesc> t = make_table();
+    for (ParamDesc& d : t) {
+      const std::string group = d.path.substr(0, d.path.find('.'));
+      if (group == "glass" || group == "liquid" || group == "foam" || group == "bubbles" || group == "clip")
+        d.scope = ParamScope::Vessel;
+    }
+    return t;
+  }();
   return table;
 }
 

@@ -111,17 +111,29 @@ struct RenderParams {
   int max_events;
 };
 
-struct Params {
+// The groups that belong to one vessel object of a scene: its glass and its drink.
+struct VesselParams {
   GlassParams glass;
   LiquidParams liquid;
   FoamParams foam;
   BubbleParams bubbles;
+  ClipParams clip;
+};
+
+// The groups that belong to the scene as a whole: surroundings, light, camera, output.
+struct SceneParams {
   EnvParams env;
   LightParams light;
   CameraParams camera;
-  ClipParams clip;
   RenderParams render;
 };
+
+// One glass in its scene: what a single-glass preset describes and what `--set glass.ior`
+// edits. A Scene (core/scene/scene.hpp) holds SceneParams and one VesselParams per vessel.
+struct Params : VesselParams, SceneParams {};
+
+// Which struct a parameter lives in: the scene's, or each vessel object's.
+enum class ParamScope { Scene, Vessel };
 
 enum class ParamType { Float, Int, Bool, Vec3, Color, Enum, Curve };
 std::string_view type_name(ParamType);
@@ -138,6 +150,7 @@ struct ParamDesc {
   std::string doc;
   std::vector<std::string> choices;  // Enum only
   void* (*field)(Params&);           // where the value lives in Params
+  ParamScope scope = ParamScope::Scene;  // whose struct holds it: the scene's or each vessel's
 };
 
 // An error in a parameter value. `field` is the parameter path, `expected` says what

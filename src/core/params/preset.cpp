@@ -222,4 +222,9 @@ Params resolve_scene(const SceneRequest& req, std::string* log) {
   return p;
 }
 
+Scene resolve_scene_objects(const SceneRequest& req, std::string* log) {
+  // Single-glass presets only so far; scene presets with objects are loaded here next.
+  return single_glass_scene(resolve_scene(req, log));
+}
+
 }  // namespace draught

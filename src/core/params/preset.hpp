@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/params/params.hpp"
+#include "core/scene/scene.hpp"
 
 #include <filesystem>
 #include <string>
@@ -53,5 +54,9 @@ struct SceneRequest {
 // message names the file or flag, the field and what was expected. `log` (optional)
 // receives which files were used.
 Params resolve_scene(const SceneRequest&, std::string* log = nullptr);
+// The same request as a scene of objects: a scene preset with "objects" places several
+// glasses; any other preset gives a scene of one glass. --set paths may address one
+// object (`objects[2].liquid.fill=0.5`); a vessel path without a prefix sets every object.
+Scene resolve_scene_objects(const SceneRequest&, std::string* log = nullptr);
 
 }  // namespace draught

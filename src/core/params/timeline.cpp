@@ -4,6 +4,7 @@
 #include "core/params/json_input.hpp"
 #include "core/params/preset.hpp"
 #include "core/sim/simulation.hpp"
+#include "core/scene/frame.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -273,7 +274,7 @@ FrameState timeline_frame(const Timeline& tl, const Params& base, double t) {
   sim.settle_bubbles(4.0);
   TimelineDriver driver(tl, sim.vessel().r_outer.front());
   play_timeline(sim, driver, tl, base, t);
-  return sim.frame();
+  return assemble_frame(tl.params_at(t, base), {sim.frame()});
 }
 
 }  // namespace draught

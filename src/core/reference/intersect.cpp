@@ -244,7 +244,7 @@ Hit hit_liquid_surface(const Vessel& v, const LiquidPlane& l, const Ray& ray, do
   return {t, glm::normalize(l.n - glm::dvec3(g.x, 0, g.y)), Material::LiquidSurface};
 }
 
-Hit first_hit(const SceneGeometry& s, const Ray& world_ray, double tmin) {
+Hit hit_vessel(const VesselGeometry& s, const Ray& world_ray, double tmin) {
   const Vessel& v = *s.vessel;
   const glm::dquat to_local = glm::inverse(s.pose.orientation);
   const Ray ray{to_local * (world_ray.o - s.pose.position), to_local * world_ray.d};
@@ -284,12 +284,25 @@ Hit first_hit(const SceneGeometry& s, const Ray& world_ray, double tmin) {
       keep_nearest(best, {t, cn, Material::ClipLiquid});
   }
   best.n = s.pose.orientation * best.n;
+  return best;
+}
+
+Hit first_hit(const SceneGeometry& s, const Ray& world_ray, double tmin) {
+  Hit best;
+  for (size_t i = 0; i < s.vessels.size(); ++i) {
+    Hit h = hit_vessel(s.vessels[i], world_ray, tmin);
+    h.object = int(i);
+    keep_nearest(best, h);
+  }
   if (s.floor && world_ray.d.y < 0) {
     const double t = -world_ray.o.y / world_ray.d.y;
-    // Where the glass stands on the floor, its foot is the surface.
-    const glm::dvec3 p = to_local * (world_ray.at(t) - s.pose.position);
-    if (t > tmin && !(std::fabs(p.y) < 1e-6 && std::hypot(p.x, p.z) <= v.r_outer.front()))
-      keep_nearest(best, {t, {0, 1, 0}, Material::Floor});
+    // Where a glass stands on the floor, its foot is the surface.
+    bool on_foot = false;
+    for (const VesselGeometry& g : s.vessels) {
+      const glm::dvec3 p = glm::inverse(g.pose.orientation) * (world_ray.at(t) - g.pose.position);
+      on_foot = on_foot || (std::fabs(p.y) < 1e-6 && std::hypot(p.x, p.z) <= g.vessel->r_outer.front());
+    }
+    if (t > tmin && !on_foot) keep_nearest(best, {t, {0, 1, 0}, Material::Floor, -1});
   }
   return best;
 }

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <limits>
+#include <vector>
 
 namespace draught {
 
@@ -36,6 +37,7 @@ struct Hit {
   double t = std::numeric_limits<double>::infinity();
   glm::dvec3 n{0.0};  // glass surfaces: pointing out of the glass; liquid and floor: up
   Material m = Material::None;
+  int object = -1;  // which vessel of the scene (first_hit); -1 for the floor or none
   bool valid() const { return m != Material::None; }
 };
 
@@ -62,21 +64,30 @@ struct LiquidPlane {
   bool below(const glm::dvec3& p) const { return level(p) < 0; }
 };
 
-// Rays are in the world; the glass stands in it at `pose` (the floor is world y = 0).
-struct SceneGeometry {
-  const Vessel* vessel;
+// One vessel of a scene as the reference intersector sees it: rays are in the world; the
+// glass stands in it at `pose` (the floor is world y = 0).
+struct VesselGeometry {
+  const Vessel* vessel = nullptr;
   LiquidPlane liquid;
-  bool floor = true;
   Pose pose;
   glm::dvec4 clip{0, 0, 0, 1};  // cross-section (glass frame): dot(n, p) > offset is cut away; n = 0: none
   bool clipped(const glm::dvec3& local) const { return glm::dot(glm::dvec3(clip), local) > clip.w; }
+};
+
+// Every object of a scene, and the floor.
+struct SceneGeometry {
+  std::vector<VesselGeometry> vessels;
+  bool floor = true;
 };
 
 Hit hit_wall(const Vessel&, bool inner, const Ray&, double tmin);
 Hit hit_rim(const Vessel&, const Ray&, double tmin);
 // Where a ray first meets the liquid's (wavy) surface inside the cavity, local frame.
 Hit hit_liquid_surface(const Vessel&, const LiquidPlane&, const Ray& local_ray, double tmin);
-// Nearest surface along the world ray (glass, liquid surface, floor); normals in the world.
+// Nearest surface of one vessel along the world ray (glass, liquid surface, cut faces);
+// normals in the world.
+Hit hit_vessel(const VesselGeometry&, const Ray& world_ray, double tmin = 1e-7);
+// Nearest surface along the world ray over every object and the floor; normals in the world.
 Hit first_hit(const SceneGeometry&, const Ray&, double tmin = 1e-7);
 
 }  // namespace draught

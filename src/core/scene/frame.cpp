@@ -1,38 +1,96 @@
 #include "core/scene/frame.hpp"
 
-#include "core/sim/simulation.hpp"
+#include "core/scene/camera.hpp"
+#include "core/sim/scene_simulation.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace draught {
 
-CameraParams frame_camera(const CameraParams& c, const Vessel& v) {
-  if (!c.auto_frame) return c;
+namespace {
+// Where everything to be framed lies: a box around the glasses as they stand.
+struct Bounds {
+  glm::dvec3 lo{1e30}, hi{-1e30};
+  void add(const glm::dvec3& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  bool empty() const { return lo.x > hi.x; }
+};
+
+CameraParams frame_bounds(const CameraParams& c, const Bounds& b) {
+  if (!c.auto_frame || b.empty()) return c;
   glm::dvec3 back = glm::dvec3(c.eye - c.target);
   back = glm::length(back) > 1e-9 ? glm::normalize(back) : glm::dvec3(0, 0, 1);
   const double half_tan = std::tan(glm::radians(double(c.vfov)) * 0.5);
-  // Half the glass height with a margin for the floor and the rim, or its width.
-  const double half = std::max(0.5 * v.height + 0.012, v.bound_radius * 1.1) * 1.12;
-  const double dist = half / half_tan + v.bound_radius;
+  const glm::dvec3 size = b.hi - b.lo;
+  const double radius = 0.5 * std::max(size.x, size.z);
+  const double height = b.hi.y;
+  // Half the height with a margin for the floor and the rim, or the width.
+  const double half = std::max(0.5 * height + 0.012, radius * 1.1) * 1.12;
+  const double dist = half / half_tan + radius;
   CameraParams out = c;
-  out.target = glm::vec3(0.0, 0.47 * v.height, 0.0);
-  out.eye = out.target + glm::vec3(back * dist);
+  const glm::dvec3 centre(0.5 * (b.lo.x + b.hi.x), 0.47 * height, 0.5 * (b.lo.z + b.hi.z));
+  out.target = glm::vec3(centre);
+  out.eye = glm::vec3(centre + back * dist);
   return out;
 }
+}  // namespace
 
-FrameState make_frame(const Params& p) {
-  Simulation sim(p);
+CameraParams frame_camera(const CameraParams& c, const Vessel& v) {
+  Bounds b;
+  b.add({-v.bound_radius, 0, -v.bound_radius});
+  b.add({v.bound_radius, v.height, v.bound_radius});
+  return frame_bounds(c, b);
+}
+
+CameraParams frame_camera(const CameraParams& c, const std::vector<VesselFrame>& vessels) {
+  Bounds b;
+  // Each glass as it stands at its place (its upright bounds, so motion does not make the
+  // camera swim).
+  for (const VesselFrame& f : vessels) {
+    const glm::dvec3 at(f.placement.position.x, 0, f.placement.position.z);
+    const double r = f.vessel.bound_radius;
+    b.add(at + glm::dvec3(-r, 0, -r));
+    b.add(at + glm::dvec3(r, f.vessel.height, r));
+  }
+  return frame_bounds(c, b);
+}
+
+FrameState assemble_frame(const SceneParams& p, std::vector<VesselFrame> vessels, int selected) {
+  FrameState f;
+  f.params = p;
+  f.vessels = std::move(vessels);
+  f.selected = std::clamp(selected, 0, std::max(0, int(f.vessels.size()) - 1));
+  f.camera = frame_camera(p.camera, f.vessels);
+  return f;
+}
+
+FrameState make_frame(const Scene& s) {
+  SceneSimulation sim(s);
   sim.settle_bubbles(4.0);
   return sim.frame();
 }
 
+FrameState make_frame(const Params& p) { return make_frame(single_glass_scene(p)); }
+
 SceneGeometry scene_geometry(const FrameState& f) {
-  SceneGeometry g{&f.vessel, f.liquid, f.params.env.floor && !f.params.render.transparent, f.pose};
-  const ClipParams& c = f.params.clip;
-  const double len = glm::length(glm::dvec3(c.normal));
-  if (c.enabled && len > 1e-4) g.clip = glm::dvec4(glm::dvec3(c.normal) / len, c.offset);
+  SceneGeometry g;
+  g.floor = f.params.env.floor && !f.params.render.transparent;
+  for (const VesselFrame& v : f.vessels) {
+    VesselGeometry vg{&v.vessel, v.liquid, v.pose};
+    const ClipParams& c = v.params.clip;
+    const double len = glm::length(glm::dvec3(c.normal));
+    if (c.enabled && len > 1e-4) vg.clip = glm::dvec4(glm::dvec3(c.normal) / len, c.offset);
+    g.vessels.push_back(vg);
+  }
   return g;
+}
+
+int pick_object(const FrameState& f, double px, double py, int width, int height) {
+  const CameraBasis cam = camera_basis(f.camera, width, height);
+  return first_hit(scene_geometry(f), camera_ray(cam, px, py, width, height)).object;
 }
 
 }  // namespace draught

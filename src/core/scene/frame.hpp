@@ -1,40 +1,59 @@
-// FrameState: the plain-data snapshot the renderer draws, made by the Simulation (or,
-// for a still picture, by make_frame at rest). The GPU side never computes geometry
-// or physics itself.
+// FrameState: the plain-data snapshot of one frame of a scene that the renderer draws,
+// made by the simulation (or, for a still picture, by make_frame at rest). It holds every
+// object's state; the GPU side never computes geometry or physics itself.
 #pragma once
 
 #include "core/bubbles/bubbles.hpp"
-#include "core/vessel/fill_table.hpp"
 #include "core/foam/foam.hpp"
+#include "core/params/params.hpp"
 #include "core/reference/intersect.hpp"
 #include "core/scene/motion.hpp"
-#include "core/params/params.hpp"
+#include "core/scene/scene.hpp"
+#include "core/vessel/fill_table.hpp"
 #include "core/vessel/vessel.hpp"
 
 #include <memory>
+#include <vector>
 
 namespace draught {
 
-struct FrameState {
-  Params params;
-  CameraParams camera;  // the camera in effect (auto-framed or as given)
+// One vessel object's state in a frame.
+struct VesselFrame {
+  VesselParams params;
+  Placement placement;  // where it stands in the scene (auto-framing uses this, not the motion)
   Vessel vessel;
   std::shared_ptr<const FillTable> fill_table;  // the same object while the glass is unchanged
-  Pose pose;                                    // the glass in the world
+  Pose pose;                                    // the glass in the world (placement and motion)
   LiquidPlane liquid;                           // local frame; offset < base when empty
   double liquid_tilt = 0, liquid_azimuth = 0;   // the surface normal in the local frame
   double liquid_fraction = 0;                   // of the cavity volume
   bool has_liquid = false;
-  FoamFrame foam;  // the head on the liquid, lacing, big bubbles
+  FoamFrame foam;               // the head on the liquid, lacing, big bubbles
   std::vector<Bubble> bubbles;  // rising in the liquid, glass frame
   glm::vec3 liquid_absorption{0};
   double mean_outer_radius = 0;
 };
 
-// A still frame: the glass upright at rest, filled to params.liquid.fill.
-FrameState make_frame(const Params&);
-// The camera that frames the vessel, looking along target - eye of `c`.
-CameraParams frame_camera(const CameraParams& c, const Vessel&);
-SceneGeometry scene_geometry(const FrameState&);  // for the reference intersector
+struct FrameState {
+  SceneParams params;
+  CameraParams camera;  // the camera in effect (auto-framed or as given)
+  std::vector<VesselFrame> vessels;
+  int selected = 0;  // index into vessels of the object input drives
+};
+
+// The frame of these vessels in a scene with these parameters (the camera framed).
+FrameState assemble_frame(const SceneParams&, std::vector<VesselFrame>, int selected = 0);
+// A still frame: every glass upright at rest at its placement, filled to its liquid.fill.
+FrameState make_frame(const Scene&);
+FrameState make_frame(const Params&);  // a single glass
+// The camera that frames everything in the frame, looking along target - eye of `c`.
+CameraParams frame_camera(const CameraParams& c, const std::vector<VesselFrame>&);
+CameraParams frame_camera(const CameraParams& c, const Vessel&);  // one upright glass at the origin
+// The reference intersector's view of the frame (every object, the floor, clip planes).
+SceneGeometry scene_geometry(const FrameState&);
+
+// The object seen at pixel (px, py) of a width x height picture (the first surface along
+// the camera ray, reference intersector), or -1 for the floor and the sky.
+int pick_object(const FrameState&, double px, double py, int width, int height);
 
 }  // namespace draught

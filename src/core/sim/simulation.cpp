@@ -31,7 +31,7 @@ glm::dvec3 clamp_length(const glm::dvec3& v, double max_len) {
 }
 }  // namespace
 
-Simulation::Simulation(const Params& p) : params_(p), foam_(p.foam) {
+Simulation::Simulation(const VesselParams& p) : params_(p), foam_(p.foam) {
   rebuild_glass();
   fraction_ = std::clamp(double(p.liquid.fill), 0.0, 1.0);
   env_.radius = vessel_.inner_radius(vessel_.height);
@@ -46,7 +46,7 @@ void Simulation::rebuild_glass() {
 
 void Simulation::rebuild_bubbles() { bubbles_.emplace(bubble_settings(params_.bubbles), vessel_); }
 
-void Simulation::set_params(const Params& p) {
+void Simulation::set_params(const VesselParams& p) {
   const bool glass_changed = !same_glass(p.glass, params_.glass);
   const bool refill = p.liquid.fill != params_.liquid.fill;
   const bool bubbles_changed = !same_bubbles(p.bubbles, params_.bubbles);
@@ -154,6 +154,12 @@ void Simulation::step(const MotionSample& raw, double drink_rate) {
   bubbles_->step(dt, surface_, glm::inverse(m.pose.orientation) * glm::dvec3(0, 1, 0));
 }
 
+void Simulation::place(const Pose& pose) { motion_.pose = pose; }
+
+void Simulation::skip_to(double t) {
+  if (std::isfinite(t) && t > time_) time_ = t;
+}
+
 void Simulation::advance(InputDriver& driver, double t, double drink_rate) {
   if (!std::isfinite(t)) return;
   if (t - time_ > kMaxCatchUp) time_ = t - kMaxCatchUp;
@@ -162,12 +168,11 @@ void Simulation::advance(InputDriver& driver, double t, double drink_rate) {
 
 double Simulation::energy() const { return slosh_energy(slosh_, params_.liquid, env_); }
 
-FrameState Simulation::frame() const {
-  FrameState f;
+VesselFrame Simulation::frame() const {
+  VesselFrame f;
   f.params = params_;
   f.vessel = vessel_;
   f.fill_table = table_;
-  f.camera = frame_camera(params_.camera, vessel_);
   f.pose = motion_.pose;
   f.liquid = surface_;
   f.liquid_tilt = tilt_;

@@ -20,11 +20,11 @@ class Simulation {
   static constexpr double kStep = 1.0 / 240.0;  // seconds
   static constexpr double kMaxCatchUp = 0.25;   // a longer gap (a stalled app) is skipped, not simulated
 
-  explicit Simulation(const Params&);
+  explicit Simulation(const VesselParams&);
 
   // New parameters (a preset switch, a slider). The vessel and its fill table are
   // rebuilt only when the glass changed; a changed liquid.fill refills the glass.
-  void set_params(const Params&);
+  void set_params(const VesselParams&);
   void set_fraction(double fraction);  // drink or refill; clamped to what the glass holds
   void pour();                         // fill to liquid.fill with a fresh head building
   // Lets the bubbles rise for a while with the glass at rest, so a still picture (or
@@ -33,10 +33,16 @@ class Simulation {
   // Steps to time t (seconds), sampling the driver at every step. drink_rate: fraction
   // of the cavity drunk per second meanwhile (a sip).
   void advance(InputDriver&, double t, double drink_rate = 0);
+  // Puts the glass at rest at `pose` without stepping time (a placement in a scene).
+  void place(const Pose& pose);
+  // Jumps the clock forward to t without simulating the gap (a stalled app).
+  void skip_to(double t);
   // One step with this motion (tests, or callers that sample themselves).
   void step(const MotionSample&, double drink_rate = 0);
 
-  FrameState frame() const;
+  // This vessel's part of a frame (its pose includes where the motion put it).
+  VesselFrame frame() const;
+  const VesselParams& params() const { return params_; }
   double time() const { return time_; }
   double fraction() const { return fraction_; }
   double spilled() const { return spilled_; }  // fraction of the cavity lost over the rim
@@ -60,7 +66,7 @@ class Simulation {
   double headroom() const;
   SloshEnvironment environment(const glm::dvec3& centre_accel, double dt) const;
 
-  Params params_;
+  VesselParams params_;
   Vessel vessel_;
   std::shared_ptr<const FillTable> table_;
   double time_ = 0, fraction_ = 0, spilled_ = 0;

@@ -12,9 +12,10 @@ namespace draught {
 namespace {
 
 FrameState settled(const SceneRequest& req) {
-  Simulation sim(resolve_scene(req));
+  const Params p = resolve_scene(req);
+  Simulation sim(p);
   sim.settle_bubbles(3.0);
-  return sim.frame();
+  return assemble_frame(p, {sim.frame()});
 }
 
 // Closest distance from world point c to the path of pixel (px, py) once it is in the
@@ -22,7 +23,7 @@ FrameState settled(const SceneRequest& req) {
 double path_miss(const FrameState& f, double px, double py, int w, int h, const glm::dvec3& c) {
   const SceneGeometry geo = scene_geometry(f);
   Ray r = camera_ray(camera_basis(f.camera, w, h), px, py, w, h);
-  const double n[3] = {1.0, f.params.glass.ior, f.params.liquid.ior};
+  const double n[3] = {1.0, f.vessels[0].params.glass.ior, f.vessels[0].params.liquid.ior};
   int medium = 0;  // air, glass, liquid; through a side wall only
   for (int e = 0; e < 4 && medium != 2; ++e) {
     const Hit hit = first_hit(geo, r, 1e-6);
@@ -42,7 +43,7 @@ double path_miss(const FrameState& f, double px, double py, int w, int h, const 
 TEST(BubbleView, SpritesSitWhereTheRefractedViewMeetsTheBubble) {
   // Side view of a lager, level camera: every bubble is seen through the wall.
   const FrameState f = settled({"lager", "pint", {"foam.height=0"}, {"eye=0,0.07,0.3", "target=0,0.07,0", "vfov=30"}});
-  ASSERT_GT(f.bubbles.size(), 50u);
+  ASSERT_GT(f.vessels[0].bubbles.size(), 50u);
   const int w = 200, h = 200;
   const auto sprites = bubble_sprites(f, w, h);
   ASSERT_GT(sprites.size(), 20u);
@@ -50,7 +51,7 @@ TEST(BubbleView, SpritesSitWhereTheRefractedViewMeetsTheBubble) {
   int checked = 0;
   for (const BubbleSprite& s : sprites) {
     double best = 1e9, radius = 0;
-    for (const Bubble& b : f.bubbles) {
+    for (const Bubble& b : f.vessels[0].bubbles) {
       const double miss = path_miss(f, s.centre.x, s.centre.y, w, h, glm::dvec3(b.p));
       if (miss < best) best = miss, radius = b.radius;
     }

@@ -471,7 +471,7 @@ TEST(IntersectTorus, RimScaleInMetres) {
 
 enum class Region { Air, Glass, Liquid, Floor };
 
-struct Scene {
+struct TestScene {
   Vessel v;
   SceneGeometry g;
 };
@@ -479,14 +479,16 @@ struct Scene {
 // The point classifier that defines the geometry: the glass body (walls and base
 // between the outer and inner profiles) united with the rim torus; the liquid is the
 // rest of the cavity below the plane.
-Region classify(const SceneGeometry& s, const dvec3& p) {
+Region classify(const SceneGeometry& scene, const dvec3& p) {
+  const VesselGeometry& s = scene.vessels.front();
+  const bool floor = scene.floor;
   const Vessel& v = *s.vessel;
   const double r = std::hypot(p.x, p.z), y = p.y;
   const bool body = y >= 0 && y <= v.height && r <= v.outer_radius(y) && (y < v.base || r >= v.inner_radius(y));
   if (body || v.inside_torus(r, y)) return Region::Glass;
   if (y > v.base && y < v.height && r < v.inner_radius(y) && glm::dot(s.liquid.n, p) < s.liquid.offset)
     return Region::Liquid;
-  if (s.floor && y < 0 && r > v.r_outer.front()) return Region::Floor;
+  if (floor && y < 0 && r > v.r_outer.front()) return Region::Floor;
   return Region::Air;
 }
 
@@ -527,7 +529,9 @@ dvec3 gradient(F f, const dvec3& p, double h = 1e-7) {
 
 // Checks one first_hit result against the classifier. Returns a description of the
 // first problem, or "" when the hit is right.
-std::string check_first_hit(const SceneGeometry& s, const Ray& ray, double tmin, const Hit& hit) {
+std::string check_first_hit(const SceneGeometry& scene, const Ray& ray, double tmin, const Hit& hit) {
+  const VesselGeometry& s = scene.vessels.front();
+  const SceneGeometry& whole = scene;
   const Vessel& v = *s.vessel;
   std::ostringstream head, err;
   head.precision(17);
@@ -537,12 +541,12 @@ std::string check_first_hit(const SceneGeometry& s, const Ray& ray, double tmin,
   // 1. No crossing before the hit: march the classifier from the start.
   double t0, t1;
   const double end = hit.valid() ? hit.t : 10.0;
-  const Region start = classify(s, ray.at(tmin + 1e-9));
+  const Region start = classify(whole, ray.at(tmin + 1e-9));
   if (box_span(v, ray, tmin, t0, t1)) {
     t1 = std::min(t1, end - 1e-7);
     const double step = 1e-5;
     for (double t = std::max(t0, tmin + 1e-9); t < t1; t += step) {
-      const Region here = classify(s, ray.at(t));
+      const Region here = classify(whole, ray.at(t));
       if (here != start) {
         err << "reported " << (hit.valid() ? material_name(hit.m) : "no hit") << " at t=" << hit.t
             << " but the ray goes from " << region_name(start) << " into " << region_name(here)
@@ -610,10 +614,10 @@ std::string check_first_hit(const SceneGeometry& s, const Ray& ray, double tmin,
   const double cosang = std::fabs(glm::dot(ray.d, hit.n));
   if (cosang > 0.02) {
     const double e = 1e-6;
-    const Region before = classify(s, ray.at(hit.t - e)), after = classify(s, ray.at(hit.t + e));
+    const Region before = classify(whole, ray.at(hit.t - e)), after = classify(whole, ray.at(hit.t + e));
     if (before == after)
       return head.str() + "no region change across the hit (" + material_name(hit.m) + ", " + region_name(before) + ")";
-    const Region pos = classify(s, p + 1e-7 * hit.n), neg = classify(s, p - 1e-7 * hit.n);
+    const Region pos = classify(whole, p + 1e-7 * hit.n), neg = classify(whole, p - 1e-7 * hit.n);
     const bool glass_surface = hit.m != Material::LiquidSurface && hit.m != Material::Floor;
     if (glass_surface && !(neg == Region::Glass && pos != Region::Glass))
       return head.str() + "normal of " + material_name(hit.m) + " does not point out of the glass";
@@ -623,11 +627,13 @@ std::string check_first_hit(const SceneGeometry& s, const Ray& ray, double tmin,
   return "";
 }
 
-Scene pint_scene(double liquid_offset, dvec3 liquid_n = {0, 1, 0}, bool floor = false) {
-  Scene s{test::preset_vessel("pint"), {}};
-  s.g.vessel = &s.v;
-  s.g.liquid.n = glm::normalize(liquid_n);
-  s.g.liquid.offset = liquid_offset;
+TestScene pint_scene(double liquid_offset, dvec3 liquid_n = {0, 1, 0}, bool floor = false) {
+  TestScene s{test::preset_vessel("pint"), {}};
+  VesselGeometry vg;
+  vg.vessel = &s.v;
+  vg.liquid.n = glm::normalize(liquid_n);
+  vg.liquid.offset = liquid_offset;
+  s.g.vessels = {vg};
   s.g.floor = floor;
   return s;
 }
@@ -686,7 +692,7 @@ std::vector<Ray> vessel_rays(const Vessel& v, std::mt19937& rng, int n) {
 
 TEST(VesselHits, FirstHitIsOnTheSurfaceAndNothingIsSkipped) {
   std::mt19937 rng(21);
-  const Scene s = pint_scene(-1.0);  // empty glass, no floor
+  const TestScene s = pint_scene(-1.0);  // empty glass, no floor
   int counts[8] = {};
   int failures = 0;
   for (const Ray& ray : vessel_rays(s.v, rng, 1800)) {
@@ -705,7 +711,7 @@ TEST(VesselHits, FirstHitIsOnTheSurfaceAndNothingIsSkipped) {
 TEST(VesselHits, HorizontalRaysAcrossTheRim) {
   // Exactly horizontal rays at the height of the bead (d.y == 0 makes the torus
   // quartic biquadratic after depression), at every offset from the axis.
-  const Scene s = pint_scene(-1.0);
+  const TestScene s = pint_scene(-1.0);
   const Vessel& v = s.v;
   int failures = 0, rim_hits = 0;
   for (double fy : {-0.9, -0.5, 0.0, 0.3, 0.6, 0.9, 0.999}) {
@@ -732,7 +738,7 @@ TEST(VesselHits, FirstHitWithLiquidAndFloor) {
   const Vessel probe = test::preset_vessel("pint");
   const double level = probe.fill_height(0.6);
   for (dvec3 n : {dvec3(0, 1, 0), dvec3(0.15, 1, -0.1)}) {
-    const Scene s = pint_scene(level * glm::normalize(n).y, n, /*floor=*/true);
+    const TestScene s = pint_scene(level * glm::normalize(n).y, n, /*floor=*/true);
     int counts[8] = {};
     int failures = 0;
     for (const Ray& ray : vessel_rays(s.v, rng, 1200)) {
@@ -837,7 +843,7 @@ TEST(VesselHits, HitRimIsOnTheTorusAndFirst) {
 }
 
 TEST(VesselHits, MaterialsOfSimpleRays) {
-  const Scene empty = pint_scene(-1.0);
+  const TestScene empty = pint_scene(-1.0);
   const Vessel& v = empty.v;
   // Down the axis into an empty glass: the cavity floor, normal up.
   Hit h = first_hit(empty.g, Ray{dvec3(0, 0.5, 0), dvec3(0, -1, 0)});
@@ -846,7 +852,7 @@ TEST(VesselHits, MaterialsOfSimpleRays) {
   EXPECT_NEAR(h.n.y, 1.0, 1e-12);
   // With liquid: the liquid surface first.
   const double level = v.fill_height(0.5);
-  const Scene full = pint_scene(level);
+  const TestScene full = pint_scene(level);
   h = first_hit(full.g, Ray{dvec3(0, 0.5, 0), dvec3(0, -1, 0)});
   EXPECT_EQ(h.m, Material::LiquidSurface);
   EXPECT_NEAR(h.t, 0.5 - level, 1e-12);
@@ -874,7 +880,7 @@ TEST(VesselHits, MaterialsOfSimpleRays) {
   EXPECT_NEAR(h.t, 0.5 - v.height - v.rim_minor, 1e-10);
   EXPECT_NEAR(h.n.y, 1.0, 1e-9);
   // The floor, beside the glass.
-  const Scene floor = pint_scene(-1.0, {0, 1, 0}, true);
+  const TestScene floor = pint_scene(-1.0, {0, 1, 0}, true);
   h = first_hit(floor.g, Ray{dvec3(0.2, 0.3, 0), dvec3(0, -1, 0)});
   EXPECT_EQ(h.m, Material::Floor);
   EXPECT_NEAR(h.t, 0.3, 1e-12);

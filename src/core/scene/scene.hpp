@@ -1,0 +1,74 @@
+// A scene: the surroundings (SceneParams) and a list of objects, each placed in the world.
+// Today's one kind of object is a vessel: a glass with its drink. A new kind (a field of
+// metaball droplets, a point cloud) is a struct of its own in its own core folder, added
+// to ObjectKind below; nothing else in the scene or the vessel code changes (see
+// docs/ARCHITECTURE.md, "How to add an object kind").
+#pragma once
+
+#include "core/params/params.hpp"
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace draught {
+
+// Where an object stands: on the floor (world y = 0) at (x, z), turned by yaw about the
+// world's up axis. Motion (tilt, slosh, a shake) is added by the object's simulation.
+struct Placement {
+  glm::vec3 position{0.0f};  // metres; y is the height of the foot above the floor
+  float yaw = 0;             // degrees, counter-clockwise seen from above
+};
+
+// A glass and its drink.
+struct VesselObject {
+  VesselParams params;
+};
+
+// Every kind an object can be (one registration per kind).
+using ObjectKind = std::variant<VesselObject>;
+
+struct SceneObject {
+  std::string name;  // from the scene file ("pilsner"); unique within the scene
+  Placement placement;
+  ObjectKind kind;
+};
+
+// The most objects one scene may hold. Object data reaches the GPU in data textures (one
+// row per object), so this is not the 16 KB uniform-block limit of GLES 3.0; it bounds
+// the per-pixel object loop and the simulation's cost. Tested at the limit.
+inline constexpr int kMaxSceneObjects = 64;
+
+struct Scene {
+  SceneParams params;
+  std::vector<SceneObject> objects;
+  int selected = 0;  // the object that input drives (viewer, web page)
+};
+
+// The scene of a single-glass document: one vessel at the origin.
+Scene single_glass_scene(const Params&);
+// The document of one vessel in its scene (what a single-glass UI or the old API edits).
+Params vessel_document(const Scene&, int object);
+
+// A parameter path that may name one object: "objects[2].liquid.fill" (object 2),
+// "liquid.fill" (every vessel object; object = -1), "env.floor" (the scene).
+struct ParamRef {
+  int object = -1;
+  const ParamDesc* desc = nullptr;
+};
+// Throws ParamError for an unknown path, an object index out of range, or an object
+// prefix on a scene parameter.
+ParamRef parse_param_ref(const Scene&, std::string_view path);
+// Reads a value (object -1 on a vessel parameter reads the selected object).
+ParamValue get_param(const Scene&, const ParamRef&);
+// Checks and sets; nothing is written unless the value is valid.
+void set_param(Scene&, const ParamRef&, const ParamValue&);
+
+// The vessel of an object, or nullptr for another kind.
+inline VesselObject* as_vessel(SceneObject& o) { return std::get_if<VesselObject>(&o.kind); }
+inline const VesselObject* as_vessel(const SceneObject& o) { return std::get_if<VesselObject>(&o.kind); }
+
+}  // namespace draught

@@ -1,0 +1,102 @@
+#include "core/sim/scene_simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace draught {
+
+MotionSample placed(const MotionSample& m, const Placement& at) {
+  MotionSample out = m;
+  const glm::dquat yaw = glm::angleAxis(glm::radians(double(at.yaw)), glm::dvec3(0, 1, 0));
+  out.pose.orientation = m.pose.orientation * yaw;
+  out.pose.position = m.pose.position + glm::dvec3(at.position);
+  return out;
+}
+
+SceneSimulation::SceneSimulation(const Scene& s) { set_scene(s); }
+
+void SceneSimulation::set_scene(const Scene& s) {
+  const bool same_list = s.objects.size() == scene_.objects.size() && sims_.size() == s.objects.size();
+  if (!same_list) sims_.assign(s.objects.size(), std::nullopt);
+  for (size_t i = 0; i < s.objects.size(); ++i) {
+    const VesselObject* v = as_vessel(s.objects[i]);
+    if (!v) {
+      sims_[i].reset();
+      continue;
+    }
+    if (sims_[i]) {
+      sims_[i]->set_params(v->params);
+    } else {
+      sims_[i].emplace(v->params);
+    }
+    // At rest at its placement until motion arrives.
+    if (!same_list) sims_[i]->place(placed(MotionSample{}, s.objects[i].placement).pose);
+  }
+  scene_ = s;
+  scene_.selected = std::clamp(s.selected, 0, std::max(0, int(s.objects.size()) - 1));
+}
+
+void SceneSimulation::select(int object) {
+  scene_.selected = std::clamp(object, 0, std::max(0, int(scene_.objects.size()) - 1));
+}
+
+Simulation* SceneSimulation::vessel(int i) {
+  return i >= 0 && i < int(sims_.size()) && sims_[size_t(i)] ? &*sims_[size_t(i)] : nullptr;
+}
+const Simulation* SceneSimulation::vessel(int i) const {
+  return i >= 0 && i < int(sims_.size()) && sims_[size_t(i)] ? &*sims_[size_t(i)] : nullptr;
+}
+
+Simulation& SceneSimulation::selected_vessel() {
+  if (Simulation* s = vessel(scene_.selected)) return *s;
+  for (auto& s : sims_)
+    if (s) return *s;
+  throw std::logic_error("the scene has no vessel");
+}
+
+void SceneSimulation::settle_bubbles(double seconds) {
+  for (auto& s : sims_)
+    if (s) s->settle_bubbles(seconds);
+}
+
+void SceneSimulation::step(const MotionSample& m, double drink_rate) {
+  for (size_t i = 0; i < sims_.size(); ++i) {
+    if (!sims_[i]) continue;
+    const Placement& at = scene_.objects[i].placement;
+    if (int(i) == scene_.selected) {
+      sims_[i]->step(placed(m, at), drink_rate);
+    } else {
+      MotionSample rest;
+      rest.time = m.time;
+      sims_[i]->step(placed(rest, at), 0);
+    }
+  }
+}
+
+void SceneSimulation::advance(InputDriver& driver, double t, double drink_rate) {
+  // Fixed steps as Simulation::advance, every object on the same clock.
+  if (!std::isfinite(t) || sims_.empty()) return;
+  if (t - time() > Simulation::kMaxCatchUp)
+    for (auto& s : sims_)
+      if (s) s->skip_to(t - Simulation::kMaxCatchUp);
+  while (time() + Simulation::kStep <= t + 1e-9) step(driver.sample(time() + Simulation::kStep), drink_rate);
+}
+
+FrameState SceneSimulation::frame() const {
+  std::vector<VesselFrame> vessels;
+  for (size_t i = 0; i < sims_.size(); ++i)
+    if (sims_[i]) {
+      vessels.push_back(sims_[i]->frame());
+      vessels.back().placement = scene_.objects[i].placement;
+    }
+  return assemble_frame(scene_.params, std::move(vessels), scene_.selected);
+}
+
+double SceneSimulation::time() const {
+  for (const auto& s : sims_)
+    if (s) return s->time();
+  return 0;
+}
+
+}  // namespace draught

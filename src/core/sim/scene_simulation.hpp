@@ -1,0 +1,51 @@
+// The simulation of a whole scene: one Simulation per vessel object, each at its
+// placement. Input drives the selected object; the others stand at rest (or follow a
+// timeline's actions addressed to them). Deterministic like Simulation.
+#pragma once
+
+#include "core/scene/frame.hpp"
+#include "core/scene/scene.hpp"
+#include "core/sim/simulation.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace draught {
+
+// A motion sample of the object's own stage moved to its placement: the foot's centre
+// at placement.position, the glass turned by placement.yaw about its axis.
+MotionSample placed(const MotionSample&, const Placement&);
+
+class SceneSimulation {
+ public:
+  explicit SceneSimulation(const Scene&);
+
+  // A new scene (a preset switch, a slider). Objects whose glass is unchanged keep their
+  // simulation state; a different object list rebuilds everything.
+  void set_scene(const Scene&);
+  const Scene& scene() const { return scene_; }
+
+  int selected() const { return scene_.selected; }
+  void select(int object);  // clamped to the objects there are
+
+  void settle_bubbles(double seconds);
+  // Steps every object to time t: the selected one samples `driver`, the others stand still.
+  void advance(InputDriver& driver, double t, double drink_rate = 0);
+  // One step: the selected object moves with `m` (in its own stage), the others rest.
+  void step(const MotionSample& m, double drink_rate = 0);
+
+  // The simulation of object i (nullptr when it is not a vessel).
+  Simulation* vessel(int object);
+  const Simulation* vessel(int object) const;
+  // The selected object's simulation, or the first vessel's.
+  Simulation& selected_vessel();
+
+  FrameState frame() const;
+  double time() const;
+
+ private:
+  Scene scene_;
+  std::vector<std::optional<Simulation>> sims_;  // one per object; empty for other kinds
+};
+
+}  // namespace draught
