@@ -198,7 +198,8 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
   for (int i = 0; i < int(base.objects.size()); ++i)
     if (const Simulation* v = sim.vessel(i)) spilled = std::max(spilled, v->spilled());
   std::printf("wrote %s (%d frame%s, %g fps, %.2f s; spilled %.1f %% of the glass%s)\n", out.string().c_str(), frames,
-              frames == 1 ? "" : "s", fps, frames / fps, 100.0 * spilled, base.objects.size() > 1 ? " that spilled most" : "");
+              frames == 1 ? "" : "s", fps, frames / fps, 100.0 * spilled,
+              base.objects.size() > 1 ? " that spilled most" : "");
   return 0;
 }
 

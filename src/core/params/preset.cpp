@@ -85,7 +85,8 @@ PresetObject parse_object(const json& o, const std::string& file, const std::str
     const json& p = o["position"];
     const std::string expected =
         "expected [x, y, z] in metres: x and z in [-5, 5], y (the foot above the floor) in [0, 1]";
-    if (!p.is_array() || p.size() != 3) throw InputError(file + ": field '" + at + ".position': " + expected + ", got " + short_dump(p));
+    if (!p.is_array() || p.size() != 3)
+      throw InputError(file + ": field '" + at + ".position': " + expected + ", got " + short_dump(p));
     for (int i = 0; i < 3; ++i) {
       const json& c = p[size_t(i)];
       const double lo = i == 1 ? 0.0 : -5.0, hi = i == 1 ? 1.0 : 5.0;
@@ -398,7 +399,8 @@ std::pair<ParamRef, ParamValue> parse_assignment(const Scene& scene, const std::
   ParamRef ref;
   try {
     const ObjectPath split = split_object_path(path);
-    if (!find_param(split.param)) throw InputError(flag + " " + text + ": " + unknown_param_message(std::string(split.param)));
+    if (!find_param(split.param))
+      throw InputError(flag + " " + text + ": " + unknown_param_message(std::string(split.param)));
     ref = parse_param_ref(scene, path);
   } catch (const ParamError& e) {
     throw fail(e.expected);
@@ -464,6 +466,8 @@ Scene resolve_scene_objects(const SceneRequest& req, std::string* log) {
   return out;
 }
 
-Params resolve_scene(const SceneRequest& req, std::string* log) { return vessel_document(resolve_scene_objects(req, log), 0); }
+Params resolve_scene(const SceneRequest& req, std::string* log) {
+  return vessel_document(resolve_scene_objects(req, log), 0);
+}
 
 }  // namespace draught
