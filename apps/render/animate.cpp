@@ -4,8 +4,9 @@
 #include "commands.hpp"
 
 #include "core/io/files.hpp"
-#include "core/sim/simulation.hpp"
+#include "core/params/preset.hpp"
 #include "core/params/timeline.hpp"
+#include "core/sim/scene_simulation.hpp"
 #include "gpu/context.hpp"
 #include "gpu/renderer.hpp"
 
@@ -136,10 +137,16 @@ void show_progress(int done, int total, double seconds, bool final) {
 }  // namespace
 
 int animate(const RenderRequest& req, const AnimateRequest& anim) {
-  const Timeline timeline = load_timeline(anim.timeline);
+  Timeline timeline = load_timeline(anim.timeline);
   SceneRequest scene = req.scene;
   if (!anim.preset_given && !timeline.preset.empty()) scene.preset = timeline.preset;
-  if (!anim.glass_given && !timeline.glass.empty()) scene.glass = timeline.glass;
+  if (!anim.glass_given && !timeline.glass.empty()) {
+    // A scene that places its own glasses takes none from the timeline.
+    if (!load_preset(find_preset(scene.preset, "drink")).objects.empty())
+      throw InputError(timeline.file + ": field 'glass': the scene '" + scene.preset +
+                       "' places its own glasses; leave out the timeline's glass");
+    scene.glass = timeline.glass;
+  }
   const double fps = anim.fps > 0 ? anim.fps : (timeline.fps > 0 ? timeline.fps : 30.0);
   const double duration = anim.duration > 0 ? anim.duration : timeline.duration;
   const int frames = std::max(1, int(std::floor(duration * fps + 1e-9)));
@@ -153,15 +160,16 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
                      "or a file ending in .mp4 or .gif");
 
   std::string log;
-  const Params base = resolve_scene(scene, &log);
+  const Scene base = resolve_scene_objects(scene, &log);
+  bind_timeline(timeline, base);  // the objects its actions address are in this scene
   if (req.verbose) std::fprintf(stderr, "%stimeline: %s (%d frames at %g fps)\n", log.c_str(), timeline.file.c_str(), frames, fps);
   auto ctx = gpu::HeadlessContext::create();
   if (req.verbose) std::fprintf(stderr, "renderer: %s (%s)\n", ctx->renderer().c_str(), ctx->platform().c_str());
   gpu::Renderer renderer(req.shader_dir);
 
-  Simulation sim(timeline.params_at(0, base));
-  sim.settle_bubbles(4.0);  // a drink that has been standing (a pour clears them)
-  TimelineDriver driver(timeline, sim.vessel().r_outer.front());
+  SceneSimulation sim(timeline.scene_at(0, base));
+  sim.settle_bubbles(4.0);  // drinks that have been standing (a pour clears them)
+  std::vector<TimelineDriver> drivers = timeline_drivers(timeline, sim);  // one per object
   std::unique_ptr<Encoder> encoder;
   if (video) {
     if (out.has_parent_path()) fs::create_directories(out.parent_path());
@@ -172,8 +180,8 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
   const bool progress = anim.progress || isatty(STDERR_FILENO);
   const auto t0 = std::chrono::steady_clock::now();
   for (int i = 0; i < frames; ++i) {
-    play_timeline(sim, driver, timeline, base, i / fps);
-    const Image img = renderer.render(assemble_frame(timeline.params_at(i / fps, base), {sim.frame()}), req.width, req.height);
+    play_timeline(sim, drivers, timeline, base, i / fps);
+    const Image img = renderer.render(sim.frame(), req.width, req.height);
     if (encoder) {
       encoder->write(img);
     } else {
@@ -186,8 +194,12 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
                     i + 1 == frames);
   }
   if (encoder) encoder->finish(out);
-  std::printf("wrote %s (%d frame%s, %g fps, %.2f s; spilled %.1f %% of the glass)\n", out.string().c_str(), frames,
-              frames == 1 ? "" : "s", fps, frames / fps, 100.0 * sim.spilled());
+  double spilled = 0;  // the most any glass spilled
+  for (int i = 0; i < int(base.objects.size()); ++i)
+    if (const Simulation* v = sim.vessel(i)) spilled = std::max(spilled, v->spilled());
+  std::printf("wrote %s (%d frame%s, %g fps, %.2f s; spilled %.1f %% of the glass%s)\n", out.string().c_str(), frames,
+              frames == 1 ? "" : "s", fps, frames / fps, 100.0 * spilled,
+              base.objects.size() > 1 ? " that spilled most" : "");
   return 0;
 }
 

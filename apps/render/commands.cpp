@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <tuple>
 
 namespace draught::cli {
 
@@ -37,9 +38,9 @@ int render(const RenderRequest& req) {
   else if (!req.debug.empty()) throw InputError("--debug " + req.debug + ": expected depth, normal, material or cost");
 
   std::string log;
-  const Params params = resolve_scene(req.scene, &log);
+  const Scene scene = resolve_scene_objects(req.scene, &log);
   if (req.verbose) std::fprintf(stderr, "%s", log.c_str());
-  const FrameState frame = make_frame(params);
+  const FrameState frame = make_frame(scene);
   auto ctx = gpu::HeadlessContext::create();
   if (req.verbose) std::fprintf(stderr, "renderer: %s (%s)\n", ctx->renderer().c_str(), ctx->platform().c_str());
   gpu::Renderer renderer(req.shader_dir);
@@ -52,18 +53,50 @@ int render(const RenderRequest& req) {
   write_png(out, img);
   if (req.verbose)
     std::fprintf(stderr, "rendered %dx%d (supersample %d) in %.1f ms\n", req.width, req.height,
-                 view == gpu::DebugView::None ? params.render.supersample : 1, ms);
+                 view == gpu::DebugView::None ? scene.params.render.supersample : 1, ms);
   std::printf("wrote %s\n", out.string().c_str());
   return 0;
 }
 
 int list_presets() {
-  std::printf("%-6s %-16s %-10s %s\n", "kind", "name", "glass", "description");
-  for (const Preset& p : draught::list_presets())
-    std::printf("%-6s %-16s %-10s %s\n", p.kind.c_str(), p.name.c_str(),
-                p.suggested_glass.empty() ? "-" : p.suggested_glass.c_str(), p.description.c_str());
+  // objects: how many glasses a scene places (one for a scene without objects).
+  std::printf("%-6s %-16s %-10s %-7s %s\n", "kind", "name", "glass", "objects", "description");
+  for (const Preset& p : draught::list_presets()) {
+    const std::string objects =
+        p.kind != "scene" ? "-" : std::to_string(p.objects.empty() ? size_t(1) : p.objects.size());
+    std::printf("%-6s %-16s %-10s %-7s %s\n", p.kind.c_str(), p.name.c_str(),
+                p.suggested_glass.empty() ? "-" : p.suggested_glass.c_str(), objects.c_str(), p.description.c_str());
+  }
   return 0;
 }
+
+namespace {
+// A timeline's own scene (its preset and glass) must exist, and the objects its actions
+// address must be in it.
+void check_timeline_scene(Timeline& t, const std::string& f) {
+  for (auto [field, name, kind] : {std::tuple{"preset", t.preset, "drink"}, {"glass", t.glass, "glass"}}) {
+    try {  // the scene it names must exist
+      if (!name.empty()) find_preset(name, kind);
+    } catch (const InputError& e) {
+      throw InputError(f + ": field '" + field + "': " + e.what());
+    }
+  }
+  if (t.preset.empty()) return;  // objects are checked against the scene it is played in
+  Scene scene;
+  try {
+    SceneRequest req;
+    req.preset = t.preset;
+    const Preset preset = load_preset(find_preset(t.preset, "drink"));
+    if (!preset.objects.empty() && !t.glass.empty())
+      throw InputError("the scene '" + preset.name + "' places its own glasses: leave out the timeline's glass");
+    req.glass = t.glass;
+    scene = resolve_scene_objects(req);
+  } catch (const InputError& e) {
+    throw InputError(f + ": field '" + (t.glass.empty() ? "preset" : "glass") + "': " + e.what());
+  }
+  bind_timeline(t, scene);
+}
+}  // namespace
 
 int validate(const std::vector<std::string>& files) {
   int bad = 0;
@@ -72,19 +105,21 @@ int validate(const std::vector<std::string>& files) {
       const std::string text = read_text_file(f);
       // Timelines are told apart by their format key, or by their actions.
       if (text.find("\"draught_timeline\"") != std::string::npos || text.find("\"actions\"") != std::string::npos) {
-        const Timeline t = parse_timeline(text, f);
-        for (auto [field, name, kind] : {std::tuple{"preset", t.preset, "drink"}, {"glass", t.glass, "glass"}}) {
-          try {  // the scene it names must exist
-            if (!name.empty()) find_preset(name, kind);
-          } catch (const InputError& e) {
-            throw InputError(f + ": field '" + field + "': " + e.what());
-          }
-        }
+        Timeline t = parse_timeline(text, f);
+        check_timeline_scene(t, f);
         std::printf("%s: ok (timeline '%s', %zu actions, %g s)\n", f.c_str(), t.name.c_str(), t.actions.size(),
                     t.duration);
         continue;
       }
       Preset p = parse_preset(text, f);
+      if (!p.objects.empty()) {
+        const Scene scene = scene_from_preset(p);  // glasses and drinks exist, no two glasses overlap
+        size_t values = p.values.size();
+        for (auto& o : p.objects) values += o.values.size();
+        std::printf("%s: ok (%s '%s', %zu objects, %zu parameters)\n", f.c_str(), p.kind.c_str(), p.name.c_str(),
+                    scene.objects.size(), values);
+        continue;
+      }
       std::printf("%s: ok (%s '%s', %zu parameters)\n", f.c_str(), p.kind.c_str(), p.name.c_str(), p.values.size());
     } catch (const InputError& e) {
       std::fprintf(stderr, "%s\n", e.what());
@@ -95,10 +130,12 @@ int validate(const std::vector<std::string>& files) {
 }
 
 int print_params(bool markdown) {
+  // scope: "scene" parameters belong to the whole scene; "object" ones to each glass
+  // (objects[N].path sets one object's, the bare path every object's).
   if (markdown) {
-    std::printf("| parameter | type | default | range | unit | description |\n|---|---|---|---|---|---|\n");
+    std::printf("| parameter | type | default | range | unit | scope | description |\n|---|---|---|---|---|---|---|\n");
   } else {
-    std::printf("%-24s %-6s %-28s %-18s %-5s %s\n", "path", "type", "default", "range", "unit", "doc");
+    std::printf("%-24s %-6s %-28s %-18s %-5s %-6s %s\n", "path", "type", "default", "range", "unit", "scope", "doc");
   }
   for (const auto& d : param_table()) {
     std::string range;
@@ -110,13 +147,15 @@ int print_params(bool markdown) {
       range = buf;
     }
     std::string def = format_param(d, d.def);
+    const std::string scope(scope_name(d.scope));
     if (markdown)
-      std::printf("| `%s` | %s | `%s` | %s | %s | %s |\n", d.path.c_str(), std::string(type_name(d.type)).c_str(),
-                  def.c_str(), range.c_str(), d.unit.c_str(), d.doc.c_str());
+      std::printf("| `%s` | %s | `%s` | %s | %s | %s | %s |\n", d.path.c_str(), std::string(type_name(d.type)).c_str(),
+                  def.c_str(), range.c_str(), d.unit.c_str(), d.scope == ParamScope::Scene ? "scene" : "per object",
+                  d.doc.c_str());
     else
-      std::printf("%-24s %-6s %-28s %-18s %-5s %s\n", d.path.c_str(), std::string(type_name(d.type)).c_str(),
+      std::printf("%-24s %-6s %-28s %-18s %-5s %-6s %s\n", d.path.c_str(), std::string(type_name(d.type)).c_str(),
                   def.size() > 28 ? (def.substr(0, 25) + "...").c_str() : def.c_str(), range.c_str(),
-                  d.unit.c_str(), d.doc.c_str());
+                  d.unit.c_str(), scope.c_str(), d.doc.c_str());
   }
   return 0;
 }

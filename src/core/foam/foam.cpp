@@ -13,7 +13,8 @@ namespace {
 constexpr double kLacingStep = 0.008;  // the level falls this far between two rings
 }  // namespace
 
-FoamState::FoamState(const FoamParams& p) : params_(p), age_(std::max(double(p.age), 0.0)) {}
+// The parameters are in their table ranges (checked when they were set): no clamping here.
+FoamState::FoamState(const FoamParams& p) : params_(p), age_(p.age) {}
 
 void FoamState::pour() {
   age_ = 0;
@@ -23,9 +24,7 @@ void FoamState::pour() {
 }
 
 double FoamState::thickness() const {
-  const double h = std::max(double(params_.height), 0.0);
-  const double rise = std::max(double(params_.rise_time), 0.1);
-  const double half = std::max(double(params_.half_life), 1.0);
+  const double h = params_.height, rise = params_.rise_time, half = params_.half_life;
   // Builds during the pour (overshooting a little), settles, then collapses.
   const double built = 1.0 - std::exp(-3.0 * age_ / rise);
   const double after = std::max(age_ - rise, 0.0);
@@ -50,7 +49,7 @@ void FoamState::step(double dt, double level, double radius) {
 }
 
 BigBubble FoamState::bubble(int slot, double radius) const {
-  const std::uint64_t seed = std::uint64_t(std::max(params_.seed, 0));
+  const auto seed = std::uint64_t(params_.seed);
   // Each slot lives through generations: grow, sit shining, pop, heal, start again.
   const double period = 5.0 + 8.0 * hash01(seed, std::uint64_t(slot), 0, 0);
   const double phase = period * hash01(seed, std::uint64_t(slot), 0, 1);
@@ -82,7 +81,7 @@ FoamFrame FoamState::frame(double radius) const {
   FoamFrame f;
   f.thickness = thickness();
   // Concave as the level drops (the head clings to the glass), domed while it builds.
-  const double building = std::exp(-age_ / std::max(double(params_.rise_time), 0.1));
+  const double building = std::exp(-age_ / double(params_.rise_time));
   f.dome = std::clamp(double(params_.dome) + 0.15 * building, -0.5, 0.5);
   f.dome = f.dome + (-0.4 - f.dome) * std::clamp(drop_ / 0.02, 0.0, 1.0);
   f.lacing = lacing_;

@@ -23,9 +23,10 @@ double slosh_frequency(double radius, double depth, double root) {
 }
 
 void step_slosh(SloshState& s, const LiquidParams& p, const SloshEnvironment& e, double dt) {
-  const double stiffness = std::clamp(double(p.slosh_stiffness), 0.25, 4.0);
-  const double zeta = std::clamp(double(p.slosh_damping), 0.005, 1.0);
-  const double speed = std::clamp(double(p.wave_speed), 0.25, 4.0);
+  // The parameters are in their table ranges (checked when they were set).
+  const double stiffness = p.slosh_stiffness;
+  const double zeta = p.slosh_damping;
+  const double speed = p.wave_speed;
   const double w1 = slosh_frequency(e.radius, e.depth) * std::sqrt(stiffness);
   // The tilt mode: a damped spring towards the level of the effective gravity. Large
   // swings lose more (the surface breaks up), so resonance stays bounded as in a glass.
@@ -40,7 +41,7 @@ void step_slosh(SloshState& s, const LiquidParams& p, const SloshEnvironment& e,
     s.slope_rate -= std::max(glm::dot(s.slope_rate, out), 0.0) * out;
   }
   // Waves: forced by how fast the level moves; higher modes ring faster and die sooner.
-  const double drive = std::clamp(double(p.wave_amplitude), 0.0, 5.0) * 0.02 * e.radius;
+  const double drive = double(p.wave_amplitude) * 0.02 * e.radius;
   const double rate = std::min(glm::length(e.level_rate), 50.0);
   auto mode = [&](double& x, double& v, double root, double force) {
     const double w = slosh_frequency(e.radius, e.depth, root) * speed;
@@ -67,7 +68,7 @@ void step_slosh(SloshState& s, const LiquidParams& p, const SloshEnvironment& e,
 }
 
 double slosh_energy(const SloshState& s, const LiquidParams& p, const SloshEnvironment& e) {
-  const double w1 = slosh_frequency(e.radius, e.depth) * std::sqrt(std::clamp(double(p.slosh_stiffness), 0.25, 4.0));
+  const double w1 = slosh_frequency(e.radius, e.depth) * std::sqrt(double(p.slosh_stiffness));
   const glm::dvec2 d = s.slope - e.level_slope;
   // Waves in slope units (divided by the radius) so all terms weigh alike.
   const double r = std::max(e.radius, 1e-3);

@@ -1,5 +1,7 @@
 #include "core/params/params.hpp"
 
+#include "core/params/param_row.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,116 +11,109 @@ namespace draught {
 
 namespace {
 
-// One row per tunable. The macro keeps the path string and the struct field in step.
-#define DRAUGHT_FIELD(member) [](Params& p) -> void* { return &p.member; }
-#define ROW(member, type, def, lo, hi, unit, doc) \
-  ParamDesc{#member, ParamType::type, ParamValue(def), lo, hi, unit, doc, {}, DRAUGHT_FIELD(member)}
-#define ENUM_ROW(member, def, choices, doc) \
-  ParamDesc{#member, ParamType::Enum, ParamValue(std::string(def)), 0, 0, "", doc, choices, DRAUGHT_FIELD(member)}
-
-using glm::vec3;
+// One row per tunable: the field (by member pointers, so a row of the wrong type does not
+// compile), the range, unit and doc. Defaults come from the structs' initializers.
+#define ROW DRAUGHT_PARAM_ROW
 
 std::vector<ParamDesc> make_table() {
-  const Curve pint = {{0.0295f, 0.0f}, {0.0345f, 0.05f}, {0.0395f, 0.10f}, {0.0435f, 0.15f}};
   return {
       // glass
-      ROW(glass.profile, Curve, pint, 0.0005f, 0.6f, "m",
+      ROW(VesselParams, glass, profile, Curve, 0.0005f, 0.6f, "m",
           "Outer profile: control points (r, y) of a smooth curve, y from 0 (the foot) up to the rim"),
-      ROW(glass.wall_thickness, Float, 0.003f, 0.0005f, 0.02f, "m", "Wall thickness, measured horizontally"),
-      ROW(glass.base_thickness, Float, 0.012f, 0.001f, 0.3f, "m",
+      ROW(VesselParams, glass, wall_thickness, Float, 0.0005f, 0.02f, "m", "Wall thickness, measured horizontally"),
+      ROW(VesselParams, glass, base_thickness, Float, 0.001f, 0.3f, "m",
           "Height of solid glass under the cavity (the base, or foot and stem)"),
-      ROW(glass.rim_radius, Float, 0.0015f, 0.0002f, 0.02f, "m",
+      ROW(VesselParams, glass, rim_radius, Float, 0.0002f, 0.02f, "m",
           "Radius of the torus bead at the rim (kept between half and twice the wall thickness)"),
-      ROW(glass.ior, Float, 1.52f, 1.0f, 2.5f, "", "Index of refraction of the glass"),
-      ROW(glass.roughness, Float, 0.03f, 0.005f, 1.0f, "", "GGX roughness of the glass surfaces (highlights)"),
-      ROW(glass.absorption, Vec3, vec3(0.9f, 0.25f, 0.7f), 0.0f, 1000.0f, "1/m",
+      ROW(VesselParams, glass, ior, Float, 1.0f, 2.5f, "", "Index of refraction of the glass"),
+      ROW(VesselParams, glass, roughness, Float, 0.005f, 1.0f, "", "GGX roughness of the glass surfaces (highlights)"),
+      ROW(VesselParams, glass, absorption, Vec3, 0.0f, 1000.0f, "1/m",
           "Beer-Lambert absorption of the glass (soda-lime is slightly green)"),
       // liquid
-      ROW(liquid.fill, Float, 0.85f, 0.0f, 0.98f, "", "Fill level as a fraction of the cavity volume"),
-      ROW(liquid.ior, Float, 1.34f, 1.0f, 2.0f, "", "Index of refraction of the liquid"),
-      ROW(liquid.srm, Float, 4.0f, 0.0f, 100.0f, "SRM",
+      ROW(VesselParams, liquid, fill, Float, 0.0f, 0.98f, "", "Fill level as a fraction of the cavity volume"),
+      ROW(VesselParams, liquid, ior, Float, 1.0f, 2.0f, "", "Index of refraction of the liquid"),
+      ROW(VesselParams, liquid, srm, Float, 0.0f, 100.0f, "SRM",
           "Beer colour (Standard Reference Method); > 0 derives the absorption, 0 uses liquid.absorption"),
-      ROW(liquid.absorption, Vec3, vec3(1.0f, 4.0f, 20.0f), 0.0f, 20000.0f, "1/m",
+      ROW(VesselParams, liquid, absorption, Vec3, 0.0f, 20000.0f, "1/m",
           "Beer-Lambert absorption per metre (used when liquid.srm is 0)"),
-      ROW(liquid.haze, Float, 0.0f, 0.0f, 2000.0f, "1/m", "Cloudiness: scattering coefficient per metre"),
-      ROW(liquid.haze_color, Color, vec3(0.95f, 0.85f, 0.6f), 0.0f, 1.0f, "",
+      ROW(VesselParams, liquid, haze, Float, 0.0f, 2000.0f, "1/m", "Cloudiness: scattering coefficient per metre"),
+      ROW(VesselParams, liquid, haze_color, Color, 0.0f, 1.0f, "",
           "Single-scattering albedo of the haze"),
-      ROW(liquid.roughness, Float, 0.02f, 0.005f, 1.0f, "", "GGX roughness of the liquid surface"),
-      ROW(liquid.slosh_stiffness, Float, 1.0f, 0.25f, 4.0f, "",
+      ROW(VesselParams, liquid, roughness, Float, 0.005f, 1.0f, "", "GGX roughness of the liquid surface"),
+      ROW(VesselParams, liquid, slosh_stiffness, Float, 0.25f, 4.0f, "",
           "Scales the sloshing frequency squared (1: a real drink in this glass)"),
-      ROW(liquid.slosh_damping, Float, 0.06f, 0.005f, 1.0f, "",
+      ROW(VesselParams, liquid, slosh_damping, Float, 0.005f, 1.0f, "",
           "Damping ratio of the sloshing surface (a few percent for water-like drinks, more for thick ones)"),
-      ROW(liquid.wave_amplitude, Float, 1.0f, 0.0f, 5.0f, "", "How strongly shaking raises waves on the surface"),
-      ROW(liquid.wave_speed, Float, 1.0f, 0.25f, 4.0f, "", "Scales the frequency of the surface waves"),
+      ROW(VesselParams, liquid, wave_amplitude, Float, 0.0f, 5.0f, "", "How strongly shaking raises waves on the surface"),
+      ROW(VesselParams, liquid, wave_speed, Float, 0.25f, 4.0f, "", "Scales the frequency of the surface waves"),
       // foam head
-      ROW(foam.height, Float, 0.015f, 0.0f, 0.08f, "m", "Head thickness once poured and settled (0: no head)"),
-      ROW(foam.density, Float, 1500.0f, 50.0f, 20000.0f, "1/m", "Extinction of the foam: how opaque the head is"),
-      ROW(foam.color, Color, vec3(0.97f, 0.95f, 0.9f), 0.0f, 1.0f, "",
+      ROW(VesselParams, foam, height, Float, 0.0f, 0.08f, "m", "Head thickness once poured and settled (0: no head)"),
+      ROW(VesselParams, foam, density, Float, 50.0f, 20000.0f, "1/m", "Extinction of the foam: how opaque the head is"),
+      ROW(VesselParams, foam, color, Color, 0.0f, 1.0f, "",
           "Single-scattering albedo of the foam (white for lager, tan for stout)"),
-      ROW(foam.anisotropy, Float, 0.0f, -0.9f, 0.9f, "", "Henyey-Greenstein anisotropy of the foam's scattering"),
-      ROW(foam.multiscatter, Float, 0.7f, 0.0f, 1.0f, "",
+      ROW(VesselParams, foam, anisotropy, Float, -0.9f, 0.9f, "", "Henyey-Greenstein anisotropy of the foam's scattering"),
+      ROW(VesselParams, foam, multiscatter, Float, 0.0f, 1.0f, "",
           "Weight of the multiple-scattering terms (brightens the inside of the head)"),
-      ROW(foam.age, Float, 45.0f, 0.0f, 36000.0f, "s", "Seconds since the pour, for a still picture"),
-      ROW(foam.rise_time, Float, 2.0f, 0.1f, 30.0f, "s", "How long the head takes to build during a pour"),
-      ROW(foam.half_life, Float, 150.0f, 1.0f, 36000.0f, "s", "Time for the head to halve as it collapses"),
-      ROW(foam.dome, Float, 0.2f, -0.5f, 0.5f, "", "Shape of the head: > 0 domed, < 0 concave"),
-      ROW(foam.bubble_size, Float, 0.0012f, 0.0002f, 0.01f, "m", "Size of the micro bubbles in the head"),
-      ROW(foam.detail, Float, 0.5f, 0.0f, 1.0f, "", "How much the micro bubbles break up the foam's density"),
-      ROW(foam.big_bubbles, Int, 6, 0.0f, 12.0f, "", "Large shiny bubbles on top of the head that grow and pop"),
-      ROW(foam.lacing, Float, 0.6f, 0.0f, 1.0f, "", "Foam rings left on the glass each time the level drops"),
-      ROW(foam.seed, Int, 1, 0.0f, 1000000.0f, "", "Seed of the foam's randomness (big bubbles, lacing)"),
+      ROW(VesselParams, foam, age, Float, 0.0f, 36000.0f, "s", "Seconds since the pour, for a still picture"),
+      ROW(VesselParams, foam, rise_time, Float, 0.1f, 30.0f, "s", "How long the head takes to build during a pour"),
+      ROW(VesselParams, foam, half_life, Float, 1.0f, 36000.0f, "s", "Time for the head to halve as it collapses"),
+      ROW(VesselParams, foam, dome, Float, -0.5f, 0.5f, "", "Shape of the head: > 0 domed, < 0 concave"),
+      ROW(VesselParams, foam, bubble_size, Float, 0.0002f, 0.01f, "m", "Size of the micro bubbles in the head"),
+      ROW(VesselParams, foam, detail, Float, 0.0f, 1.0f, "", "How much the micro bubbles break up the foam's density"),
+      ROW(VesselParams, foam, big_bubbles, Int, 0.0f, 12.0f, "", "Large shiny bubbles on top of the head that grow and pop"),
+      ROW(VesselParams, foam, lacing, Float, 0.0f, 1.0f, "", "Foam rings left on the glass each time the level drops"),
+      ROW(VesselParams, foam, seed, Int, 0.0f, 1000000.0f, "", "Seed of the foam's randomness (big bubbles, lacing)"),
       // rising bubbles
-      ROW(bubbles.carbonation, Float, 0.6f, 0.0f, 1.0f, "",
+      ROW(VesselParams, bubbles, carbonation, Float, 0.0f, 1.0f, "",
           "Dissolved CO2, 0 (still wine) to 1 (champagne): how many bubbles rise and how big"),
-      ROW(bubbles.sites, Int, 40, 0.0f, 400.0f, "", "Nucleation sites on the inner wall and the floor"),
-      ROW(bubbles.etched_base, Bool, false, 0.0f, 1.0f, "",
+      ROW(VesselParams, bubbles, sites, Int, 0.0f, 400.0f, "", "Nucleation sites on the inner wall and the floor"),
+      ROW(VesselParams, bubbles, etched_base, Bool, 0.0f, 1.0f, "",
           "A ring of sites etched into the floor, as in many flutes: one fine, fast stream"),
-      ROW(bubbles.size, Float, 0.0002f, 0.00002f, 0.001f, "m", "Bubble radius at birth (at full carbonation)"),
-      ROW(bubbles.max_bubbles, Int, 500, 0.0f, 2000.0f, "", "Most bubbles alive at once"),
-      ROW(bubbles.seed, Int, 1, 0.0f, 1000000.0f, "", "Seed of the nucleation sites and bubble jitter"),
+      ROW(VesselParams, bubbles, size, Float, 0.00002f, 0.001f, "m", "Bubble radius at birth (at full carbonation)"),
+      ROW(VesselParams, bubbles, max_bubbles, Int, 0.0f, 2000.0f, "", "Most bubbles alive at once"),
+      ROW(VesselParams, bubbles, seed, Int, 0.0f, 1000000.0f, "", "Seed of the nucleation sites and bubble jitter"),
       // environment
-      ENUM_ROW(env.mode, "studio", (std::vector<std::string>{"studio", "constant"}),
-               "studio: gradient sky, softbox and strip lights; constant: env.color everywhere"),
-      ROW(env.color, Color, vec3(0.8f), 0.0f, 100.0f, "", "Radiance of the constant environment"),
-      ROW(env.sky_top, Color, vec3(0.10f, 0.105f, 0.115f), 0.0f, 100.0f, "", "Studio sky colour at the zenith"),
-      ROW(env.sky_horizon, Color, vec3(0.30f, 0.29f, 0.27f), 0.0f, 100.0f, "", "Studio sky colour at the horizon"),
-      ROW(env.ground, Color, vec3(0.16f, 0.15f, 0.14f), 0.0f, 100.0f, "", "Studio colour below the horizon"),
-      ROW(env.strip_intensity, Float, 3.0f, 0.0f, 100.0f, "", "Brightness of the two vertical strip lights"),
-      ROW(env.backdrop_glow, Float, 2.0f, 0.0f, 100.0f, "", "Brightness of the glow behind the glass"),
-      ROW(env.floor, Bool, true, 0.0f, 1.0f, "", "Show a checker floor at y = 0 with the glass's shadow"),
-      ROW(env.checker_size, Float, 0.04f, 0.001f, 10.0f, "m", "Edge length of one floor checker square"),
-      ROW(env.floor_a, Color, vec3(0.58f, 0.56f, 0.53f), 0.0f, 1.0f, "", "Floor albedo, light squares"),
-      ROW(env.floor_b, Color, vec3(0.44f, 0.42f, 0.40f), 0.0f, 1.0f, "", "Floor albedo, dark squares"),
+      ROW(SceneParams, env, mode, Enum, 0, 0, "",
+          "studio: gradient sky, softbox and strip lights; constant: env.color everywhere",
+          (std::vector<std::string>{"studio", "constant"})),
+      ROW(SceneParams, env, color, Color, 0.0f, 100.0f, "", "Radiance of the constant environment"),
+      ROW(SceneParams, env, sky_top, Color, 0.0f, 100.0f, "", "Studio sky colour at the zenith"),
+      ROW(SceneParams, env, sky_horizon, Color, 0.0f, 100.0f, "", "Studio sky colour at the horizon"),
+      ROW(SceneParams, env, ground, Color, 0.0f, 100.0f, "", "Studio colour below the horizon"),
+      ROW(SceneParams, env, strip_intensity, Float, 0.0f, 100.0f, "", "Brightness of the two vertical strip lights"),
+      ROW(SceneParams, env, backdrop_glow, Float, 0.0f, 100.0f, "", "Brightness of the glow behind the glass"),
+      ROW(SceneParams, env, floor, Bool, 0.0f, 1.0f, "", "Show a checker floor at y = 0 with the glass's shadow"),
+      ROW(SceneParams, env, checker_size, Float, 0.001f, 10.0f, "m", "Edge length of one floor checker square"),
+      ROW(SceneParams, env, floor_a, Color, 0.0f, 1.0f, "", "Floor albedo, light squares"),
+      ROW(SceneParams, env, floor_b, Color, 0.0f, 1.0f, "", "Floor albedo, dark squares"),
       // key light
-      ROW(light.direction, Vec3, vec3(-0.55f, 0.75f, 0.45f), -1.0f, 1.0f, "",
+      ROW(SceneParams, light, direction, Vec3, -1.0f, 1.0f, "",
           "Direction towards the key light (normalised)"),
-      ROW(light.color, Color, vec3(1.0f, 0.97f, 0.92f), 0.0f, 1.0f, "", "Key light colour"),
-      ROW(light.intensity, Float, 2.5f, 0.0f, 100.0f, "", "Key light intensity"),
-      ROW(light.size, Float, 12.0f, 0.5f, 60.0f, "deg", "Angular radius of the key softbox"),
+      ROW(SceneParams, light, color, Color, 0.0f, 1.0f, "", "Key light colour"),
+      ROW(SceneParams, light, intensity, Float, 0.0f, 100.0f, "", "Key light intensity"),
+      ROW(SceneParams, light, size, Float, 0.5f, 60.0f, "deg", "Angular radius of the key softbox"),
       // camera
-      ROW(camera.auto_frame, Bool, true, 0.0f, 1.0f, "",
+      ROW(SceneParams, camera, auto_frame, Bool, 0.0f, 1.0f, "",
           "Frame the whole glass automatically, looking from the direction of eye - target"),
-      ROW(camera.eye, Vec3, vec3(0.0f, 0.13f, 0.42f), -10.0f, 10.0f, "m", "Camera position"),
-      ROW(camera.target, Vec3, vec3(0.0f, 0.075f, 0.0f), -10.0f, 10.0f, "m", "Point the camera looks at"),
-      ROW(camera.vfov, Float, 28.0f, 5.0f, 120.0f, "deg", "Vertical field of view"),
+      ROW(SceneParams, camera, eye, Vec3, -10.0f, 10.0f, "m", "Camera position"),
+      ROW(SceneParams, camera, target, Vec3, -10.0f, 10.0f, "m", "Point the camera looks at"),
+      ROW(SceneParams, camera, vfov, Float, 5.0f, 120.0f, "deg", "Vertical field of view"),
       // cross-section
-      ROW(clip.enabled, Bool, false, 0.0f, 1.0f, "", "Cut the glass and its contents open along a plane (capped cuts)"),
-      ROW(clip.normal, Vec3, vec3(0.0f, 0.0f, 1.0f), -1.0f, 1.0f, "",
+      ROW(VesselParams, clip, enabled, Bool, 0.0f, 1.0f, "", "Cut the glass and its contents open along a plane (capped cuts)"),
+      ROW(VesselParams, clip, normal, Vec3, -1.0f, 1.0f, "",
           "Normal of the cut, in the glass's frame: the side it points to is removed"),
-      ROW(clip.offset, Float, 0.0f, -0.3f, 0.3f, "m", "Where the cut lies along its normal, from the glass's axis"),
+      ROW(VesselParams, clip, offset, Float, -0.3f, 0.3f, "m", "Where the cut lies along its normal, from the glass's axis"),
       // output
-      ENUM_ROW(render.tonemap, "aces", (std::vector<std::string>{"none", "aces"}),
-               "none: clamp then sRGB; aces: filmic tone map then sRGB"),
-      ROW(render.exposure, Float, 1.0f, 0.01f, 100.0f, "", "Linear exposure multiplier before tone mapping"),
-      ROW(render.transparent, Bool, false, 0.0f, 1.0f, "",
+      ROW(SceneParams, render, tonemap, Enum, 0, 0, "",
+          "none: clamp then sRGB; aces: filmic tone map then sRGB", (std::vector<std::string>{"none", "aces"})),
+      ROW(SceneParams, render, exposure, Float, 0.01f, 100.0f, "", "Linear exposure multiplier before tone mapping"),
+      ROW(SceneParams, render, transparent, Bool, 0.0f, 1.0f, "",
           "Transparent background, premultiplied alpha (the floor is left out)"),
-      ROW(render.supersample, Int, 2, 1.0f, 4.0f, "", "Supersampling factor per axis (anti-aliasing)"),
-      ROW(render.max_events, Int, 12, 2.0f, 32.0f, "", "Most surface interactions followed per pixel"),
+      ROW(SceneParams, render, supersample, Int, 1.0f, 4.0f, "", "Supersampling factor per axis (anti-aliasing)"),
+      ROW(SceneParams, render, max_events, Int, 2.0f, 32.0f, "", "Most surface interactions followed per pixel"),
   };
 }
 #undef ROW
-#undef ENUM_ROW
-#undef DRAUGHT_FIELD
 
 // The shortest decimal text that reads back as the same float.
 std::string fmt(float v) {
@@ -175,18 +170,25 @@ size_t edit_distance(const std::string& a, const std::string& b) {
 
 }  // namespace
 
-std::string unknown_param_message(const std::string& path) {
-  const ParamDesc* best = nullptr;
+std::string nearest_choice(const std::string& text, const std::vector<std::string>& choices) {
+  const std::string* best = nullptr;
   size_t best_d = 4;
-  for (auto& d : param_table()) {
-    size_t e = edit_distance(path, d.path);
-    if (e < best_d) best_d = e, best = &d;
+  for (const auto& c : choices) {
+    const size_t e = edit_distance(text, c);
+    if (e < best_d) best_d = e, best = &c;
   }
-  return "unknown parameter '" + path + "'" + (best ? " (did you mean '" + best->path + "'?)" : "") +
+  return best ? *best : std::string();
+}
+
+std::string unknown_param_message(const std::string& path) {
+  std::vector<std::string> paths;
+  for (auto& d : param_table()) paths.push_back(d.path);
+  const std::string best = nearest_choice(path, paths);
+  return "unknown parameter '" + path + "'" + (best.empty() ? "" : " (did you mean '" + best + "'?)") +
          "; `draught params` lists them";
 }
 
-
+std::string_view scope_name(ParamScope s) { return s == ParamScope::Scene ? "scene" : "object"; }
 
 std::string_view type_name(ParamType t) {
   switch (t) {
@@ -202,15 +204,7 @@ std::string_view type_name(ParamType t) {
 }
 
 const std::vector<ParamDesc>& param_table() {
-  static const std::vector<ParamDesc> table = [] {
-    std::vector<ParamDesc> t = make_table();
-    for (ParamDesc& d : t) {
-      const std::string group = d.path.substr(0, d.path.find('.'));
-      if (group == "glass" || group == "liquid" || group == "foam" || group == "bubbles" || group == "clip")
-        d.scope = ParamScope::Vessel;
-    }
-    return t;
-  }();
+  static const std::vector<ParamDesc> table = make_table();
   return table;
 }
 
@@ -281,42 +275,45 @@ void validate_value(const ParamDesc& d, const ParamValue& v) {
   }
 }
 
+namespace {
+[[noreturn]] void wrong_scope(const ParamDesc& d, const char* given) {
+  throw std::logic_error(d.path + " is a " + std::string(scope_name(d.scope)) + " parameter, not one of " + given);
+}
+}  // namespace
+
+ParamValue get_param(const VesselParams& p, const ParamDesc& d) {
+  if (!d.vessel.get) wrong_scope(d, "VesselParams");
+  return d.vessel.get(d, p);
+}
+
+ParamValue get_param(const SceneParams& p, const ParamDesc& d) {
+  if (!d.scene.get) wrong_scope(d, "SceneParams");
+  return d.scene.get(d, p);
+}
+
 ParamValue get_param(const Params& p, const ParamDesc& d) {
-  void* f = d.field(const_cast<Params&>(p));
-  switch (d.type) {
-    case ParamType::Float: return *static_cast<float*>(f);
-    case ParamType::Int: return *static_cast<int*>(f);
-    case ParamType::Bool: return *static_cast<bool*>(f);
-    case ParamType::Vec3:
-    case ParamType::Color: return *static_cast<glm::vec3*>(f);
-    case ParamType::Enum: return d.choices.at(size_t(*static_cast<int*>(f)));
-    case ParamType::Curve: return *static_cast<Curve*>(f);
-  }
-  return 0.0f;
+  return d.scope == ParamScope::Vessel ? get_param(static_cast<const VesselParams&>(p), d)
+                                       : get_param(static_cast<const SceneParams&>(p), d);
+}
+
+void set_param(VesselParams& p, const ParamDesc& d, const ParamValue& v) {
+  if (!d.vessel.set) wrong_scope(d, "VesselParams");
+  validate_value(d, v);
+  d.vessel.set(d, p, v);
+}
+
+void set_param(SceneParams& p, const ParamDesc& d, const ParamValue& v) {
+  if (!d.scene.set) wrong_scope(d, "SceneParams");
+  validate_value(d, v);
+  d.scene.set(d, p, v);
 }
 
 void set_param(Params& p, const ParamDesc& d, const ParamValue& v) {
-  validate_value(d, v);
-  void* f = d.field(p);
-  switch (d.type) {
-    case ParamType::Float: *static_cast<float*>(f) = std::get<float>(v); break;
-    case ParamType::Int: *static_cast<int*>(f) = std::get<int>(v); break;
-    case ParamType::Bool: *static_cast<bool*>(f) = std::get<bool>(v); break;
-    case ParamType::Vec3:
-    case ParamType::Color: *static_cast<glm::vec3*>(f) = std::get<glm::vec3>(v); break;
-    case ParamType::Enum:
-      for (size_t i = 0; i < d.choices.size(); ++i)
-        if (d.choices[i] == std::get<std::string>(v)) *static_cast<int*>(f) = int(i);
-      break;
-    case ParamType::Curve: *static_cast<Curve*>(f) = std::get<Curve>(v); break;
-  }
+  if (d.scope == ParamScope::Vessel) set_param(static_cast<VesselParams&>(p), d, v);
+  else set_param(static_cast<SceneParams&>(p), d, v);
 }
 
-Params default_params() {
-  Params p{};
-  for (const auto& d : param_table()) set_param(p, d, d.def);
-  return p;
-}
+Params default_params() { return Params{}; }
 
 ParamValue parse_param_text(const ParamDesc& d, std::string_view text) {
   auto fail = [&]() -> ParamValue {

@@ -16,99 +16,101 @@ namespace draught {
 // A designer's profile: control points (r, y) in metres, y strictly increasing from 0.
 using Curve = std::vector<glm::vec2>;
 
+// Every field has its default here, once: a default-constructed Params is the table's
+// defaults (param_table() reads them from Params{}), and it is valid.
 struct GlassParams {
-  Curve profile;
-  float wall_thickness;
-  float base_thickness;
-  float rim_radius;
-  float ior;
-  float roughness;
-  glm::vec3 absorption;  // per metre
+  Curve profile = {{0.0295f, 0.0f}, {0.0345f, 0.05f}, {0.0395f, 0.10f}, {0.0435f, 0.15f}};  // a shaker pint
+  float wall_thickness = 0.003f;
+  float base_thickness = 0.012f;
+  float rim_radius = 0.0015f;
+  float ior = 1.52f;
+  float roughness = 0.03f;
+  glm::vec3 absorption{0.9f, 0.25f, 0.7f};  // per metre
 };
 
 struct LiquidParams {
-  float fill;  // fraction of the cavity volume
-  float ior;
-  float srm;   // > 0: absorption derived from the beer colour (SRM); 0: use `absorption`
-  glm::vec3 absorption;  // per metre
-  float haze;            // scattering per metre
-  glm::vec3 haze_color;  // single-scattering albedo
-  float roughness;
-  float slosh_stiffness;  // multiplies the physical first-mode frequency squared
-  float slosh_damping;    // damping ratio of the surface's tilt
-  float wave_amplitude;   // how strongly motion raises waves
-  float wave_speed;       // multiplies the waves' natural frequencies
+  float fill = 0.85f;  // fraction of the cavity volume
+  float ior = 1.34f;
+  float srm = 4.0f;    // > 0: absorption derived from the beer colour (SRM); 0: use `absorption`
+  glm::vec3 absorption{1.0f, 4.0f, 20.0f};  // per metre
+  float haze = 0.0f;                         // scattering per metre
+  glm::vec3 haze_color{0.95f, 0.85f, 0.6f};  // single-scattering albedo
+  float roughness = 0.02f;
+  float slosh_stiffness = 1.0f;  // multiplies the physical first-mode frequency squared
+  float slosh_damping = 0.06f;   // damping ratio of the surface's tilt
+  float wave_amplitude = 1.0f;   // how strongly motion raises waves
+  float wave_speed = 1.0f;       // multiplies the waves' natural frequencies
 };
 
 struct FoamParams {
-  float height;        // head thickness when settled after the pour, metres
-  float density;       // extinction per metre (micro bubbles scatter light)
-  glm::vec3 color;     // single-scattering albedo (white lager foam, tan stout head)
-  float anisotropy;    // Henyey-Greenstein g
-  float multiscatter;  // 0: single scattering only; 1: the full multi-scatter terms
-  float age;           // seconds since the pour, for a still picture
-  float rise_time;     // seconds for the head to build during a pour
-  float half_life;     // seconds for the head to halve as it collapses
-  float dome;          // > 0 domed (thicker in the middle), < 0 concave
-  float bubble_size;   // metres: the scale of the micro-bubble detail
-  float detail;        // 0..1: how much the micro bubbles modulate the density
-  int big_bubbles;     // large bubbles on top at any time
-  float lacing;        // 0..1: foam rings left on the glass as the level drops
-  int seed;
+  float height = 0.015f;                // head thickness when settled after the pour, metres
+  float density = 1500.0f;              // extinction per metre (micro bubbles scatter light)
+  glm::vec3 color{0.97f, 0.95f, 0.9f};  // single-scattering albedo (white lager foam, tan stout head)
+  float anisotropy = 0.0f;              // Henyey-Greenstein g
+  float multiscatter = 0.7f;            // 0: single scattering only; 1: the full multi-scatter terms
+  float age = 45.0f;                    // seconds since the pour, for a still picture
+  float rise_time = 2.0f;               // seconds for the head to build during a pour
+  float half_life = 150.0f;             // seconds for the head to halve as it collapses
+  float dome = 0.2f;                    // > 0 domed (thicker in the middle), < 0 concave
+  float bubble_size = 0.0012f;          // metres: the scale of the micro-bubble detail
+  float detail = 0.5f;                  // 0..1: how much the micro bubbles modulate the density
+  int big_bubbles = 6;                  // large bubbles on top at any time
+  float lacing = 0.6f;                  // 0..1: foam rings left on the glass as the level drops
+  int seed = 1;
 };
 
 struct BubbleParams {
-  float carbonation;  // 0 still wine .. 1 champagne: how many bubbles, how big
-  int sites;          // nucleation sites on the inner wall and the floor
-  bool etched_base;   // a ring of sites etched into the floor (a flute's fine stream)
-  float size;         // radius at birth, metres, at full carbonation
-  int max_bubbles;    // alive at once
-  int seed;
+  float carbonation = 0.6f;  // 0 still wine .. 1 champagne: how many bubbles, how big
+  int sites = 40;            // nucleation sites on the inner wall and the floor
+  bool etched_base = false;  // a ring of sites etched into the floor (a flute's fine stream)
+  float size = 0.0002f;      // radius at birth, metres, at full carbonation
+  int max_bubbles = 500;     // alive at once
+  int seed = 1;
 };
 
 enum class EnvMode { Studio = 0, Constant = 1 };
 enum class Tonemap { None = 0, Aces = 1 };
 
 struct EnvParams {
-  int mode;  // EnvMode
-  glm::vec3 color;  // constant mode radiance
-  glm::vec3 sky_top;
-  glm::vec3 sky_horizon;
-  glm::vec3 ground;
-  float strip_intensity;
-  float backdrop_glow;
-  bool floor;
-  float checker_size;
-  glm::vec3 floor_a;
-  glm::vec3 floor_b;
+  int mode = int(EnvMode::Studio);  // EnvMode
+  glm::vec3 color{0.8f};            // constant mode radiance
+  glm::vec3 sky_top{0.10f, 0.105f, 0.115f};
+  glm::vec3 sky_horizon{0.30f, 0.29f, 0.27f};
+  glm::vec3 ground{0.16f, 0.15f, 0.14f};
+  float strip_intensity = 3.0f;
+  float backdrop_glow = 2.0f;
+  bool floor = true;
+  float checker_size = 0.04f;
+  glm::vec3 floor_a{0.58f, 0.56f, 0.53f};
+  glm::vec3 floor_b{0.44f, 0.42f, 0.40f};
 };
 
 struct LightParams {
-  glm::vec3 direction;  // towards the light
-  glm::vec3 color;
-  float intensity;
-  float size;  // angular radius, degrees
+  glm::vec3 direction{-0.55f, 0.75f, 0.45f};  // towards the light
+  glm::vec3 color{1.0f, 0.97f, 0.92f};
+  float intensity = 2.5f;
+  float size = 12.0f;  // angular radius, degrees
 };
 
 struct CameraParams {
-  bool auto_frame;  // place the camera to frame the glass; eye/target then only give the direction
-  glm::vec3 eye;
-  glm::vec3 target;
-  float vfov;  // degrees
+  bool auto_frame = true;  // place the camera to frame the scene; eye/target then only give the direction
+  glm::vec3 eye{0.0f, 0.13f, 0.42f};
+  glm::vec3 target{0.0f, 0.075f, 0.0f};
+  float vfov = 28.0f;  // degrees
 };
 
 struct ClipParams {
-  bool enabled;      // show a cross-section
-  glm::vec3 normal;  // glass frame; the side the normal points to is cut away
-  float offset;      // metres along the normal from the glass's axis foot
+  bool enabled = false;              // show a cross-section
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};  // glass frame; the side the normal points to is cut away
+  float offset = 0.0f;               // metres along the normal from the glass's axis foot
 };
 
 struct RenderParams {
-  int tonemap;  // Tonemap
-  float exposure;
-  bool transparent;
-  int supersample;
-  int max_events;
+  int tonemap = int(Tonemap::Aces);  // Tonemap
+  float exposure = 1.0f;
+  bool transparent = false;
+  int supersample = 2;
+  int max_events = 12;
 };
 
 // The groups that belong to one vessel object of a scene: its glass and its drink.
@@ -141,16 +143,28 @@ std::string_view type_name(ParamType);
 // Enums are held as their index in the struct and as their name in JSON/CLI.
 using ParamValue = std::variant<float, int, bool, glm::vec3, std::string, Curve>;
 
+struct ParamDesc;
+
+// Typed access to the field of one table row in the struct that holds it (`Root` is
+// VesselParams or SceneParams). Made only by the row builder (param_row.hpp), which
+// does not compile when the row's ParamType does not match the field's C++ type.
+template <class Root>
+struct ParamAccess {
+  ParamValue (*get)(const ParamDesc&, const Root&) = nullptr;
+  void (*set)(const ParamDesc&, Root&, const ParamValue&) = nullptr;  // the value already validated
+};
+
 struct ParamDesc {
   std::string path;  // "group.name"
   ParamType type;
-  ParamValue def;
+  ParamValue def;          // from a default-constructed Params
   float min = 0, max = 0;  // per component for Vec3/Color; r and y bounds for Curve
   std::string unit;
   std::string doc;
-  std::vector<std::string> choices;  // Enum only
-  void* (*field)(Params&);           // where the value lives in Params
+  std::vector<std::string> choices;      // Enum only
   ParamScope scope = ParamScope::Scene;  // whose struct holds it: the scene's or each vessel's
+  ParamAccess<VesselParams> vessel;      // set for ParamScope::Vessel rows
+  ParamAccess<SceneParams> scene;        // set for ParamScope::Scene rows
 };
 
 // An error in a parameter value. `field` is the parameter path, `expected` says what
@@ -164,15 +178,25 @@ struct ParamError : std::runtime_error {
 
 const std::vector<ParamDesc>& param_table();
 const ParamDesc* find_param(std::string_view path);
+// The same as Params{}: every default of the table.
 Params default_params();
+std::string_view scope_name(ParamScope);  // "scene", "object"
 
 ParamValue get_param(const Params&, const ParamDesc&);
+// A vessel-scope row of one vessel's parameters, or a scene-scope row of the scene's;
+// the other scope throws std::logic_error (a programming error).
+ParamValue get_param(const VesselParams&, const ParamDesc&);
+ParamValue get_param(const SceneParams&, const ParamDesc&);
 // Checks type and range; throws ParamError. Nothing is written unless the value is valid.
 void set_param(Params&, const ParamDesc&, const ParamValue&);
+void set_param(VesselParams&, const ParamDesc&, const ParamValue&);
+void set_param(SceneParams&, const ParamDesc&, const ParamValue&);
 void validate_value(const ParamDesc&, const ParamValue&);
 std::string expected_text(const ParamDesc&);
 // "unknown parameter 'x' (did you mean 'y'?)" for a path not in the table.
 std::string unknown_param_message(const std::string& path);
+// The choice nearest to `text` (a few edits away at most), or "" when none is near.
+std::string nearest_choice(const std::string& text, const std::vector<std::string>& choices);
 
 // Text forms used by --set and `draught params`: "0.8", "true", "1,0.5,0", "aces",
 // "0.03,0;0.035,0.15" for curves.

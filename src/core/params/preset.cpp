@@ -2,12 +2,16 @@
 
 #include "core/io/files.hpp"
 #include "core/params/json_input.hpp"
+#include "core/vessel/vessel.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
+#include <optional>
+#include <stdexcept>
 
 namespace draught {
 
@@ -15,25 +19,103 @@ using nlohmann::json;
 
 namespace {
 
-void collect(const json& obj, const std::string& prefix, const std::string& file, Preset& out) {
+// The parameters in `obj` (nested by group); `field` is where obj lies in the file
+// ("params." or "objects[2].params.").
+void collect(const json& obj, const std::string& prefix, const std::string& file, const std::string& field,
+             PresetValues& out) {
   for (auto& [key, val] : obj.items()) {
     const std::string path = prefix.empty() ? key : prefix + "." + key;
     bool is_group = false;
     for (auto& d : param_table()) is_group |= d.path.rfind(path + ".", 0) == 0;
     if (const ParamDesc* d = find_param(path)) {
-      out.values.emplace_back(d, param_value_from_json(*d, val, file, "params." + d->path));
+      out.emplace_back(d, param_value_from_json(*d, val, file, field + d->path));
     } else if (is_group) {
       if (!val.is_object())
-        throw InputError(file + ": field 'params." + path + "': expected an object of " + path +
+        throw InputError(file + ": field '" + field + path + "': expected an object of " + path +
                          ".* parameters, got " + short_dump(val));
-      collect(val, path, file, out);
+      collect(val, path, file, field, out);
     } else {
-      throw InputError(file + ": field 'params." + path + "': " + unknown_param_message(path));
+      throw InputError(file + ": field '" + field + path + "': " + unknown_param_message(path));
     }
   }
 }
 
 std::string group_of(const std::string& path) { return path.substr(0, path.find('.')); }
+
+std::string groups_of(ParamScope scope) {
+  std::string out;
+  for (auto& d : param_table()) {
+    const std::string g = group_of(d.path) + ".*";
+    if (d.scope == scope && out.find(g) == std::string::npos) out += (out.empty() ? "" : ", ") + g;
+  }
+  return out;
+}
+
+void check_keys(const json& obj, const std::string& file, const std::string& where,
+                std::initializer_list<const char*> keys) {
+  for (auto& [key, val] : obj.items()) {
+    if (std::find_if(keys.begin(), keys.end(), [&, &key = key](const char* k) { return key == k; }) != keys.end())
+      continue;
+    std::string list;
+    for (const char* k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
+    throw InputError(file + ": field '" + where + key + "': unknown key, expected one of " + list);
+  }
+}
+
+PresetObject parse_object(const json& o, const std::string& file, const std::string& at) {
+  if (!o.is_object())
+    throw InputError(file + ": field '" + at + "': expected an object with name, glass, drink, position, yaw, "
+                     "params; got " + short_dump(o));
+  check_keys(o, file, at + ".", {"name", "glass", "drink", "position", "yaw", "params"});
+  PresetObject obj;
+  auto str = [&](const char* key, bool required) -> std::string {
+    const std::string f = at + "." + key;
+    if (!o.contains(key)) {
+      if (required) throw InputError(file + ": field '" + f + "': missing, expected a string");
+      return "";
+    }
+    if (!o[key].is_string() || o[key].get<std::string>().empty())
+      throw InputError(file + ": field '" + f + "': expected a non-empty string, got " + short_dump(o[key]));
+    return o[key].get<std::string>();
+  };
+  obj.name = str("name", true);
+  obj.glass = str("glass", false);
+  obj.drink = str("drink", false);
+  if (o.contains("position")) {
+    const json& p = o["position"];
+    const std::string expected =
+        "expected [x, y, z] in metres: x and z in [-5, 5], y (the foot above the floor) in [0, 1]";
+    if (!p.is_array() || p.size() != 3)
+      throw InputError(file + ": field '" + at + ".position': " + expected + ", got " + short_dump(p));
+    for (int i = 0; i < 3; ++i) {
+      const json& c = p[size_t(i)];
+      const double lo = i == 1 ? 0.0 : -5.0, hi = i == 1 ? 1.0 : 5.0;
+      if (!c.is_number() || !(c.get<double>() >= lo && c.get<double>() <= hi))
+        throw InputError(file + ": field '" + at + ".position': " + expected + ", got " + short_dump(p));
+      obj.placement.position[i] = c.get<float>();
+    }
+  }
+  if (o.contains("yaw")) {
+    const json& y = o["yaw"];
+    if (!y.is_number() || !(y.get<double>() >= -360.0 && y.get<double>() <= 360.0))
+      throw InputError(file + ": field '" + at + ".yaw': expected a number of degrees in [-360, 360], got " +
+                       short_dump(y));
+    obj.placement.yaw = y.get<float>();
+  }
+  if (o.contains("params")) {
+    const json& params = o["params"];
+    if (!params.is_object())
+      throw InputError(file + ": field '" + at + ".params': expected an object of parameter groups (" +
+                       groups_of(ParamScope::Vessel) + "), got " + short_dump(params));
+    collect(params, "", file, at + ".params.", obj.values);
+    for (auto& [d, v] : obj.values)
+      if (d->scope != ParamScope::Vessel)
+        throw InputError(file + ": field '" + at + ".params." + d->path + "': " + group_of(d->path) +
+                         ".* belongs to the whole scene: set it in the preset's top-level params (an object may set " +
+                         groups_of(ParamScope::Vessel) + ")");
+  }
+  return obj;
+}
 
 }  // namespace
 
@@ -50,13 +132,7 @@ Preset parse_preset(const std::string& text, const std::string& file) {
     if (!j[key].is_string()) throw InputError(file + ": field '" + key + "': expected a string, got " + short_dump(j[key]));
     return j[key].get<std::string>();
   };
-  for (auto& [key, val] : j.items()) {
-    static const char* known[] = {"draught_preset", "kind", "name", "description", "suggested_glass", "params"};
-    if (std::find_if(std::begin(known), std::end(known), [&, &key = key](const char* k) { return key == k; }) == std::end(known))
-      throw InputError(file + ": field '" + key +
-                       "': unknown key, expected one of draught_preset, kind, name, description, "
-                       "suggested_glass, params");
-  }
+  check_keys(j, file, "", {"draught_preset", "kind", "name", "description", "suggested_glass", "params", "objects"});
   if (j.contains("draught_preset") && j["draught_preset"] != kPresetFormat)
     throw InputError(file + ": field 'draught_preset': expected format " + std::to_string(kPresetFormat) +
                      ", got " + short_dump(j["draught_preset"]));
@@ -72,7 +148,7 @@ Preset parse_preset(const std::string& text, const std::string& file) {
     if (!j["params"].is_object())
       throw InputError(file + ": field 'params': expected an object of parameter groups, got " +
                        short_dump(j["params"]));
-    collect(j["params"], "", file, p);
+    collect(j["params"], "", file, "params.", p.values);
   }
   for (auto& [d, v] : p.values) {
     const std::string g = group_of(d->path);
@@ -80,6 +156,34 @@ Preset parse_preset(const std::string& text, const std::string& file) {
     if ((p.kind == "glass" && g != "glass") || (p.kind == "drink" && !drink_group))
       throw InputError(file + ": field 'params." + d->path + "': a " + p.kind + " preset may set only " +
                        (p.kind == "glass" ? "glass.*" : "liquid.*, foam.* and bubbles.*") + " parameters (use kind \"scene\")");
+  }
+  if (j.contains("objects")) {
+    const json& objects = j["objects"];
+    if (p.kind != "scene")
+      throw InputError(file + ": field 'objects': only a scene preset places objects (kind \"scene\"), this is a " +
+                       p.kind + " preset");
+    if (!objects.is_array() || objects.empty())
+      throw InputError(file + ": field 'objects': expected an array of 1 to " + std::to_string(kMaxSceneObjects) +
+                       " objects, got " + short_dump(objects));
+    if (objects.size() > size_t(kMaxSceneObjects))
+      throw InputError(file + ": field 'objects': expected at most " + std::to_string(kMaxSceneObjects) +
+                       " objects, got " + std::to_string(objects.size()));
+    for (size_t i = 0; i < objects.size(); ++i) {
+      const std::string at = "objects[" + std::to_string(i) + "]";
+      p.objects.push_back(parse_object(objects[i], file, at));
+      for (size_t k = 0; k < i; ++k)
+        if (p.objects[k].name == p.objects[i].name)
+          throw InputError(file + ": field '" + at + ".name': expected a name no other object has, got \"" +
+                           p.objects[i].name + "\" (also objects[" + std::to_string(k) + "])");
+    }
+    if (!p.suggested_glass.empty())
+      throw InputError(file + ": field 'suggested_glass': a scene with objects gives each object its glass "
+                       "(objects[N].glass)");
+    for (auto& [d, v] : p.values)
+      if (d->scope != ParamScope::Scene)
+        throw InputError(file + ": field 'params." + d->path + "': a scene with objects sets " + group_of(d->path) +
+                         ".* per object (objects[N].params); its own params may set only " +
+                         groups_of(ParamScope::Scene));
   }
   return p;
 }
@@ -168,63 +272,202 @@ void save_preset(const std::filesystem::path& path, const std::string& json_text
 
 namespace draught {
 
+std::vector<std::string> preset_names(const std::string& kind) {
+  std::vector<std::string> names;
+  const std::string sub = kind == "glass" ? "glasses" : kind + "s";
+  for (auto& dir : preset_dirs()) {
+    std::error_code ec;
+    for (auto& e : std::filesystem::directory_iterator(dir / sub, ec))
+      if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
+}
+
 namespace {
-std::pair<const ParamDesc*, ParamValue> parse_assignment(const std::string& flag, const std::string& text) {
+
+// An object's glass or drink preset: a name in the preset directories' <kind>s/ folder,
+// or a path (relative to the scene file).
+Preset load_object_preset(const Preset& scene, const std::string& name, const std::string& kind,
+                          const std::string& field) {
+  std::filesystem::path path;
+  if (name.find('/') != std::string::npos || name.ends_with(".json")) {
+    path = name;
+    if (path.is_relative()) path = std::filesystem::path(scene.file).parent_path() / path;
+    if (!std::filesystem::exists(path))
+      throw InputError(scene.file + ": field '" + field + "': no such " + kind + " preset file " + path.string());
+  } else {
+    const std::string sub = kind == "glass" ? "glasses" : kind + "s";
+    for (auto& dir : preset_dirs())
+      if (std::filesystem::exists(dir / sub / (name + ".json"))) {
+        path = dir / sub / (name + ".json");
+        break;
+      }
+    if (path.empty()) {
+      const std::vector<std::string> names = preset_names(kind);
+      std::string list;
+      for (auto& n : names) list += (list.empty() ? "" : ", ") + n;
+      const std::string near = nearest_choice(name, names);
+      throw InputError(scene.file + ": field '" + field + "': expected one of " + list + " (a " + kind +
+                       " preset), got \"" + name + "\"" + (near.empty() ? "" : " (did you mean \"" + near + "\"?)"));
+    }
+  }
+  Preset p = load_preset(path);
+  if (p.kind != kind)
+    throw InputError(scene.file + ": field '" + field + "': expected a " + kind + " preset, but " + p.file +
+                     " is a " + p.kind + " preset");
+  return p;
+}
+
+std::string metres(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f m", v);
+  return buf;
+}
+
+}  // namespace
+
+void check_footprints(const Scene& s, const std::string& where) {
+  struct Foot {
+    size_t index;
+    glm::dvec2 at;
+    double radius;
+  };
+  std::vector<Foot> feet;
+  for (size_t i = 0; i < s.objects.size(); ++i)
+    if (const VesselObject* v = as_vessel(s.objects[i])) {
+      const glm::vec3 p = s.objects[i].placement.position;
+      feet.push_back({i, glm::dvec2(p.x, p.z), build_vessel(v->params.glass).bound_radius});
+    }
+  for (size_t a = 0; a < feet.size(); ++a)
+    for (size_t b = a + 1; b < feet.size(); ++b) {
+      const double apart = glm::length(feet[a].at - feet[b].at), need = feet[a].radius + feet[b].radius;
+      if (apart >= need) continue;
+      auto label = [&](const Foot& f) {
+        return "objects[" + std::to_string(f.index) + "] '" + s.objects[f.index].name + "'";
+      };
+      throw InputError(where + ": " + label(feet[a]) + " and " + label(feet[b]) +
+                       " overlap: their glasses would interpenetrate (widest radii " + metres(feet[a].radius) +
+                       " and " + metres(feet[b].radius) + ", so their positions need at least " + metres(need) +
+                       " between them, got " + metres(apart) + ")");
+    }
+}
+
+Scene scene_from_preset(const Preset& preset, std::string* log) {
+  if (preset.objects.empty())
+    throw std::logic_error("scene_from_preset: " + preset.file + " places no objects");
+  Scene scene;
+  Params scene_doc = default_params();
+  apply_preset(preset, scene_doc);  // the scene's own groups (validated when parsed)
+  scene.params = scene_doc;
+  std::string used;
+  for (size_t i = 0; i < preset.objects.size(); ++i) {
+    const PresetObject& o = preset.objects[i];
+    const std::string at = "objects[" + std::to_string(i) + "]";
+    std::optional<Preset> drink;
+    if (!o.drink.empty()) drink = load_object_preset(preset, o.drink, "drink", at + ".drink");
+    const std::string glass_name = !o.glass.empty()                          ? o.glass
+                                   : drink && !drink->suggested_glass.empty() ? drink->suggested_glass
+                                                                             : "pint";
+    const Preset glass = load_object_preset(preset, glass_name, "glass", at + (o.glass.empty() ? ".drink" : ".glass"));
+    VesselParams v;
+    for (auto& [d, val] : glass.values) set_param(v, *d, val);
+    if (drink)
+      for (auto& [d, val] : drink->values) set_param(v, *d, val);
+    for (auto& [d, val] : o.values) set_param(v, *d, val);
+    scene.objects.push_back(SceneObject{o.name, o.placement, VesselObject{v}});
+    used += at + " " + o.name + ": glass " + glass.name + " (" + glass.file + ")" +
+            (drink ? ", drink " + drink->name + " (" + drink->file + ")" : std::string()) + "\n";
+  }
+  check_footprints(scene, preset.file);
+  if (log) *log += used;
+  return scene;
+}
+
+namespace {
+
+// "path=value" of --set or --camera against the scene: the path may address one object.
+std::pair<ParamRef, ParamValue> parse_assignment(const Scene& scene, const std::string& flag, const std::string& text) {
   auto eq = text.find('=');
   if (eq == std::string::npos)
     throw InputError(flag + " " + text + ": expected path=value, e.g. " + flag + " liquid.fill=0.8");
   const std::string path = text.substr(0, eq);
-  const ParamDesc* d = find_param(path);
-  if (!d) throw InputError(flag + " " + text + ": " + unknown_param_message(path));
+  auto fail = [&](const std::string& expected) -> InputError {
+    return InputError(flag + " " + text + ": field '" + path + "': expected " + expected);
+  };
+  ParamRef ref;
   try {
-    return {d, parse_param_text(*d, text.substr(eq + 1))};
+    const ObjectPath split = split_object_path(path);
+    if (!find_param(split.param))
+      throw InputError(flag + " " + text + ": " + unknown_param_message(std::string(split.param)));
+    ref = parse_param_ref(scene, path);
   } catch (const ParamError& e) {
-    throw InputError(flag + " " + text + ": field '" + e.field + "': expected " + e.expected);
+    throw fail(e.expected);
+  }
+  try {
+    return {ref, parse_param_text(*ref.desc, text.substr(eq + 1))};
+  } catch (const ParamError& e) {
+    throw fail(e.expected);
   }
 }
 }  // namespace
 
-Params resolve_scene(const SceneRequest& req, std::string* log) {
+Scene resolve_scene_objects(const SceneRequest& req, std::string* log) {
   const Preset drink = load_preset(find_preset(req.preset, "drink"));
-  const std::string glass_name = !req.glass.empty()                ? req.glass
-                                 : !drink.suggested_glass.empty() ? drink.suggested_glass
-                                                                  : "pint";
-  // A scene that sets its own glass and names none keeps it.
-  const bool scene_sets_glass = drink.kind == "scene" && req.glass.empty() && drink.suggested_glass.empty();
-  if (drink.kind != "drink" && drink.kind != "scene")
-    throw InputError(drink.file + ": field 'kind': expected \"drink\" or \"scene\" for --preset, got \"" +
-                     drink.kind + "\"");
-  Preset glass;
-  if (!scene_sets_glass) {
-    glass = load_preset(find_preset(glass_name, "glass"));
-    if (glass.kind != "glass")
-      throw InputError(glass.file + ": field 'kind': expected \"glass\" for --glass, got \"" + glass.kind + "\"");
+  std::string used;
+  Scene scene;
+  if (!drink.objects.empty()) {
+    if (!req.glass.empty())
+      throw InputError("--glass " + req.glass + ": the scene '" + drink.name + "' (" + drink.file +
+                       ") places its own glasses; leave out --glass (change one object's glass with --set "
+                       "objects[N].glass.*, or in the scene file)");
+    std::string objects_log;
+    scene = scene_from_preset(drink, &objects_log);
+    used = "preset: " + drink.name + " (" + drink.file + "), " + std::to_string(scene.objects.size()) +
+           " objects\n" + objects_log;
+  } else {
+    const std::string glass_name = !req.glass.empty()                ? req.glass
+                                   : !drink.suggested_glass.empty() ? drink.suggested_glass
+                                                                    : "pint";
+    // A scene that sets its own glass and names none keeps it.
+    const bool scene_sets_glass = drink.kind == "scene" && req.glass.empty() && drink.suggested_glass.empty();
+    if (drink.kind != "drink" && drink.kind != "scene")
+      throw InputError(drink.file + ": field 'kind': expected \"drink\" or \"scene\" for --preset, got \"" +
+                       drink.kind + "\"");
+    Preset glass;
+    if (!scene_sets_glass) {
+      glass = load_preset(find_preset(glass_name, "glass"));
+      if (glass.kind != "glass")
+        throw InputError(glass.file + ": field 'kind': expected \"glass\" for --glass, got \"" + glass.kind + "\"");
+    }
+    Params p = default_params();
+    if (!scene_sets_glass) apply_preset(glass, p);
+    apply_preset(drink, p);
+    scene = single_glass_scene(p);
+    used = "preset: " + drink.name + " (" + drink.file + ")\n";
+    if (!scene_sets_glass) used += "glass: " + glass.name + " (" + glass.file + ")\n";
   }
-  std::vector<std::pair<const ParamDesc*, ParamValue>> overrides;
+  // Every override is checked against the scene before any is applied.
+  std::vector<std::pair<ParamRef, ParamValue>> overrides;
   for (const auto& c : req.camera) {
     auto eq = c.find('=');
     const std::string key = c.substr(0, eq);
     if (eq == std::string::npos || (key != "eye" && key != "target" && key != "vfov"))
       throw InputError("--camera " + c + ": expected eye=x,y,z, target=x,y,z or vfov=degrees");
-    overrides.push_back(parse_assignment("--camera", "camera." + c));
-    if (key != "vfov") overrides.push_back(parse_assignment("--camera", "camera.auto_frame=false"));
+    overrides.push_back(parse_assignment(scene, "--camera", "camera." + c));
+    if (key != "vfov") overrides.push_back(parse_assignment(scene, "--camera", "camera.auto_frame=false"));
   }
-  for (const auto& s : req.sets) overrides.push_back(parse_assignment("--set", s));
-  // Everything is valid: now apply, in order.
-  Params p = default_params();
-  if (!scene_sets_glass) apply_preset(glass, p);
-  apply_preset(drink, p);
-  for (auto& [d, v] : overrides) set_param(p, *d, v);
-  if (log) {
-    *log += "preset: " + drink.name + " (" + drink.file + ")\n";
-    if (!scene_sets_glass) *log += "glass: " + glass.name + " (" + glass.file + ")\n";
-  }
-  return p;
+  for (const auto& s : req.sets) overrides.push_back(parse_assignment(scene, "--set", s));
+  Scene out = scene;
+  for (auto& [ref, v] : overrides) set_param(out, ref, v);
+  if (out.objects.size() > 1 && !req.sets.empty()) check_footprints(out, "--set");
+  if (log) *log += used;
+  return out;
 }
 
-Scene resolve_scene_objects(const SceneRequest& req, std::string* log) {
-  // Single-glass presets only so far; scene presets with objects are loaded here next.
-  return single_glass_scene(resolve_scene(req, log));
+Params resolve_scene(const SceneRequest& req, std::string* log) {
+  return vessel_document(resolve_scene_objects(req, log), 0);
 }
 
 }  // namespace draught

@@ -3,13 +3,16 @@
 #include "core/io/files.hpp"
 #include "core/params/json_input.hpp"
 #include "core/params/preset.hpp"
-#include "core/sim/simulation.hpp"
 #include "core/scene/frame.hpp"
+#include "core/sim/scene_simulation.hpp"
+#include "core/sim/simulation.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <numbers>
+#include <stdexcept>
 
 namespace draught {
 
@@ -64,6 +67,22 @@ void check_keys(const Reader& r, const json& obj, const std::string& where, std:
   }
 }
 
+// "object": N or "object": "name" (checked against a scene later, by bind_timeline).
+void parse_object(const Reader& r, const json& a, const std::string& at, TimelineAction& act) {
+  if (!a.contains("object")) return;
+  const json& o = a["object"];
+  act.object_field = at + ".object";
+  if (o.is_string() && !o.get<std::string>().empty()) {
+    act.object_name = o.get<std::string>();
+    act.object = kUnboundObject;
+  } else if (o.is_number_integer() && o.get<std::int64_t>() >= 0 && o.get<std::int64_t>() < kMaxSceneObjects) {
+    act.object = int(o.get<std::int64_t>());
+  } else {
+    r.fail(act.object_field, "expected an object index from 0 to " + std::to_string(kMaxSceneObjects - 1) +
+                                 " or an object's name, got " + short_dump(o));
+  }
+}
+
 TimelineAction parse_action(const Reader& r, const json& a, const std::string& at) {
   if (!a.is_object()) r.fail(at, "expected an action object, got " + short_dump(a));
   if (!a.contains("action"))
@@ -82,48 +101,90 @@ TimelineAction parse_action(const Reader& r, const json& a, const std::string& a
   };
   const std::string f = at + ".";
   if (kind == "tilt") {
-    check_keys(r, a, f, {"at", "action", "duration", "ease", "angle", "toward"});
+    check_keys(r, a, f, {"at", "action", "duration", "ease", "angle", "toward", "object"});
     act.kind = TimelineAction::Kind::Tilt;
     act.angle = rad(r.number(a, "angle", f + "angle", 0, 135, " (degrees)"));
     act.toward = rad(r.number(a, "toward", f + "toward", -360, 360, " (degrees)", &zero));
     act.duration = duration(0, &zero);
   } else if (kind == "rotate" || kind == "orbit") {
-    check_keys(r, a, f, {"at", "action", "duration", "ease", "degrees"});
+    if (kind == "orbit" && a.contains("object"))
+      r.fail(f + "object", "orbit moves the camera round the scene: it takes no object");
+    check_keys(r, a, f, {"at", "action", "duration", "ease", "degrees", "object"});
     act.kind = kind == "rotate" ? TimelineAction::Kind::Rotate : TimelineAction::Kind::Orbit;
     act.degrees = rad(r.number(a, "degrees", f + "degrees", -3600, 3600, ""));
     act.duration = duration(0, &zero);
   } else if (kind == "shake") {
-    check_keys(r, a, f, {"at", "action", "duration", "ease", "amplitude", "frequency", "toward"});
+    check_keys(r, a, f, {"at", "action", "duration", "ease", "amplitude", "frequency", "toward", "object"});
     act.kind = TimelineAction::Kind::Shake;
     act.amplitude = r.number(a, "amplitude", f + "amplitude", 0, 0.1, " (metres)");
     act.frequency = r.number(a, "frequency", f + "frequency", 0.1, 20, " (Hz)");
     act.toward = rad(r.number(a, "toward", f + "toward", -360, 360, " (degrees)", &zero));
     act.duration = duration(0.05, nullptr);
   } else if (kind == "sip") {
-    check_keys(r, a, f, {"at", "action", "duration", "ease", "amount"});
+    check_keys(r, a, f, {"at", "action", "duration", "ease", "amount", "object"});
     act.kind = TimelineAction::Kind::Sip;
     act.amount = r.number(a, "amount", f + "amount", 0, 1, " (fraction of the glass)");
     act.duration = duration(0.05, &one);
   } else if (kind == "set") {
-    check_keys(r, a, f, {"at", "action", "duration", "ease", "param", "value"});
+    check_keys(r, a, f, {"at", "action", "duration", "ease", "param", "value", "object"});
     act.kind = TimelineAction::Kind::Set;
     if (!a.contains("param")) r.fail(f + "param", "missing, expected a parameter path such as \"liquid.srm\"");
     const std::string path = r.string(a, "param", f + "param");
-    act.param = find_param(path);
-    if (!act.param) r.fail(f + "param", unknown_param_message(path));
+    ObjectPath split;
+    try {
+      split = split_object_path(path);
+    } catch (const ParamError& e) {
+      r.fail(f + "param", "expected " + e.expected + ", got \"" + path + "\"");
+    }
+    act.param = find_param(split.param);
+    if (!act.param) r.fail(f + "param", unknown_param_message(std::string(split.param)));
+    if (split.object >= 0) {
+      if (a.contains("object"))
+        r.fail(f + "object", "the param \"" + path + "\" already names its object: give one or the other");
+      if (split.object >= kMaxSceneObjects)
+        r.fail(f + "param", "expected an object index from 0 to " + std::to_string(kMaxSceneObjects - 1) +
+                                " in objects[N], got \"" + path + "\"");
+      act.object = split.object;
+      act.object_field = f + "param";
+    }
+    if ((split.object >= 0 || a.contains("object")) && act.param->scope == ParamScope::Scene)
+      r.fail(split.object >= 0 ? f + "param" : f + "object",
+             act.param->path + " belongs to the whole scene, not to one object: leave out the object");
     if (!a.contains("value")) r.fail(f + "value", "missing, expected " + expected_text(*act.param));
     act.value = param_value_from_json(*act.param, a["value"], r.file, f + "value");
     act.duration = duration(0, &zero);
   } else if (kind == "pour") {
-    check_keys(r, a, f, {"at", "action"});
+    check_keys(r, a, f, {"at", "action", "object"});
     act.kind = TimelineAction::Kind::Pour;
   } else {
     r.fail(at + ".action", "expected one of tilt, rotate, shake, sip, orbit, set, pour, got \"" + kind + "\"");
   }
+  parse_object(r, a, at, act);
   return act;
 }
 
 glm::dvec2 lean_target(const TimelineAction& a) { return a.angle * glm::dvec2(std::cos(a.toward), std::sin(a.toward)); }
+
+// The lean of `object` at time t, each tilt starting from from[i].
+glm::dvec2 lean_with(const std::vector<TimelineAction>& actions, const std::vector<glm::dvec2>& from, double t,
+                     int object) {
+  glm::dvec2 lean(0.0);
+  for (size_t i = 0; i < actions.size(); ++i) {
+    const TimelineAction& a = actions[i];
+    if (a.at > t) break;
+    if (a.kind == TimelineAction::Kind::Tilt && Timeline::drives(a, object))
+      lean = glm::mix(from[i], lean_target(a), progress(a, t));
+  }
+  return lean;
+}
+
+// A value of a set action at progress x from `from` (numbers and vectors blend).
+ParamValue blended(const TimelineAction& a, const ParamValue& from, double x) {
+  ParamValue v = a.value;
+  if (auto* to = std::get_if<float>(&v)) *to = float(std::get<float>(from) + (*to - std::get<float>(from)) * x);
+  if (auto* to = std::get_if<glm::vec3>(&v)) *to = glm::mix(std::get<glm::vec3>(from), *to, float(x));
+  return v;
+}
 
 }  // namespace
 
@@ -143,12 +204,12 @@ Timeline parse_timeline(const std::string& text, const std::string& file) {
     if (j.contains(key)) *out = r.string(j, key, key);
   if (!j.contains("actions") || !j["actions"].is_array())
     r.fail("actions", "expected an array of actions" + (j.contains("actions") ? ", got " + short_dump(j["actions"]) : std::string()));
-  for (size_t i = 0; i < j["actions"].size(); ++i)
+  for (size_t i = 0; i < j["actions"].size(); ++i) {
     t.actions.push_back(parse_action(r, j["actions"][i], "actions[" + std::to_string(i) + "]"));
+    t.actions.back().index = int(i);
+  }
   std::stable_sort(t.actions.begin(), t.actions.end(), [](auto& a, auto& b) { return a.at < b.at; });
-  // Each tilt starts from wherever the glass leans when it begins.
-  for (auto& a : t.actions)
-    if (a.kind == TimelineAction::Kind::Tilt) a.tilt_from = t.lean_at(a.at);
+  t.prepare_tilts();
   double end = 0;
   for (auto& a : t.actions) end = std::max(end, a.at + a.duration);
   const double settle = end + 2.0;
@@ -172,26 +233,41 @@ Timeline load_timeline(const std::string& name) {
   throw InputError("no timeline named '" + name + "' (looked for " + tried + ")");
 }
 
-glm::dvec2 Timeline::lean_at(double t) const {
-  glm::dvec2 lean(0.0);
-  for (auto& a : actions) {
-    if (a.at > t) break;
-    if (a.kind == TimelineAction::Kind::Tilt) lean = glm::mix(a.tilt_from, lean_target(a), progress(a, t));
+void Timeline::prepare_tilts() {
+  // Each tilt starts from wherever the glass leans when it begins, as each object sees
+  // the actions that drive it: every object alike (-1), and each one actions address.
+  std::vector<int> views = {-1};
+  for (auto& a : actions)
+    if (a.object >= 0 && std::find(views.begin(), views.end(), a.object) == views.end()) views.push_back(a.object);
+  tilt_from.clear();
+  for (int view : views) {
+    std::vector<glm::dvec2> from(actions.size(), glm::dvec2(0.0));
+    for (size_t i = 0; i < actions.size(); ++i)
+      if (actions[i].kind == TimelineAction::Kind::Tilt && drives(actions[i], view))
+        from[i] = lean_with(actions, from, actions[i].at, view);
+    tilt_from[view] = std::move(from);
   }
-  return lean;
 }
 
-double Timeline::spin_at(double t) const {
+glm::dvec2 Timeline::lean_at(double t, int object) const {
+  auto view = tilt_from.find(object);
+  if (view == tilt_from.end()) view = tilt_from.find(-1);
+  if (view == tilt_from.end() || view->second.size() != actions.size())
+    throw std::logic_error("Timeline::lean_at: prepare_tilts() was not run after the actions changed");
+  return lean_with(actions, view->second, t, object);
+}
+
+double Timeline::spin_at(double t, int object) const {
   double spin = 0;
   for (auto& a : actions)
-    if (a.kind == TimelineAction::Kind::Rotate) spin += a.degrees * progress(a, t);
+    if (a.kind == TimelineAction::Kind::Rotate && drives(a, object)) spin += a.degrees * progress(a, t);
   return spin;
 }
 
-glm::dvec3 Timeline::shake_at(double t) const {
+glm::dvec3 Timeline::shake_at(double t, int object) const {
   glm::dvec3 offset(0.0);
   for (auto& a : actions) {
-    if (a.kind != TimelineAction::Kind::Shake || t <= a.at || t >= a.at + a.duration) continue;
+    if (a.kind != TimelineAction::Kind::Shake || !drives(a, object) || t <= a.at || t >= a.at + a.duration) continue;
     const double tau = t - a.at, ramp = std::min(0.25, a.duration / 4);
     auto smooth = [](double x) { x = std::clamp(x, 0.0, 1.0); return x * x * (3 - 2 * x); };
     const double envelope = smooth(tau / ramp) * smooth((a.duration - tau) / ramp);
@@ -201,18 +277,28 @@ glm::dvec3 Timeline::shake_at(double t) const {
   return offset;
 }
 
-double Timeline::drink_rate_at(double t) const {
+double Timeline::drink_rate_at(double t, int object) const {
   double rate = 0;
   for (auto& a : actions)
-    if (a.kind == TimelineAction::Kind::Sip && t >= a.at && t < a.at + a.duration) rate += a.amount / a.duration;
+    if (a.kind == TimelineAction::Kind::Sip && drives(a, object) && t >= a.at && t < a.at + a.duration)
+      rate += a.amount / a.duration;
   return rate;
 }
 
-bool Timeline::pours_in(double t0, double t1) const {
+bool Timeline::pours_in(double t0, double t1, int object) const {
   for (auto& a : actions)
-    if (a.kind == TimelineAction::Kind::Pour && a.at >= t0 && a.at < t1) return true;
+    if (a.kind == TimelineAction::Kind::Pour && drives(a, object) && a.at >= t0 && a.at < t1) return true;
   return false;
 }
+
+namespace {
+// The camera circled about the vertical through its target.
+void orbit_camera(CameraParams& camera, double orbit) {
+  const glm::dvec3 target(camera.target), arm = glm::dvec3(camera.eye) - target;
+  const double c = std::cos(orbit), s = std::sin(orbit);
+  camera.eye = glm::vec3(target + glm::dvec3(c * arm.x + s * arm.z, arm.y, -s * arm.x + c * arm.z));
+}
+}  // namespace
 
 Params Timeline::params_at(double t, const Params& base) const {
   Params p = base;
@@ -221,26 +307,66 @@ Params Timeline::params_at(double t, const Params& base) const {
     if (a.at > t) break;
     const double x = progress(a, t);
     if (a.kind == TimelineAction::Kind::Orbit) orbit += a.degrees * x;
-    if (a.kind != TimelineAction::Kind::Set) continue;
-    ParamValue v = a.value;
-    const ParamValue from = get_param(p, *a.param);
-    if (auto* to = std::get_if<float>(&v)) *to = float(std::get<float>(from) + (*to - std::get<float>(from)) * x);
-    if (auto* to = std::get_if<glm::vec3>(&v)) *to = glm::mix(std::get<glm::vec3>(from), *to, float(x));
-    set_param(p, *a.param, v);
+    if (a.kind != TimelineAction::Kind::Set || !drives(a, 0)) continue;
+    set_param(p, *a.param, blended(a, get_param(p, *a.param), x));
   }
-  if (orbit != 0) {  // the camera circles the vertical through its target
-    const glm::dvec3 target(p.camera.target), arm = glm::dvec3(p.camera.eye) - target;
-    const double c = std::cos(orbit), s = std::sin(orbit);
-    p.camera.eye = glm::vec3(target + glm::dvec3(c * arm.x + s * arm.z, arm.y, -s * arm.x + c * arm.z));
-  }
+  if (orbit != 0) orbit_camera(p.camera, orbit);
   return p;
 }
 
+Scene Timeline::scene_at(double t, const Scene& base) const {
+  Scene s = base;
+  double orbit = 0;
+  for (auto& a : actions) {
+    if (a.at > t) break;
+    const double x = progress(a, t);
+    if (a.kind == TimelineAction::Kind::Orbit) orbit += a.degrees * x;
+    if (a.kind != TimelineAction::Kind::Set) continue;
+    if (a.param->scope == ParamScope::Scene) {
+      set_param(s.params, *a.param, blended(a, get_param(s.params, *a.param), x));
+      continue;
+    }
+    // Each object blends from its own value.
+    for (size_t i = 0; i < s.objects.size(); ++i)
+      if (VesselObject* v = as_vessel(s.objects[i]); v && drives(a, int(i)))
+        set_param(v->params, *a.param, blended(a, get_param(v->params, *a.param), x));
+  }
+  if (orbit != 0) orbit_camera(s.params.camera, orbit);
+  return s;
+}
+
+void bind_timeline(Timeline& tl, const Scene& scene) {
+  std::vector<std::string> names;
+  std::string list;
+  for (auto& o : scene.objects) {
+    names.push_back(o.name);
+    list += (list.empty() ? "\"" : ", \"") + o.name + "\"";
+  }
+  const std::string range = scene.objects.empty() ? std::string("no object (the scene has none)")
+                                                  : object_range_text(scene) + " or a name: " + list;
+  for (auto& a : tl.actions) {
+    if (a.object_field.empty()) continue;
+    if (!a.object_name.empty()) {
+      const auto it = std::find(names.begin(), names.end(), a.object_name);
+      if (it == names.end()) {
+        const std::string near = nearest_choice(a.object_name, names);
+        throw InputError(tl.file + ": field '" + a.object_field + "': expected an object of the scene, " + range +
+                         "; got \"" + a.object_name + "\"" + (near.empty() ? "" : " (did you mean \"" + near + "\"?)"));
+      }
+      a.object = int(it - names.begin());
+    } else if (a.object >= int(scene.objects.size())) {
+      throw InputError(tl.file + ": field '" + a.object_field + "': expected " + range + ", got " +
+                       std::to_string(a.object));
+    }
+  }
+  tl.prepare_tilts();
+}
+
 Pose TimelineDriver::pose_at(double t) const {
-  const glm::dvec2 lean = timeline_.lean_at(t);
+  const glm::dvec2 lean = timeline_->lean_at(t, object_);
   const double tilt = glm::length(lean), toward = tilt > 0 ? std::atan2(lean.y, lean.x) : 0.0;
-  Pose pose = tipped_on_floor(tilt_orientation(tilt, toward, timeline_.spin_at(t)), foot_radius_);
-  pose.position += timeline_.shake_at(t);
+  Pose pose = tipped_on_floor(tilt_orientation(tilt, toward, timeline_->spin_at(t, object_)), foot_radius_);
+  pose.position += timeline_->shake_at(t, object_);
   return pose;
 }
 
@@ -270,11 +396,51 @@ void play_timeline(Simulation& sim, TimelineDriver& driver, const Timeline& tl, 
 }
 
 FrameState timeline_frame(const Timeline& tl, const Params& base, double t) {
-  Simulation sim(tl.params_at(0, base));
+  return timeline_frame(tl, single_glass_scene(base), t);
+}
+
+std::vector<TimelineDriver> timeline_drivers(const Timeline& tl, const SceneSimulation& sim) {
+  std::vector<TimelineDriver> drivers;
+  for (int i = 0; i < int(sim.scene().objects.size()); ++i) {
+    const Simulation* v = sim.vessel(i);
+    drivers.emplace_back(tl, v ? v->vessel().r_outer.front() : 0.0, i);
+  }
+  return drivers;
+}
+
+void play_timeline(SceneSimulation& sim, std::vector<TimelineDriver>& drivers, const Timeline& tl, const Scene& base,
+                   double t) {
+  Scene now = tl.scene_at(t, base);
+  now.selected = sim.selected();
+  sim.set_scene(now);
+  const int n = int(now.objects.size());
+  if (int(drivers.size()) != n) throw std::logic_error("play_timeline: one driver per object is needed");
+  auto pour = [&](double t0, double t1) {
+    for (int i = 0; i < n; ++i)
+      if (Simulation* v = sim.vessel(i); v && tl.pours_in(t0, t1, i)) v->pour();
+  };
+  if (sim.time() == 0) pour(0, 1e-9);  // a pour at 0 shows in frame 0
+  std::vector<MotionSample> motions(static_cast<size_t>(n));
+  std::vector<double> rates(static_cast<size_t>(n));
+  while (sim.time() + Simulation::kStep <= t + 1e-9) {
+    const double next = sim.time() + Simulation::kStep;
+    pour(sim.time(), next);
+    for (int i = 0; i < n; ++i) {
+      motions[size_t(i)] = drivers[size_t(i)].sample(next);
+      rates[size_t(i)] = tl.drink_rate_at(next, i);
+    }
+    sim.step_each(motions, rates);
+  }
+}
+
+FrameState timeline_frame(const Timeline& tl, const Scene& base, double t) {
+  Timeline bound = tl;
+  bind_timeline(bound, base);
+  SceneSimulation sim(bound.scene_at(0, base));
   sim.settle_bubbles(4.0);
-  TimelineDriver driver(tl, sim.vessel().r_outer.front());
-  play_timeline(sim, driver, tl, base, t);
-  return assemble_frame(tl.params_at(t, base), {sim.frame()});
+  std::vector<TimelineDriver> drivers = timeline_drivers(bound, sim);
+  play_timeline(sim, drivers, bound, base, t);
+  return sim.frame();
 }
 
 }  // namespace draught

@@ -20,17 +20,32 @@
 // and vectors blend over `duration`, others switch at `at`. pour: the glass is filled to
 // liquid.fill and a fresh head builds (foam.rise_time), then settles. Easing is smooth
 // (zero speed at both ends) unless "ease": "linear".
+//
+// In a scene of several objects, an action may carry "object": N (an index) or "object":
+// "name" (an object's name in the scene preset): tilt, rotate, shake, sip and pour then
+// drive that object only; without it they drive every vessel alike, each at its own
+// place. A set action addresses one object with "object" or with a path such as
+// "objects[2].liquid.srm"; without either, a vessel parameter is set on every object.
+// orbit moves the camera and takes no object. Names and indexes are checked against the
+// scene by bind_timeline (the CLI binds to the scene it renders, `draught validate` to
+// the timeline's own preset).
 #pragma once
 
 #include "core/input/driver.hpp"
 #include "core/params/params.hpp"
+#include "core/scene/scene.hpp"
 
+#include <map>
 #include <string>
 #include <vector>
 
 namespace draught {
 
 inline constexpr int kTimelineFormat = 1;
+
+// The object of an action that names one ("object": "stout") until bind_timeline finds
+// it in a scene; such an action drives nothing before.
+inline constexpr int kUnboundObject = -2;
 
 struct TimelineAction {
   enum class Kind { Tilt, Rotate, Shake, Sip, Orbit, Set, Pour } kind;
@@ -42,7 +57,10 @@ struct TimelineAction {
   double amount = 0;                          // sip
   const ParamDesc* param = nullptr;           // set
   ParamValue value;
-  glm::dvec2 tilt_from{0.0};                  // tilt: lean vector where this action starts
+  int index = 0;            // its place in the file's "actions" (for messages: actions[3])
+  int object = -1;          // the object it drives: -1 every vessel; kUnboundObject: a name not yet bound
+  std::string object_name;  // "object": "name" as written; empty for an index or none
+  std::string object_field; // where the object was given ("actions[3].object", "actions[3].param"); empty: none
 };
 
 struct Timeline {
@@ -50,42 +68,69 @@ struct Timeline {
   std::string preset, glass;  // optional scene for the CLI (empty: none given)
   double duration = 0;        // seconds
   double fps = 0;             // 0: not given
-  std::vector<TimelineAction> actions;
+  std::vector<TimelineAction> actions;  // sorted by `at` (stable)
 
-  // The glass's lean (radians, as a vector: its length is the tilt, its direction the
-  // side it leans to), spin and shake offset at time t.
-  glm::dvec2 lean_at(double t) const;
-  double spin_at(double t) const;
-  glm::dvec3 shake_at(double t) const;
-  double drink_rate_at(double t) const;  // fraction of the cavity per second
-  bool pours_in(double t0, double t1) const;  // a pour action at a time in [t0, t1)
-  // The parameters at time t: `base` with the set and orbit actions applied.
+  // Whether action `a` drives object `object` (-1 or that index).
+  static bool drives(const TimelineAction& a, int object) { return a.object == -1 || a.object == object; }
+
+  // For object `object` (a single glass is object 0): the glass's lean (radians, as a
+  // vector: its length is the tilt, its direction the side it leans to), spin and shake
+  // offset at time t, from the actions that drive it.
+  glm::dvec2 lean_at(double t, int object = 0) const;
+  double spin_at(double t, int object = 0) const;
+  glm::dvec3 shake_at(double t, int object = 0) const;
+  double drink_rate_at(double t, int object = 0) const;  // fraction of the cavity per second
+  bool pours_in(double t0, double t1, int object = 0) const;  // a pour action at a time in [t0, t1)
+  // The parameters at time t: `base` with the set and orbit actions applied (a single
+  // glass: the actions for every object and for object 0).
   Params params_at(double t, const Params& base) const;
+  // The same for a scene: set actions reach every object, or the one they address.
+  Scene scene_at(double t, const Scene& base) const;
+
+  // Where each tilt starts, per object that actions address (and -1 for the others):
+  // computed by parse_timeline and bind_timeline.
+  std::map<int, std::vector<glm::dvec2>> tilt_from;
+  void prepare_tilts();
 };
 
 Timeline parse_timeline(const std::string& text, const std::string& file);  // throws InputError
 Timeline load_timeline(const std::string& name_or_path);  // a path, or a name under presets/timelines/
+// Resolves the actions' objects in this scene: names to indexes, and every index must be
+// one of the scene's objects; throws InputError "FILE: field 'actions[3].object':
+// expected ...". A timeline may be bound again to another scene.
+void bind_timeline(Timeline&, const Scene&);
 
 // The scripted input driver: the glass tipped on its foot (radius foot_radius) as the
-// timeline says, with velocities and accelerations from its smooth path.
+// timeline says for object `object`, with velocities and accelerations from its smooth path.
 class TimelineDriver : public InputDriver {
  public:
-  TimelineDriver(const Timeline& t, double foot_radius) : timeline_(t), foot_radius_(foot_radius) {}
+  TimelineDriver(const Timeline& t, double foot_radius, int object = 0)
+      : timeline_(&t), foot_radius_(foot_radius), object_(object) {}
   const char* name() const override { return "timeline"; }
   MotionSample sample(double t) override;
   Pose pose_at(double t) const;
 
  private:
-  const Timeline& timeline_;
+  const Timeline* timeline_;
   double foot_radius_;
+  int object_;
 };
 
 class Simulation;
+class SceneSimulation;
 struct FrameState;
 // Plays the timeline up to time t: the parameters as they are at t, then fixed
-// simulation steps with the scripted motion and sips.
+// simulation steps with the scripted motion and sips (a single glass: object 0's actions).
 void play_timeline(Simulation&, TimelineDriver&, const Timeline&, const Params& base, double t);
 // The frame at time t of the timeline played from the start (tests, benchmarks, stills).
 FrameState timeline_frame(const Timeline&, const Params& base, double t);
+
+// The same on a scene: one driver per object (each tips on its own glass's foot), made
+// for the simulation's objects. The timeline must be bound to the scene (bind_timeline).
+std::vector<TimelineDriver> timeline_drivers(const Timeline&, const SceneSimulation&);
+void play_timeline(SceneSimulation&, std::vector<TimelineDriver>&, const Timeline&, const Scene& base, double t);
+// Binds a copy of the timeline to `base`, plays it and returns the frame at time t; a
+// scene of one glass gives exactly the frame of timeline_frame(tl, params, t).
+FrameState timeline_frame(const Timeline&, const Scene& base, double t);
 
 }  // namespace draught

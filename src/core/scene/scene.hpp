@@ -59,12 +59,24 @@ struct ParamRef {
   int object = -1;
   const ParamDesc* desc = nullptr;
 };
-// Throws ParamError for an unknown path, an object index out of range, or an object
-// prefix on a scene parameter.
+// The two parts of a path: "objects[2].liquid.fill" -> {2, "liquid.fill"}; a path without
+// the prefix -> {-1, path}. Throws ParamError for a malformed prefix ("objects[x].a",
+// "objects[2]"); the index is not checked against a scene here.
+struct ObjectPath {
+  int object = -1;
+  std::string_view param;
+};
+ObjectPath split_object_path(std::string_view path);
+// "an object index from 0 to 3 (the scene has 4 objects)": what an objects[N] prefix of
+// this scene may be, for error messages.
+std::string object_range_text(const Scene&);
+// Throws ParamError for an unknown path (the message suggests the nearest), an object
+// index out of range, or an object prefix on a scene parameter.
 ParamRef parse_param_ref(const Scene&, std::string_view path);
 // Reads a value (object -1 on a vessel parameter reads the selected object).
 ParamValue get_param(const Scene&, const ParamRef&);
-// Checks and sets; nothing is written unless the value is valid.
+// Checks and sets (object -1 on a vessel parameter sets every vessel object); nothing is
+// written unless the value is valid.
 void set_param(Scene&, const ParamRef&, const ParamValue&);
 
 // The vessel of an object, or nullptr for another kind.

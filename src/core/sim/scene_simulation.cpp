@@ -7,6 +7,7 @@
 namespace draught {
 
 MotionSample placed(const MotionSample& m, const Placement& at) {
+  if (at.yaw == 0 && at.position == glm::vec3(0.0f)) return m;
   MotionSample out = m;
   const glm::dquat yaw = glm::angleAxis(glm::radians(double(at.yaw)), glm::dvec3(0, 1, 0));
   out.pose.orientation = m.pose.orientation * yaw;
@@ -71,6 +72,21 @@ void SceneSimulation::step(const MotionSample& m, double drink_rate) {
       rest.time = m.time;
       sims_[i]->step(placed(rest, at), 0);
     }
+  }
+}
+
+void SceneSimulation::step_each(const std::vector<MotionSample>& motions, const std::vector<double>& drink_rates) {
+  const double time = motions.empty() ? this->time() + Simulation::kStep : motions.front().time;
+  for (size_t i = 0; i < sims_.size(); ++i) {
+    if (!sims_[i]) continue;
+    const Placement& at = scene_.objects[i].placement;
+    MotionSample m;
+    if (i < motions.size()) {
+      m = motions[i];
+    } else {
+      m.time = time;
+    }
+    sims_[i]->step(placed(m, at), i < drink_rates.size() ? drink_rates[i] : 0.0);
   }
 }
 

@@ -13,7 +13,9 @@
 namespace draught {
 
 // A motion sample of the object's own stage moved to its placement: the foot's centre
-// at placement.position, the glass turned by placement.yaw about its axis.
+// at placement.position, the glass turned by placement.yaw about its axis. The placement
+// at the origin returns the sample unchanged (bit for bit: a single glass moves exactly
+// as a Simulation of its own).
 MotionSample placed(const MotionSample&, const Placement&);
 
 class SceneSimulation {
@@ -33,6 +35,9 @@ class SceneSimulation {
   void advance(InputDriver& driver, double t, double drink_rate = 0);
   // One step: the selected object moves with `m` (in its own stage), the others rest.
   void step(const MotionSample& m, double drink_rate = 0);
+  // One step with a motion (in its own stage) and a drink rate for each object, by index
+  // (timelines); an object beyond the vectors rests.
+  void step_each(const std::vector<MotionSample>& motions, const std::vector<double>& drink_rates);
 
   // The simulation of object i (nullptr when it is not a vessel).
   Simulation* vessel(int object);

@@ -33,7 +33,7 @@ glm::dvec3 clamp_length(const glm::dvec3& v, double max_len) {
 
 Simulation::Simulation(const VesselParams& p) : params_(p), foam_(p.foam) {
   rebuild_glass();
-  fraction_ = std::clamp(double(p.liquid.fill), 0.0, 1.0);
+  fraction_ = p.liquid.fill;  // in [0, 0.98]: the table checked it
   env_.radius = vessel_.inner_radius(vessel_.height);
   update_surface();
 }
@@ -54,7 +54,7 @@ void Simulation::set_params(const VesselParams& p) {
   foam_.set_params(p.foam);
   if (glass_changed) rebuild_glass();
   else if (bubbles_changed) rebuild_bubbles();
-  if (refill || glass_changed) fraction_ = std::clamp(double(p.liquid.fill), 0.0, 1.0);
+  if (refill || glass_changed) fraction_ = p.liquid.fill;
   update_surface();
 }
 
@@ -65,7 +65,7 @@ void Simulation::set_fraction(double fraction) {
 }
 
 void Simulation::pour() {
-  fraction_ = std::clamp(double(params_.liquid.fill), 0.0, 1.0);
+  fraction_ = params_.liquid.fill;
   foam_.pour();
   bubbles_->clear();
   update_surface();

@@ -59,7 +59,8 @@ Vessel build_vessel(const GlassParams& g) {
   v.height = curve.height();
   v.dy = v.height / Vessel::kSegments;
   const double wall = g.wall_thickness;
-  v.base = std::clamp(double(g.base_thickness), 0.001, v.height - 0.01);
+  // The table keeps base_thickness >= 1 mm; what it cannot know is the glass's height.
+  v.base = std::min(double(g.base_thickness), v.height - 0.01);
   for (int k = 0; k <= Vessel::kSegments; ++k) {
     double r = curve.radius(k * v.dy);
     v.r_outer.push_back(r);

@@ -244,9 +244,11 @@ TEST(Foam, SameSeedSameFramesOtherSeedOtherBubbles) {
 
 TEST(Foam, ExtremeParamsStayFinite) {
   FoamParams p = default_params().foam;
-  p.height = 0.08f, p.half_life = 1.0f, p.rise_time = 0.1f, p.big_bubbles = 12, p.lacing = 1.0f;
-  for (float rise : {0.1f, 0.0f}) {
-    for (float half : {1.0f, 0.0f}) {
+  // The extremes the table allows (it refuses anything beyond them; the foam does not clamp).
+  const ParamDesc &rise_row = *find_param("foam.rise_time"), &half_row = *find_param("foam.half_life");
+  p.height = find_param("foam.height")->max, p.big_bubbles = 12, p.lacing = 1.0f;
+  for (float rise : {rise_row.min, rise_row.max}) {
+    for (float half : {half_row.min, half_row.max}) {
       p.rise_time = rise, p.half_life = half;
       FoamState f(p);
       f.pour();

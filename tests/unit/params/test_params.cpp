@@ -1,5 +1,6 @@
 // The parameter table: descriptors, validation, text forms, and the preset round trip.
 #include "core/io/files.hpp"
+#include "core/params/param_row.hpp"
 #include "core/params/params.hpp"
 #include "core/params/preset.hpp"
 
@@ -146,6 +147,118 @@ TEST(ParamTable, FieldsDoNotAlias) {
       else { EXPECT_TRUE(get_param(p, e) == e.def) << "setting " << d.path << " changed " << e.path; }
     }
   }
+}
+
+// ------------------------------------------------------ typed rows, defaults --
+
+// Whether the table's row builder accepts this row (it is constrained, so a mismatch is
+// a compile error in the table; here it is asked without failing the build).
+template <ParamType T, auto Group, auto Field>
+constexpr bool row_compiles =
+    requires { param_row<T, Group, Field>(std::string("g.f"), 0.0f, 1.0f, std::string(), std::string()); };
+
+static_assert(row_compiles<ParamType::Float, &VesselParams::glass, &GlassParams::ior>);
+static_assert(row_compiles<ParamType::Int, &VesselParams::foam, &FoamParams::seed>);
+static_assert(row_compiles<ParamType::Bool, &SceneParams::env, &EnvParams::floor>);
+static_assert(row_compiles<ParamType::Vec3, &SceneParams::light, &LightParams::direction>);
+static_assert(row_compiles<ParamType::Color, &SceneParams::light, &LightParams::color>);
+static_assert(row_compiles<ParamType::Enum, &SceneParams::env, &EnvParams::mode>);
+static_assert(row_compiles<ParamType::Curve, &VesselParams::glass, &GlassParams::profile>);
+// The wrong ParamType for the field's C++ type does not compile.
+static_assert(!row_compiles<ParamType::Int, &VesselParams::glass, &GlassParams::ior>);
+static_assert(!row_compiles<ParamType::Float, &VesselParams::foam, &FoamParams::seed>);
+static_assert(!row_compiles<ParamType::Enum, &SceneParams::env, &EnvParams::floor>);
+static_assert(!row_compiles<ParamType::Bool, &SceneParams::render, &RenderParams::supersample>);
+static_assert(!row_compiles<ParamType::Vec3, &SceneParams::light, &LightParams::intensity>);
+static_assert(!row_compiles<ParamType::Curve, &VesselParams::glass, &GlassParams::absorption>);
+// A field of another group, or a group of neither VesselParams nor SceneParams.
+static_assert(!row_compiles<ParamType::Float, &VesselParams::glass, &LiquidParams::ior>);
+static_assert(!row_compiles<ParamType::Float, &VesselParams::liquid, &GlassParams::ior>);
+static_assert(!row_compiles<ParamType::Float, &LiquidParams::fill, &LiquidParams::fill>);
+
+TEST(ParamTable, DefaultConstructedParamsAreTheDefaults) {
+  // Defaults live in the structs' initializers; the table reads them from there.
+  const Params value_initialized{};
+  Params default_initialized;
+  EXPECT_TRUE(params_equal(value_initialized, default_params()));
+  EXPECT_TRUE(params_equal(default_initialized, default_params()));
+  for (const auto& d : param_table()) EXPECT_TRUE(get_param(value_initialized, d) == d.def) << d.path;
+  // A few spelled out, so a changed initializer is noticed (docs/PRESETS.md lists all).
+  EXPECT_EQ(default_initialized.liquid.fill, 0.85f);
+  EXPECT_EQ(default_initialized.glass.ior, 1.52f);
+  EXPECT_EQ(default_initialized.glass.profile,
+            (Curve{{0.0295f, 0.0f}, {0.0345f, 0.05f}, {0.0395f, 0.10f}, {0.0435f, 0.15f}}));
+  EXPECT_EQ(default_initialized.foam.big_bubbles, 6);
+  EXPECT_EQ(default_initialized.bubbles.etched_base, false);
+  EXPECT_EQ(default_initialized.env.mode, int(EnvMode::Studio));
+  EXPECT_EQ(default_initialized.render.tonemap, int(Tonemap::Aces));
+  EXPECT_EQ(default_initialized.light.direction, glm::vec3(-0.55f, 0.75f, 0.45f));
+  EXPECT_EQ(default_initialized.camera.auto_frame, true);
+  EXPECT_EQ(default_initialized.render.supersample, 2);
+  EXPECT_TRUE(find_param("env.mode")->def == ParamValue(std::string("studio")));
+  EXPECT_TRUE(find_param("render.tonemap")->def == ParamValue(std::string("aces")));
+}
+
+TEST(ParamTable, EveryDefaultIsWithinItsRange) {
+  for (const auto& d : param_table()) {
+    auto in = [&](float x) { return x >= d.min && x <= d.max; };
+    switch (d.type) {
+      case ParamType::Float: EXPECT_TRUE(in(std::get<float>(d.def))) << d.path; break;
+      case ParamType::Int: EXPECT_TRUE(in(float(std::get<int>(d.def)))) << d.path; break;
+      case ParamType::Vec3:
+      case ParamType::Color: {
+        const glm::vec3 v = std::get<glm::vec3>(d.def);
+        EXPECT_TRUE(in(v.x) && in(v.y) && in(v.z)) << d.path;
+        break;
+      }
+      case ParamType::Enum: {
+        const auto& c = d.choices;
+        EXPECT_NE(std::find(c.begin(), c.end(), std::get<std::string>(d.def)), c.end()) << d.path;
+        break;
+      }
+      case ParamType::Curve:
+        for (const glm::vec2& q : std::get<Curve>(d.def)) EXPECT_TRUE(in(q.x) && q.y >= 0 && q.y <= d.max) << d.path;
+        break;
+      case ParamType::Bool: break;
+    }
+    EXPECT_NO_THROW(validate_value(d, d.def)) << d.path;
+  }
+}
+
+TEST(ParamTable, ScopeComesFromTheStructThatHoldsTheRow) {
+  const std::set<std::string> vessel_groups = {"glass", "liquid", "foam", "bubbles", "clip"};
+  int vessel = 0, scene = 0;
+  for (const auto& d : param_table()) {
+    const bool is_vessel = vessel_groups.count(d.path.substr(0, d.path.find('.'))) > 0;
+    EXPECT_EQ(d.scope, is_vessel ? ParamScope::Vessel : ParamScope::Scene) << d.path;
+    // Exactly the accessors of its scope.
+    EXPECT_EQ(d.vessel.get != nullptr, is_vessel) << d.path;
+    EXPECT_EQ(d.vessel.set != nullptr, is_vessel) << d.path;
+    EXPECT_EQ(d.scene.get != nullptr, !is_vessel) << d.path;
+    EXPECT_EQ(d.scene.set != nullptr, !is_vessel) << d.path;
+    (is_vessel ? vessel : scene)++;
+  }
+  EXPECT_EQ(scope_name(ParamScope::Scene), "scene");
+  EXPECT_EQ(scope_name(ParamScope::Vessel), "object");
+  EXPECT_GT(vessel, 30);
+  EXPECT_GT(scene, 20);
+}
+
+TEST(ParamTable, VesselAndSceneStructsAreReachedDirectly) {
+  VesselParams v;
+  SceneParams s;
+  set_param(v, *find_param("liquid.fill"), 0.5f);
+  set_param(s, *find_param("env.mode"), std::string("constant"));
+  EXPECT_EQ(v.liquid.fill, 0.5f);
+  EXPECT_EQ(s.env.mode, int(EnvMode::Constant));
+  EXPECT_TRUE(get_param(v, *find_param("liquid.fill")) == ParamValue(0.5f));
+  EXPECT_TRUE(get_param(s, *find_param("env.mode")) == ParamValue(std::string("constant")));
+  // A row of the other scope is a programming error, not a silent write elsewhere.
+  EXPECT_THROW(get_param(v, *find_param("env.floor")), std::logic_error);
+  EXPECT_THROW(set_param(s, *find_param("liquid.fill"), 0.5f), std::logic_error);
+  // Validation still applies.
+  EXPECT_THROW(set_param(v, *find_param("liquid.fill"), 2.0f), ParamError);
+  EXPECT_EQ(v.liquid.fill, 0.5f);
 }
 
 TEST(ParamTable, EveryDefaultValidates) {

@@ -1,8 +1,8 @@
 // A deterministic mutation fuzzer for the preset loader: every shipped preset, mutated
 // thousands of times (flipped, deleted, duplicated and inserted bytes, JSON punctuation,
-// extreme numbers). The loader must either accept a fully valid preset or throw
-// InputError; any other exception, a crash or (under the sanitizer build in
-// scripts/test.sh) a memory error fails.
+// extreme numbers); scenes with objects are also resolved (glasses, drinks, footprints).
+// The loader must either accept a fully valid preset or throw InputError; any other
+// exception, a crash or (under the sanitizer build in scripts/test.sh) a memory error fails.
 #include "core/io/files.hpp"
 #include "test_common.hpp"
 
@@ -43,6 +43,11 @@ TEST(PresetFuzz, MutatedPresetsAreAcceptedWholeOrRejectedWithInputError) {
           Params params = default_params();
           apply_preset(p, params);  // every accepted value passed validation
           for (auto& [d, v] : p.values) EXPECT_NO_THROW(validate_value(*d, v));
+          // A scene with objects: its glasses, drinks and footprints are checked too.
+          if (!p.objects.empty()) {
+            const Scene scene = scene_from_preset(p);
+            EXPECT_EQ(scene.objects.size(), p.objects.size());
+          }
           ++accepted;
         } catch (const InputError& e) {
           EXPECT_NE(std::string(e.what()).find("fuzz.json"), std::string::npos) << e.what();
