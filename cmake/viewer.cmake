@@ -46,8 +46,8 @@ if(DRAUGHT_TESTS)
   find_package(GTest REQUIRED)
   include(GoogleTest)
 
-  # The editor without a window: undo, presets, load and save errors.
-  add_executable(viewer_editor_tests tests/viewer/test_editor.cpp)
+  # The editor without a window: undo, presets, load and save errors, selection.
+  add_executable(viewer_editor_tests tests/viewer/test_editor.cpp tests/viewer/test_selection.cpp)
   target_link_libraries(viewer_editor_tests PRIVATE draught_viewer_editor GTest::gtest_main)
   gtest_discover_tests(viewer_editor_tests DISCOVERY_TIMEOUT 30)
 

@@ -3,13 +3,14 @@
 #include "editor.hpp"
 #include "params_panel.hpp"
 #include "preset_panel.hpp"
+#include "selection.hpp"
 #include "window.hpp"
 
 #include "core/io/files.hpp"
 #include "core/scene/frame.hpp"
 #include "core/io/image.hpp"
 #include "core/input/combined.hpp"
-#include "core/sim/simulation.hpp"
+#include "core/sim/scene_simulation.hpp"
 #include "core/params/timeline.hpp"
 #include "gpu/renderer.hpp"
 #include "platform/sdl_gamepad.hpp"
@@ -54,6 +55,10 @@ constexpr DebugView kViews[] = {DebugView::None, DebugView::Depth, DebugView::No
                                 DebugView::Cost};
 constexpr const char* kViewNames[] = {"none", "depth", "normal", "material", "cost"};
 
+// Today's timelines script one glass: they drive the scene's first object (the others stand
+// at rest) whichever the panel has selected.
+constexpr int kTimelineObject = 0;
+
 std::optional<Timeline> load_optional_timeline(const std::string& name) {
   if (name.empty()) return std::nullopt;
   return load_timeline(name);
@@ -65,6 +70,31 @@ Editor make_editor(const ViewerOptions& o, const std::optional<Timeline>& tl) {
   if (tl && !o.preset_given && !tl->preset.empty()) preset = tl->preset;
   if (tl && !o.glass_given && !tl->glass.empty()) glass = tl->glass;
   return Editor(preset, glass);
+}
+
+// The scene at time t of a timeline that drives `object`: its set and orbit actions applied
+// to that object's parameters and the scene's.
+Scene timeline_scene(const Timeline& tl, const Scene& base, double t, int object) {
+  const Params p = tl.params_at(t, vessel_document(base, object));
+  Scene s = base;
+  s.params = p;
+  if (VesselObject* v = as_vessel(s.objects[size_t(object)])) v->params = p;
+  s.selected = object;
+  return s;
+}
+
+// play_timeline (core/params/timeline.hpp) for a scene: the timeline moves the simulation's
+// selected object at its placement; every other object rests on the same clock.
+void play_timeline_in_scene(SceneSimulation& sim, TimelineDriver& driver, const Timeline& tl, const Scene& base,
+                            double t) {
+  sim.set_scene(timeline_scene(tl, base, t, sim.selected()));
+  Simulation& driven = sim.selected_vessel();
+  if (sim.time() == 0 && tl.pours_in(0, 1e-9)) driven.pour();  // a pour at 0 shows in frame 0
+  while (sim.time() + Simulation::kStep <= t + 1e-9) {
+    const double next = sim.time() + Simulation::kStep;
+    if (tl.pours_in(sim.time(), next)) driven.pour();
+    sim.step(driver.sample(next), tl.drink_rate_at(next));
+  }
 }
 
 class Viewer {
@@ -95,6 +125,9 @@ class Viewer {
   void key(const SDL_Keysym&, bool repeat);
   void mouse(const SDL_Event&);
   void zoom(double clicks);
+  void select(int object);
+  void pick(double x, double y);
+  Simulation* selected_sim() { return sim_->vessel(editor_.selected()); }
   void restart();
   void advance();
   void draw_panel();
@@ -109,13 +142,14 @@ class Viewer {
   gpu::Renderer renderer_;  // after window_: needs its context
   InputRig rig_;
   std::unique_ptr<SdlGamepadInput> gamepad_;
-  std::unique_ptr<Simulation> sim_;
+  std::unique_ptr<SceneSimulation> sim_;
   std::unique_ptr<TimelineDriver> timeline_driver_;
   ParamsPanelState params_state_;
   PresetPanelState preset_state_;
   unsigned applied_revision_ = 0;
   bool show_panel_ = true, quit_ = false;
   bool held_[2] = {false, false};  // mouse buttons whose press went to the rig
+  ClickTracker click_;              // the left button: a click selects, a drag tilts
   int view_ = 0;                    // index into kViews
   int tier_ = 2;                    // quality: index into kTiers (high)
   double now_ = 0;                  // the app's clock, seconds: events, input samples, simulation
@@ -186,7 +220,11 @@ void Viewer::key(const SDL_Keysym& k, bool repeat) {
     case SDLK_ESCAPE: quit_ = true; break;
     case SDLK_F1: show_panel_ = !show_panel_; break;
     case SDLK_r: restart(); note_ = timeline_ ? "timeline restarted" : "reset: upright, refilled"; break;
-    case SDLK_p: sim_->pour(); note_ = "pour"; break;
+    case SDLK_p:
+      if (Simulation* v = selected_sim()) v->pour();
+      note_ = "pour";
+      break;
+    case SDLK_TAB: select(cycle(editor_.selected(), int(editor_.scene().objects.size()), k.mod & KMOD_SHIFT ? -1 : 1)); break;
     case SDLK_s:
       if (timeline_) {
         note_ = "sip: the timeline decides what is drunk";
@@ -204,11 +242,13 @@ void Viewer::key(const SDL_Keysym& k, bool repeat) {
       tier_ = (tier_ + 2) % int(std::size(kTiers));  // high -> medium -> low -> high
       note_.clear();
       break;
-    case SDLK_c: {  // cross-section on/off (an undoable change, like a panel edit)
-      Params p = editor_.params();
-      p.clip.enabled = !p.clip.enabled;
-      editor_.change(p);
-      note_ = p.clip.enabled ? "cross-section on (clip group in the panel)" : "cross-section off";
+    case SDLK_c: {  // the selected glass's cross-section on/off (undoable, like a panel edit)
+      Scene s = editor_.scene();
+      const ParamRef clip{s.selected, find_param("clip.enabled")};
+      const bool on = !std::get<bool>(get_param(s, clip));
+      set_param(s, clip, on);
+      editor_.change(s);
+      note_ = on ? "cross-section on (clip group in the panel)" : "cross-section off";
       break;
     }
     default: break;
@@ -216,8 +256,13 @@ void Viewer::key(const SDL_Keysym& k, bool repeat) {
 }
 
 void Viewer::mouse(const SDL_Event& e) {
-  if (timeline_) return;  // the timeline moves the glass
   const bool ui = ImGui::GetIO().WantCaptureMouse;
+  // A click selects the glass under the pointer (in a timeline too: the panel edits it).
+  if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT && !ui) click_.press(e.button.x, e.button.y);
+  if (e.type == SDL_MOUSEMOTION) click_.move(e.motion.x, e.motion.y);
+  if (e.type == SDL_MOUSEBUTTONUP && e.button.button == SDL_BUTTON_LEFT && click_.release())
+    pick(e.button.x, e.button.y);
+  if (timeline_) return;  // the timeline moves the glass
   int ww = 0, wh = 0;
   window_.window_size(ww, wh);
   const Viewport vp{double(ww), double(wh)};
@@ -248,12 +293,31 @@ void Viewer::mouse(const SDL_Event& e) {
   }
 }
 
+// The object under window point (x, y) becomes the selected one; the floor or the sky
+// keeps the selection.
+void Viewer::pick(double x, double y) {
+  int ww = 0, wh = 0;
+  window_.window_size(ww, wh);
+  const int object = pick_object(sim_->frame(), x + 0.5, y + 0.5, ww, wh);
+  if (object >= 0 && object != editor_.selected()) select(object);
+}
+
+// The object that input drives and the panel edits. The rig carries on with the new object:
+// a game controller is recentred, so the glass it takes over starts upright.
+void Viewer::select(int object) {
+  editor_.select(object);
+  if (!timeline_) sim_->select(editor_.selected());
+  if (rig_.gamepad) rig_.gamepad->recenter();
+  const Scene& s = editor_.scene();
+  note_ = "selected " + s.objects[size_t(s.selected)].name;
+}
+
 // Wheel up moves the camera closer along its line of sight. Auto-framing would undo any
 // distance, so the first click takes over the framed camera and turns auto_frame off.
 void Viewer::zoom(double clicks) {
   if (clicks == 0) return;
-  Params p = editor_.params();
-  CameraParams c = p.camera.auto_frame ? frame_camera(p.camera, sim_->vessel()) : p.camera;
+  Scene p = editor_.scene();
+  CameraParams c = p.params.camera.auto_frame ? sim_->frame().camera : p.params.camera;
   const glm::vec3 back = c.eye - c.target;
   const float dist = glm::length(back);
   if (dist < 1e-6f) return;
@@ -262,9 +326,9 @@ void Viewer::zoom(double clicks) {
   const ParamDesc* target = find_param("camera.target");
   const glm::vec3 e = glm::clamp(c.target + back * (next / dist), glm::vec3(eye->min), glm::vec3(eye->max));
   try {
-    set_param(p, *find_param("camera.auto_frame"), false);
-    set_param(p, *target, c.target);
-    set_param(p, *eye, e);
+    set_param(p, ParamRef{-1, find_param("camera.auto_frame")}, false);
+    set_param(p, ParamRef{-1, target}, c.target);
+    set_param(p, ParamRef{-1, eye}, e);
   } catch (const ParamError& err) {
     note_ = std::string("zoom: ") + err.what();
     return;
@@ -273,23 +337,26 @@ void Viewer::zoom(double clicks) {
   last_wheel_ = now_;
 }
 
-// A fresh simulation: the glass upright and filled to liquid.fill (or the timeline from 0).
+// A fresh simulation: every glass upright at its place and filled to liquid.fill (or the
+// timeline from 0).
 void Viewer::restart() {
   sip_start_ = sip_until_ = -1;
   if (timeline_) {
-    sim_ = std::make_unique<Simulation>(timeline_->params_at(0, editor_.params()));
-    timeline_driver_ = std::make_unique<TimelineDriver>(*timeline_, sim_->vessel().r_outer.front());
+    sim_ = std::make_unique<SceneSimulation>(timeline_scene(*timeline_, editor_.scene(), 0, kTimelineObject));
+    timeline_driver_ = std::make_unique<TimelineDriver>(*timeline_, sim_->selected_vessel().vessel().r_outer.front());
     timeline_start_ = now_;
   } else {
-    sim_ = std::make_unique<Simulation>(editor_.params());
+    sim_ = std::make_unique<SceneSimulation>(editor_.scene());
     if (rig_.gamepad) rig_.gamepad->recenter();  // the controller's pose now is "upright"
   }
-  sim_->settle_bubbles(4.0);  // a drink that has been standing, as the CLI shows it
+  sim_->settle_bubbles(4.0);  // drinks that have been standing, as the CLI shows them
 }
 
 void Viewer::advance() {
   const bool changed = editor_.revision() != applied_revision_;
   applied_revision_ = editor_.revision();
+  // Other objects (a preset switch, an undo): start afresh, with settled bubbles.
+  if (changed && editor_.scene().objects.size() != sim_->scene().objects.size()) restart();
   if (timeline_) {
     double t = now_ - timeline_start_;
     if (t > timeline_->duration) {  // loop
@@ -297,13 +364,13 @@ void Viewer::advance() {
       t = 0;
     }
     if (changed) {  // the glass may have changed: the driver tips on the new foot
-      sim_->set_params(timeline_->params_at(sim_->time(), editor_.params()));
-      timeline_driver_ = std::make_unique<TimelineDriver>(*timeline_, sim_->vessel().r_outer.front());
+      sim_->set_scene(timeline_scene(*timeline_, editor_.scene(), sim_->time(), kTimelineObject));
+      timeline_driver_ = std::make_unique<TimelineDriver>(*timeline_, sim_->selected_vessel().vessel().r_outer.front());
     }
-    play_timeline(*sim_, *timeline_driver_, *timeline_, editor_.params(), t);
+    play_timeline_in_scene(*sim_, *timeline_driver_, *timeline_, editor_.scene(), t);
     return;
   }
-  if (changed) sim_->set_params(editor_.params());
+  if (changed) sim_->set_scene(editor_.scene());
   // A sip starts and ends between simulation steps of whole frames: step to each edge with
   // the right drink rate, so a sip drinks exactly kSipFraction.
   if (sip_start_ > sim_->time()) sim_->advance(*rig_.driver, std::min(now_, sip_start_));
@@ -319,15 +386,16 @@ void Viewer::draw_panel() {
   if (ImGui::Begin("draught")) {
     preset_panel(editor_, preset_state_);
     ImGui::Separator();
-    Params p = editor_.params();
-    if (params_panel(p, params_state_)) editor_.change(p);
+    Scene s = editor_.scene();
+    if (params_panel(s, params_state_)) editor_.change(s);
+    if (s.selected != editor_.selected()) select(s.selected);  // the panel's object combo
   }
   ImGui::End();
 }
 
 void Viewer::draw_scene(int width, int height) {
-  const Params scene = timeline_ ? timeline_->params_at(sim_->time(), editor_.params()) : editor_.params();
-  FrameState f = assemble_frame(scene, {sim_->frame()});
+  // Every object, the camera framing them all; in a timeline, its scene at this time.
+  FrameState f = sim_->frame();
   const Tier& tier = kTiers[tier_];
   f.params.render.max_events = std::min(f.params.render.max_events, tier.max_events);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -389,14 +457,23 @@ void Viewer::draw_overlay(int width, int height) {
       ImGui::Text("timeline %s: %.1f / %.1f s", timeline_->name.c_str(), sim_->time(), timeline_->duration);
     else
       ImGui::Text("input: %s%s", rig_.driver->name(), gamepad_ && gamepad_->active() >= 0 ? " (controller moving)" : "");
-    ImGui::Text("%.0f %% full, %.1f %% spilled", 100.0 * sim_->fraction(), 100.0 * sim_->spilled());
+    // The selected glass: named where there are several (one line, so the overlay keeps
+    // its size).
+    const Scene& scene = editor_.scene();
+    std::string which;
+    if (scene.objects.size() > 1)
+      which = scene.objects[size_t(scene.selected)].name + " (" + std::to_string(scene.selected + 1) + " of " +
+              std::to_string(scene.objects.size()) + "): ";
+    if (const Simulation* v = selected_sim())
+      ImGui::Text("%s%.0f %% full, %.1f %% spilled", which.c_str(), 100.0 * v->fraction(), 100.0 * v->spilled());
     if (view_ != 0) ImGui::Text("debug view: %s", kViewNames[view_]);
     const Tier& tier = kTiers[tier_];
     ImGui::Text("quality %s (%.0f %% resolution, %d events)", tier.name, 100.0 * tier.scale,
-                std::min(editor_.params().render.max_events, tier.max_events));
+                std::min(editor_.scene().params.render.max_events, tier.max_events));
     const ImVec4 grey(0.75f, 0.75f, 0.75f, 1.0f);
     if (!note_.empty()) ImGui::TextColored(grey, "%s", note_.c_str());
-    ImGui::TextColored(grey, "F1 panel  R reset  P pour  S sip  D debug  C cut  Q quality\nCtrl+Z undo  wheel zoom  Esc quit");
+    ImGui::TextColored(grey, "F1 panel  R reset  P pour  S sip  D debug  C cut  Q quality\n"
+                             "click/Tab select  Ctrl+Z undo  wheel zoom  Esc quit");
   }
   ImGui::End();
 }

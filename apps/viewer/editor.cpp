@@ -3,6 +3,7 @@
 #include "core/io/files.hpp"
 #include "core/params/preset.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <utility>
 
@@ -22,14 +23,14 @@ std::string as_path(const std::string& text) {
 
 }  // namespace
 
-// The same resolution as the CLI (glass preset, then drink or scene), plus the names to
-// show. Throws InputError naming the file and field.
+// The same resolution as the CLI (glass preset, then drink or scene, a scene's objects), plus
+// the names to show. Throws InputError naming the file and field.
 Editor::State Editor::resolve_named(const std::string& drink, const std::string& glass) {
   const Preset d = load_preset(find_preset(drink, "drink"));
   SceneRequest req;
   req.preset = drink;
   req.glass = glass;
-  State st{resolve_scene(req), drink, glass, label_of(d), ""};
+  State st{resolve_scene_objects(req), drink, glass, label_of(d), ""};
   // What resolve_scene used: "" when a scene brings its own glass.
   if (st.glass.empty()) st.glass = !d.suggested_glass.empty() ? d.suggested_glass : d.kind == "scene" ? "" : "pint";
   st.glass_label = st.glass.empty() ? "(the scene's)" : label_of(load_preset(find_preset(st.glass, "glass")));
@@ -39,10 +40,23 @@ Editor::State Editor::resolve_named(const std::string& drink, const std::string&
 Editor::Editor(const std::string& drink, const std::string& glass)
     : now_(resolve_named(drink, glass)), committed_(now_) {}
 
-void Editor::change(const Params& p) {
-  now_.params = p;
+void Editor::select(int object) {
+  const int last = std::max(0, int(now_.scene.objects.size()) - 1);
+  now_.scene.selected = committed_.scene.selected = std::clamp(object, 0, last);
+}
+
+void Editor::change(const Scene& s) {
+  const int selected = now_.scene.selected;
+  now_.scene = s;
+  select(selected);
   pending_ = true;
   ++revision_;
+}
+
+void Editor::restore(State st) {
+  const int selected = now_.scene.selected;
+  now_ = std::move(st);
+  select(selected);
 }
 
 void Editor::settle(bool busy) {
@@ -56,7 +70,8 @@ void Editor::settle(bool busy) {
 bool Editor::undo() {
   settle(false);
   if (history_.empty()) return false;
-  now_ = committed_ = history_.back();
+  restore(history_.back());
+  committed_ = now_;
   history_.pop_back();
   ++revision_;
   status_ = {"undone (" + std::to_string(history_.size()) + " more)", false};
@@ -65,7 +80,7 @@ bool Editor::undo() {
 
 void Editor::replace(const State& st) {
   settle(false);
-  now_ = st;
+  restore(st);
   pending_ = true;
   ++revision_;
   settle(false);
@@ -114,9 +129,14 @@ bool Editor::save_as(const std::string& path_text, const std::string& kind) {
   if (kind == "drink") groups = {"liquid", "foam", "bubbles"};
   else if (kind == "glass") groups = {"glass"};
   else if (kind != "scene") return fail("unknown preset kind '" + kind + "': expected scene, drink or glass");
+  // A preset describes one glass; a file format for several is the scene presets' (not
+  // written by the viewer yet).
+  if (kind == "scene" && now_.scene.objects.size() > 1)
+    return fail("this scene has " + std::to_string(now_.scene.objects.size()) +
+                " objects; Save as scene writes one glass: save the selected one as a drink or glass");
   const std::filesystem::path path = as_path(path_text);
   try {
-    save_preset(path, preset_json(now_.params, kind, path.stem().string(), "saved from draught-viewer", groups));
+    save_preset(path, preset_json(document(), kind, path.stem().string(), "saved from draught-viewer", groups));
   } catch (const std::exception& e) {
     return fail(e.what());
   }

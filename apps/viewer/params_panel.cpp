@@ -13,6 +13,22 @@ namespace {
 
 std::string group_of(const std::string& path) { return path.substr(0, path.find('.')); }
 
+// One row of the panel: a parameter of the selected object or of the scene, and the path a
+// user would type for it (objects[N]. only where the scene has several objects).
+struct Row {
+  Scene& scene;
+  ParamRef ref;
+  std::string path;
+  const ParamDesc& desc() const { return *ref.desc; }
+};
+
+Row row_of(Scene& s, const ParamDesc& d) {
+  const bool vessel = d.scope == ParamScope::Vessel;
+  const ParamRef ref{vessel ? s.selected : -1, &d};
+  const bool prefixed = vessel && s.objects.size() > 1;
+  return {s, ref, prefixed ? "objects[" + std::to_string(s.selected) + "]." + d.path : d.path};
+}
+
 // "wall_thickness [m]##glass.wall_thickness": the unit in the label, the path as the id.
 std::string label_of(const ParamDesc& d) {
   std::string l = d.path.substr(d.path.find('.') + 1);
@@ -20,19 +36,20 @@ std::string label_of(const ParamDesc& d) {
   return l + "##" + d.path;
 }
 
-void tooltip(const ParamDesc& d) {
+void tooltip(const Row& r) {
+  const ParamDesc& d = r.desc();
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("%s\n%s\n\n%s", d.path.c_str(), d.doc.c_str(), ("expects " + expected_text(d)).c_str());
+    ImGui::SetTooltip("%s\n%s\n\n%s", r.path.c_str(), d.doc.c_str(), ("expects " + expected_text(d)).c_str());
 }
 
 // The one way a value gets in: validated by set_param, rejected with the reason kept.
-bool apply(Params& p, const ParamDesc& d, const ParamValue& v, ParamsPanelState& s) {
+bool apply(Row& r, const ParamValue& v, ParamsPanelState& s) {
   try {
-    set_param(p, d, v);
+    set_param(r.scene, r.ref, v);
     s.error.clear();
     return true;
   } catch (const ParamError& e) {
-    s.error = e.what();
+    s.error = r.path + ": expected " + e.expected;
     return false;
   }
 }
@@ -45,11 +62,12 @@ ImGuiSliderFlags float_flags(const ParamDesc& d) {
   return ImGuiSliderFlags_AlwaysClamp | (wide ? ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_NoRoundToFormat : 0);
 }
 
-bool curve_widget(Params& p, const ParamDesc& d, ParamsPanelState& s) {
+bool curve_widget(Row& r, ParamsPanelState& s) {
+  const ParamDesc& d = r.desc();
   const bool open = ImGui::TreeNode(label_of(d).c_str());
-  tooltip(d);
+  tooltip(r);
   if (!open) return false;
-  Curve c = std::get<Curve>(get_param(p, d));
+  Curve c = std::get<Curve>(get_param(r.scene, r.ref));
   bool edited = false;
   int remove = -1;
   const float speed = (d.max - d.min) * 1e-4f;
@@ -90,18 +108,19 @@ bool curve_widget(Params& p, const ParamDesc& d, ParamsPanelState& s) {
   ImGui::EndDisabled();
   ImGui::TreePop();
   for (auto& q : c) q.x = clamp_to(d, q.x);
-  return edited && apply(p, d, c, s);
+  return edited && apply(r, c, s);
 }
 
-bool widget(Params& p, const ParamDesc& d, ParamsPanelState& s) {
+bool widget(Row r, ParamsPanelState& s) {
+  const ParamDesc& d = r.desc();
   const std::string label = label_of(d);
-  const ParamValue v = get_param(p, d);
+  const ParamValue v = get_param(r.scene, r.ref);
   bool changed = false;
   switch (d.type) {
     case ParamType::Float: {
       float x = std::get<float>(v);
       if (ImGui::SliderFloat(label.c_str(), &x, d.min, d.max, "%.4g", float_flags(d)))
-        changed = apply(p, d, clamp_to(d, x), s);
+        changed = apply(r, clamp_to(d, x), s);
       break;
     }
     case ParamType::Int: {
@@ -110,12 +129,12 @@ bool widget(Params& p, const ParamDesc& d, ParamsPanelState& s) {
       // Seeds span a million values: typed, not slid.
       const bool edited = hi - lo > 10000 ? ImGui::InputInt(label.c_str(), &x)
                                           : ImGui::SliderInt(label.c_str(), &x, lo, hi, "%d", ImGuiSliderFlags_AlwaysClamp);
-      if (edited) changed = apply(p, d, std::clamp(x, lo, hi), s);
+      if (edited) changed = apply(r, std::clamp(x, lo, hi), s);
       break;
     }
     case ParamType::Bool: {
       bool x = std::get<bool>(v);
-      if (ImGui::Checkbox(label.c_str(), &x)) changed = apply(p, d, x, s);
+      if (ImGui::Checkbox(label.c_str(), &x)) changed = apply(r, x, s);
       break;
     }
     case ParamType::Vec3:
@@ -130,7 +149,7 @@ bool widget(Params& p, const ParamDesc& d, ParamsPanelState& s) {
         edited = ImGui::DragFloat3(label.c_str(), &x.x, (d.max - d.min) * 5e-4f, d.min, d.max, "%.4g",
                                    ImGuiSliderFlags_AlwaysClamp);
       }
-      if (edited) changed = apply(p, d, glm::vec3(clamp_to(d, x.x), clamp_to(d, x.y), clamp_to(d, x.z)), s);
+      if (edited) changed = apply(r, glm::vec3(clamp_to(d, x.x), clamp_to(d, x.y), clamp_to(d, x.z)), s);
       break;
     }
     case ParamType::Enum: {
@@ -138,35 +157,65 @@ bool widget(Params& p, const ParamDesc& d, ParamsPanelState& s) {
       if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
         for (const std::string& choice : d.choices)
           if (ImGui::Selectable(choice.c_str(), choice == current) && choice != current)
-            changed = apply(p, d, choice, s);
+            changed = apply(r, choice, s);
         ImGui::EndCombo();
       }
       break;
     }
-    case ParamType::Curve: return curve_widget(p, d, s);
+    case ParamType::Curve: return curve_widget(r, s);
   }
-  tooltip(d);
+  tooltip(r);
+  return changed;
+}
+
+// "amber-ale (objects[1])": an object by its name and the index its paths use.
+std::string object_label(const Scene& s, int i) {
+  return s.objects[size_t(i)].name + " (objects[" + std::to_string(i) + "])";
+}
+
+// The combo that picks the object the panel edits (and input drives).
+void object_combo(Scene& s) {
+  if (s.objects.size() < 2) return;
+  if (ImGui::BeginCombo("object", object_label(s, s.selected).c_str())) {
+    for (int i = 0; i < int(s.objects.size()); ++i)
+      if (ImGui::Selectable(object_label(s, i).c_str(), i == s.selected)) s.selected = i;
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("The glass the panel edits and input drives (click it, or Tab)");
+}
+
+// The headers of the groups in one scope, in table order.
+bool groups(Scene& s, ParamScope scope, ParamsPanelState& state) {
+  std::vector<std::string> names;
+  for (const ParamDesc& d : param_table())
+    if (d.scope == scope && std::find(names.begin(), names.end(), group_of(d.path)) == names.end())
+      names.push_back(group_of(d.path));
+  bool changed = false;
+  for (const std::string& g : names) {
+    if (!ImGui::CollapsingHeader(g.c_str(), g == "liquid" ? ImGuiTreeNodeFlags_DefaultOpen : 0)) continue;
+    for (const ParamDesc& d : param_table())
+      if (group_of(d.path) == g) changed |= widget(row_of(s, d), state);
+  }
   return changed;
 }
 
 }  // namespace
 
-bool params_panel(Params& p, ParamsPanelState& s) {
-  if (!s.error.empty()) {
+bool params_panel(Scene& s, ParamsPanelState& state) {
+  if (!state.error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.35f, 1.0f));
-    ImGui::TextWrapped("%s", s.error.c_str());
+    ImGui::TextWrapped("%s", state.error.c_str());
     ImGui::PopStyleColor();
   }
-  // Groups in table order: glass, liquid, foam, bubbles, env, light, camera, render.
-  std::vector<std::string> groups;
-  for (const ParamDesc& d : param_table())
-    if (std::find(groups.begin(), groups.end(), group_of(d.path)) == groups.end()) groups.push_back(group_of(d.path));
-  bool changed = false;
-  for (const std::string& g : groups) {
-    if (!ImGui::CollapsingHeader(g.c_str(), g == "liquid" ? ImGuiTreeNodeFlags_DefaultOpen : 0)) continue;
-    for (const ParamDesc& d : param_table())
-      if (group_of(d.path) == g) changed |= widget(p, d, s);
-  }
+  if (s.objects.empty()) return false;
+  object_combo(s);
+  // The selected object's groups (glass, liquid, foam, bubbles, clip), then the scene's
+  // (env, light, camera, render); ids differ by path, so both sets can be open at once.
+  ImGui::TextDisabled("%s", s.objects.size() > 1 ? "the selected glass and its drink" : "the glass and its drink");
+  bool changed = groups(s, ParamScope::Vessel, state);
+  ImGui::Spacing();
+  ImGui::TextDisabled("the scene");
+  changed |= groups(s, ParamScope::Scene, state);
   return changed;
 }
 

@@ -1,12 +1,16 @@
-// The web page's engine: the same Simulation and Renderer as the CLI, drawing into a WebGL2
-// canvas every animation frame. page.js drives it through the C functions below (strings
-// in, strings or JSON out); errors never escape as exceptions, they come back as text.
+// The web page's engine: the same scene simulation and renderer as the CLI, drawing into a
+// WebGL2 canvas every animation frame. page.js drives it through the C functions below
+// (strings in, strings or JSON out); errors never escape as exceptions, they come back as
+// text. The page holds a scene of objects (one glass for a drink preset, several for a
+// scene preset); input drives the selected one and the panel edits it.
 #include "core/io/files.hpp"
 #include "core/scene/frame.hpp"
 #include "core/input/combined.hpp"
 #include "core/params/params.hpp"
 #include "core/params/preset.hpp"
-#include "core/sim/simulation.hpp"
+#include "core/scene/scene.hpp"
+#include "core/sim/scene_simulation.hpp"
+#include "core/vessel/vessel.hpp"
 #include "gpu/renderer.hpp"
 
 #include <GLES3/gl3.h>
@@ -17,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -70,8 +75,8 @@ struct App {
   EMSCRIPTEN_WEBGL_CONTEXT_HANDLE gl = 0;
   std::string canvas;
   std::unique_ptr<gpu::Renderer> renderer;
-  std::unique_ptr<Simulation> sim;
-  Params params;
+  std::unique_ptr<SceneSimulation> sim;
+  Scene scene;  // what the page edits; scene.selected is the object input drives
   InputRig rig;
   int screen_degrees = 0;
   std::string drink = "lager", glass;  // the picker's selection ("" glass: the drink's own)
@@ -96,12 +101,62 @@ const char* answer(std::string s) {
 double now_s() { return emscripten_get_now() / 1000.0 - (app ? app->t0 : 0); }
 Viewport viewport(double w, double h) { return {std::max(1.0, w), std::max(1.0, h)}; }
 
-// New parameters from the page: the drink keeps moving; a new drink or glass is a full one.
-void use_params(const Params& p, bool refill) {
-  app->params = p;
+enum class Refill { none, selected, all };
+
+// A new scene from the page. The drinks keep moving; a new drink or glass is a full one
+// (`refill`); other objects start afresh, their bubbles risen. The selection stays where it
+// was, within the objects there are.
+void use_scene(Scene s, Refill refill) {
+  s.selected = std::clamp(app->scene.selected, 0, std::max(0, int(s.objects.size()) - 1));
+  app->scene = s;
   if (!app->sim) return;
-  app->sim->set_params(p);
-  if (refill) app->sim->set_fraction(p.liquid.fill);
+  if (app->sim->scene().objects.size() != s.objects.size()) {
+    app->sim = std::make_unique<SceneSimulation>(s);
+    app->sim->settle_bubbles(2.0);
+    return;
+  }
+  app->sim->set_scene(s);
+  for (int i = 0; i < int(s.objects.size()); ++i) {
+    if (refill == Refill::none || (refill == Refill::selected && i != s.selected)) continue;
+    if (Simulation* v = app->sim->vessel(i)) v->set_fraction(v->params().liquid.fill);
+  }
+}
+
+void select_object(int object) {
+  app->scene.selected = object;
+  if (app->sim) app->sim->select(object);
+}
+
+// The object seen at (x, y) CSS pixels of the canvas (vw x vh), or -1.
+int pick_at(double x, double y, double vw, double vh) {
+  if (!app || !app->sim) return -1;
+  const int w = std::max(1, int(std::lround(vw))), h = std::max(1, int(std::lround(vh)));
+  return pick_object(app->sim->frame(), x, y, w, h);
+}
+
+// The selected glass repeated side by side, a glass's width apart: a scene of several objects
+// without a scene preset (tests, the console).
+Scene row_of_copies(const Scene& s, int count) {
+  const SceneObject& one = s.objects.at(size_t(s.selected));
+  const VesselObject* v = as_vessel(one);
+  if (!v) throw std::invalid_argument("the selected object is no glass");
+  const double gap = 2.6 * build_vessel(v->params.glass).bound_radius;
+  Scene out = s;
+  out.objects.clear();
+  for (int i = 0; i < count; ++i) {
+    SceneObject o = one;
+    o.name = one.name + "-" + std::to_string(i + 1);
+    o.placement = Placement{glm::vec3(float((i - 0.5 * (count - 1)) * gap), 0, 0), 0};
+    out.objects.push_back(o);
+  }
+  return out;
+}
+
+// "field 'objects[1].liquid.fill': expected ..., got "7"", as the CLI's --set words it.
+std::string set_error(const std::string& path, const ParamError& e, const std::string& text) {
+  std::string msg = "field '" + path + "': expected " + e.expected;
+  if (e.expected.find(", got ") == std::string::npos) msg += ", got \"" + text + "\"";
+  return msg;
 }
 
 void resize_canvas() {
@@ -122,7 +177,7 @@ void frame() {
   resize_canvas();
   try {
     app->sim->advance(*app->rig.driver, t);
-    FrameState f = assemble_frame(app->params, {app->sim->frame()});
+    FrameState f = app->sim->frame();
     if (app->quality.events_cap)
       f.params.render.max_events = std::min(f.params.render.max_events, app->quality.events_cap);
     emscripten_webgl_make_context_current(app->gl);
@@ -161,7 +216,8 @@ json param_row(const ParamDesc& d) {
           {"unit", d.unit},
           {"doc", d.doc},
           {"expected", expected_text(d)},
-          {"choices", d.choices}};
+          {"choices", d.choices},
+          {"scope", d.scope == ParamScope::Vessel ? "vessel" : "scene"}};
 }
 
 }  // namespace
@@ -195,8 +251,8 @@ EMSCRIPTEN_KEEPALIVE const char* draught_start(const char* canvas, int preserve,
     app->quality.scale = std::clamp(fixed_scale, 0.1, 2.0);
   }
   try {
-    app->params = resolve_scene(SceneRequest{});
-    app->sim = std::make_unique<Simulation>(app->params);
+    app->scene = resolve_scene_objects(SceneRequest{});
+    app->sim = std::make_unique<SceneSimulation>(app->scene);
     app->sim->settle_bubbles(2.0);
     app->rig = make_rig("mouse");
     app->renderer = std::make_unique<gpu::Renderer>();
@@ -255,7 +311,9 @@ EMSCRIPTEN_KEEPALIVE const char* draught_status() {
             {"input", app->rig.driver ? app->rig.driver->name() : ""},
             {"drink", app->drink},
             {"glass", app->glass},
-            {"fraction", app->sim ? app->sim->fraction() : 0.0},
+            {"objects", app->scene.objects.size()},
+            {"selected", app->scene.selected},
+            {"fraction", app->sim && app->sim->vessel(app->scene.selected) ? app->sim->vessel(app->scene.selected)->fraction() : 0.0},
             {"error", app->error}};
   return answer(j.dump());
 }
@@ -274,52 +332,110 @@ EMSCRIPTEN_KEEPALIVE const char* draught_presets() {
 }
 
 // The parameter table: [{path, group, name, type, default, min, max, unit, doc, expected,
-// choices}]; values as text in the form draught_set_param reads.
+// choices, scope}]; values as text in the form draught_set_param reads. scope "vessel": each
+// object has its own (objects[N].path), "scene": one for the scene.
 EMSCRIPTEN_KEEPALIVE const char* draught_param_table() {
   json out = json::array();
   for (const ParamDesc& d : param_table()) out.push_back(param_row(d));
   return answer(out.dump());
 }
 
-// The current values: {path: text}.
+// The values the panel shows, {path: text}: the selected object's and the scene's.
 EMSCRIPTEN_KEEPALIVE const char* draught_param_values() {
   json out = json::object();
-  if (app)
-    for (const ParamDesc& d : param_table()) out[d.path] = format_param(d, get_param(app->params, d));
+  if (app && !app->scene.objects.empty()) {
+    const Params doc = vessel_document(app->scene, app->scene.selected);
+    for (const ParamDesc& d : param_table()) out[d.path] = format_param(d, get_param(doc, d));
+  }
   return answer(out.dump());
 }
 
+// One value by any path ("liquid.fill": the selected object's, "objects[2].liquid.fill",
+// "env.floor"): {"value": text, "error": ""}.
+EMSCRIPTEN_KEEPALIVE const char* draught_get_param(const char* path) {
+  if (!app) return answer(json{{"error", "not started"}}.dump());
+  try {
+    const ParamRef ref = parse_param_ref(app->scene, path);
+    return answer(json{{"value", format_param(*ref.desc, get_param(app->scene, ref))}, {"error", ""}}.dump());
+  } catch (const ParamError& e) {
+    return answer(json{{"error", "field '" + std::string(path) + "': expected " + e.expected}}.dump());
+  }
+}
+
 // Parses, validates and applies one value; "" or the message (field, what was expected).
+// "objects[N].path" sets object N's; a vessel path without the prefix sets every object's
+// (as the CLI's --set), a scene path the scene's.
 EMSCRIPTEN_KEEPALIVE const char* draught_set_param(const char* path, const char* text) {
   if (!app) return answer("not started");
-  const ParamDesc* d = find_param(path);
-  if (!d) return answer(unknown_param_message(path));
   try {
-    Params p = app->params;
-    set_param(p, *d, parse_param_text(*d, text));
-    use_params(p, false);
+    const ParamRef ref = parse_param_ref(app->scene, path);
+    Scene s = app->scene;
+    set_param(s, ref, parse_param_text(*ref.desc, text));
+    use_scene(s, Refill::none);
     return answer("");
   } catch (const ParamError& e) {
-    std::string msg = "field '" + e.field + "': expected " + e.expected;  // as the CLI's --set
-    if (e.expected.find(", got ") == std::string::npos) msg += ", got \"" + std::string(text) + "\"";
-    return answer(msg);
+    return answer(set_error(path, e, text));
   } catch (const std::exception& e) {
     return answer(std::string(path) + ": " + e.what());
   }
 }
 
+// The objects: {"selected": i, "objects": [{"name", "kind"}]}.
+EMSCRIPTEN_KEEPALIVE const char* draught_objects() {
+  json list = json::array();
+  if (app)
+    for (const SceneObject& o : app->scene.objects) list.push_back({{"name", o.name}, {"kind", as_vessel(o) ? "vessel" : "other"}});
+  return answer(json{{"selected", app ? app->scene.selected : 0}, {"objects", list}}.dump());
+}
+
+// Selects object i (input drives it, the panel edits it); "" or the error.
+EMSCRIPTEN_KEEPALIVE const char* draught_select_object(int object) {
+  if (!app) return answer("not started");
+  const int n = int(app->scene.objects.size());
+  if (object < 0 || object >= n) return answer("no object " + std::to_string(object) + ": expected 0 to " + std::to_string(n - 1));
+  select_object(object);
+  return answer("");
+}
+
+// The object under (x, y) CSS pixels of a vw x vh canvas (the reference intersector on the
+// frame as it stands), or -1 for the floor and the sky. Changes nothing.
+EMSCRIPTEN_KEEPALIVE int draught_pick(double x, double y, double vw, double vh) { return pick_at(x, y, vw, vh); }
+
+// A tap or click at (x, y): the object under it becomes the selected one; the floor and the
+// sky keep the selection. Returns the object hit, or -1.
+EMSCRIPTEN_KEEPALIVE int draught_select_at(double x, double y, double vw, double vh) {
+  const int object = pick_at(x, y, vw, vh);
+  if (object >= 0) select_object(object);
+  return object;
+}
+
+// Tests and the console: the selected glass repeated `count` times side by side, a scene of
+// several objects while no scene preset is at hand. "" or the error.
+EMSCRIPTEN_KEEPALIVE const char* draught_test_row(int count) {
+  if (!app) return answer("not started");
+  if (count < 1 || count > kMaxSceneObjects) return answer("expected 1 to " + std::to_string(kMaxSceneObjects) + " glasses");
+  try {
+    use_scene(row_of_copies(app->scene, count), Refill::all);
+    select_object(0);
+    return answer("");
+  } catch (const std::exception& e) {
+    return answer(e.what());
+  }
+}
+
 // A shipped drink or scene in a glass ("" = the drink's suggested glass), as the CLI's
-// --preset/--glass. "" or the error; nothing changes on error.
+// --preset/--glass; a scene preset with objects brings them all. "" or the error; nothing
+// changes on error.
 EMSCRIPTEN_KEEPALIVE const char* draught_select(const char* drink, const char* glass) {
   if (!app) return answer("not started");
   try {
     SceneRequest req;
     req.preset = drink;
     req.glass = glass;
-    Params p = resolve_scene(req);
+    Scene s = resolve_scene_objects(req);
     app->drink = drink;
     app->glass = glass;
-    use_params(p, true);
+    use_scene(s, Refill::all);
     return answer("");
   } catch (const std::exception& e) {
     return answer(e.what());
@@ -327,50 +443,63 @@ EMSCRIPTEN_KEEPALIVE const char* draught_select(const char* drink, const char* g
 }
 
 // A preset file's text (from the page's file input). Parsed and validated completely first;
-// a glass replaces the glass, a drink the liquid, foam and bubbles, a scene everything (in its
-// suggested glass when it names one). {"error": "", "kind", "name"}; on error the state is kept.
+// a glass replaces the selected object's glass, a drink its liquid, foam and bubbles; a scene
+// replaces everything, as the CLI's --preset reads the file (in its suggested glass when it
+// names one; its objects when it places several). {"error": "", "kind", "name"}; on error
+// the state is kept.
 EMSCRIPTEN_KEEPALIVE const char* draught_load_preset(const char* text, const char* file) {
   if (!app) return answer(json{{"error", "not started"}}.dump());
   try {
     const Preset pr = parse_preset(text, file);
-    const Params defaults = default_params();
-    Params p = app->params;
-    if (pr.kind == "glass") {
-      p.glass = defaults.glass;
-    } else if (pr.kind == "drink") {
-      p.liquid = defaults.liquid;
-      p.foam = defaults.foam;
-      p.bubbles = defaults.bubbles;
-    } else {
-      p = defaults;
-      if (!pr.suggested_glass.empty()) {
-        const Preset g = load_preset(find_preset(pr.suggested_glass, "glass"));
-        if (g.kind != "glass")
-          throw InputError(g.file + ": field 'kind': expected \"glass\" for suggested_glass, got \"" + g.kind + "\"");
-        apply_preset(g, p);
+    Scene s = app->scene;
+    if (pr.kind == "glass" || pr.kind == "drink") {
+      const Params defaults = default_params();
+      Params p = vessel_document(s, s.selected);
+      if (pr.kind == "glass") {
+        p.glass = defaults.glass;
+      } else {
+        p.liquid = defaults.liquid;
+        p.foam = defaults.foam;
+        p.bubbles = defaults.bubbles;
       }
+      apply_preset(pr, p);
+      if (VesselObject* v = as_vessel(s.objects.at(size_t(s.selected)))) v->params = p;
+      use_scene(s, Refill::selected);
+    } else {
+      // Through a file, so that the scene resolves exactly as `draught render --preset FILE`.
+      const std::filesystem::path dir = "/uploads";
+      std::filesystem::create_directories(dir);
+      const std::filesystem::path path = dir / std::filesystem::path(file).filename().replace_extension(".json");
+      write_file_atomic(path, text);
+      SceneRequest req;
+      req.preset = path.string();
+      use_scene(resolve_scene_objects(req), Refill::all);
     }
-    apply_preset(pr, p);
-    use_params(p, true);
     return answer(json{{"error", ""}, {"kind", pr.kind}, {"name", pr.name}}.dump());
   } catch (const std::exception& e) {
     return answer(json{{"error", e.what()}}.dump());
   }
 }
 
-// Everything as a scene preset (JSON text), loadable again by the page or the CLI.
+// Everything as a scene preset, loadable again by the page or the CLI: {"text", "error"}.
+// A preset holds one glass: a scene of several objects cannot be exported yet.
 EMSCRIPTEN_KEEPALIVE const char* draught_export_preset(const char* name) {
-  if (!app) return answer("");
+  if (!app) return answer(json{{"error", "not started"}}.dump());
+  if (app->scene.objects.size() != 1)
+    return answer(json{{"error", "this scene has " + std::to_string(app->scene.objects.size()) +
+                                     " objects; a preset exported from the page holds one glass"}}.dump());
   try {
-    return answer(preset_json(app->params, "scene", name, "Saved from the draught web page", {}));
+    const std::string text = preset_json(vessel_document(app->scene, 0), "scene", name, "Saved from the draught web page", {});
+    return answer(json{{"text", text}, {"error", ""}}.dump());
   } catch (const std::exception& e) {
-    return answer("");
+    return answer(json{{"error", e.what()}}.dump());
   }
 }
 
-// Fills the glass again with a fresh head building.
+// Fills the selected glass again with a fresh head building.
 EMSCRIPTEN_KEEPALIVE void draught_pour() {
-  if (app && app->sim) app->sim->pour();
+  if (app && app->sim)
+    if (Simulation* v = app->sim->vessel(app->scene.selected)) v->pour();
 }
 
 // One of input_driver_names ("mouse", "touch+gyro", ...); "" or the error.

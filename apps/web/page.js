@@ -1,6 +1,8 @@
 // draught's web page. The module (draught.js/.wasm, from apps/web/main.cpp) renders and
-// simulates; this file builds the panel from the parameter table the module exports, feeds
-// it input (mouse, touch, motion sensors) and shows what it is doing.
+// simulates a scene of glasses; this file builds the panel from the parameter table the
+// module exports, feeds it input (mouse, touch, motion sensors) and shows what it is doing.
+// In a scene of several glasses one is selected (a click or tap on it, or the picker):
+// input drives it and the panel edits it.
 //
 // URL options: ?size=WxH pins the canvas's CSS size; ?scale=S pins the render scale (else it
 // adapts to ?budget=MS per frame, default 33); ?preserve keeps the drawing buffer (tests read
@@ -19,6 +21,7 @@
     lastExport: '',
     frames: () => (M ? M._draught_frames() : 0),
     status: () => (M ? JSON.parse(api.status()) : {}),
+    objects: () => (M ? JSON.parse(api.objects()) : { selected: 0, objects: [] }),
   });
 
   function say(text, error = false) {
@@ -55,6 +58,12 @@
       table: fn('draught_param_table', 'string', []),
       values: fn('draught_param_values', 'string', []),
       setParam: fn('draught_set_param', 'string', ['string', 'string']),
+      getParam: fn('draught_get_param', 'string', ['string']),
+      objects: fn('draught_objects', 'string', []),
+      selectObject: fn('draught_select_object', 'string', ['number']),
+      pick: fn('draught_pick', 'number', ['number', 'number', 'number', 'number']),
+      selectAt: fn('draught_select_at', 'number', ['number', 'number', 'number', 'number']),
+      testRow: fn('draught_test_row', 'string', ['number']),
       select: fn('draught_select', 'string', ['string', 'string']),
       load: fn('draught_load_preset', 'string', ['string', 'string']),
       exportPreset: fn('draught_export_preset', 'string', ['string']),
@@ -77,6 +86,7 @@
     if (budget > 0) api.quality(scale, budget);
     watchSize();
     buildPickers();
+    buildObjectPicker();
     buildPanel();
     wireButtons();
     wireInput();
@@ -109,6 +119,7 @@
     if (!s.adaptive) q += ' (fixed)';
     $('quality').textContent = `${q} · ${s.width}×${s.height} · ${fps.toFixed(fps < 10 ? 1 : 0)} fps`;
     $('input').textContent = 'input: ' + s.input;
+    $('selected').textContent = objects.length > 1 ? ` · ${objects[selected].name} (${selected + 1} of ${objects.length})` : '';
     if (s.error && s.error !== shownError) {
       shownError = page.error = s.error;
       say(s.error, true);
@@ -146,6 +157,7 @@
       }
       current = { drink: drink.value, glass: glass.value };
       suggestedLabel();
+      refreshObjects();
       refreshValues();
       const p = presets.find((p) => p.name === current.drink && p.kind !== 'glass');
       say(p ? p.description : '');
@@ -165,28 +177,91 @@
     return o;
   }
 
-  // ---- the parameter panel, from the table ----
-  const controls = new Map();  // path -> { show(text), row }
+  // ---- the objects of the scene: which one input drives and the panel edits ----
+  let objects = [], selected = 0;
+  function buildObjectPicker() {
+    $('object').addEventListener('change', () => selectObject(+$('object').value));
+    $('next-object').addEventListener('click', () => selectObject((selected + 1) % Math.max(1, objects.length)));
+    refreshObjects();
+  }
+  // The picker (shown only when there is a choice) and the panel's heading, from the module.
+  function refreshObjects() {
+    ({ objects, selected } = page.objects());
+    const pick = $('object');
+    pick.replaceChildren(...objects.map((o, i) => option(String(i), `${o.name} (objects[${i}])`)));
+    pick.value = String(selected);
+    $('object-row').hidden = objects.length < 2;
+    const heading = $('object-heading');
+    if (heading) heading.textContent = objects.length > 1 ? `the selected glass: ${objects[selected].name}` : 'the glass and its drink';
+  }
+  function selectObject(i) {
+    const err = api.selectObject(i);
+    if (err) {
+      say(err, true);
+      return err;
+    }
+    refreshObjects();
+    refreshValues();
+    say(`selected ${objects[selected].name}`);
+    return '';
+  }
+  page.selectObject = selectObject;
+  // A click or tap at (x, y) CSS pixels of the canvas: the glass there becomes the selected one.
+  function selectAt(x, y, w, h) {
+    const i = api.selectAt(x, y, w, h);
+    if (i >= 0 && i !== selected) {
+      refreshObjects();
+      refreshValues();
+      say(`selected ${objects[selected].name}`);
+    }
+  }
+  page.pick = (x, y) => {  // for tests: the object under CSS pixel (x, y) of the canvas, or -1
+    const r = canvas.getBoundingClientRect();
+    return api.pick(x, y, r.width, r.height);
+  };
+  page.testRow = (n) => {  // for tests and the console: the selected glass n times side by side
+    const err = api.testRow(n);
+    if (!err) {
+      refreshObjects();
+      refreshValues();
+    }
+    return err;
+  };
+
+  // ---- the parameter panel, from the table: the selected glass's groups, then the scene's ----
+  const controls = new Map();  // path -> { show(text), row, desc }
+  let table = [];
   function buildPanel() {
-    const table = JSON.parse(api.table());
+    table = JSON.parse(api.table());
     const root = $('params');
-    const groups = new Map();
-    for (const d of table) {
-      if (!groups.has(d.group)) groups.set(d.group, []);
-      groups.get(d.group).push(d);
+    for (const [scope, title] of [['vessel', 'the glass and its drink'], ['scene', 'the scene']]) {
+      const heading = document.createElement('h2');
+      heading.className = 'scope';
+      heading.textContent = title;
+      if (scope === 'vessel') heading.id = 'object-heading';
+      root.append(heading);
+      const groups = new Map();
+      for (const d of table.filter((d) => d.scope === scope)) {
+        if (!groups.has(d.group)) groups.set(d.group, []);
+        groups.get(d.group).push(d);
+      }
+      for (const [group, rows] of groups) {
+        const details = document.createElement('details');
+        details.dataset.group = group;
+        if (group === 'liquid') details.open = true;
+        const summary = document.createElement('summary');
+        summary.textContent = group;
+        details.append(summary);
+        for (const d of rows) details.append(paramRow(d));
+        root.append(details);
+      }
     }
-    for (const [group, rows] of groups) {
-      const details = document.createElement('details');
-      details.dataset.group = group;
-      if (group === 'liquid') details.open = true;
-      const summary = document.createElement('summary');
-      summary.textContent = group;
-      details.append(summary);
-      for (const d of rows) details.append(paramRow(d));
-      root.append(details);
-    }
+    refreshObjects();
     refreshValues();
   }
+  // The path the module is given for a panel row: the selected object's own where there are
+  // several glasses (a path without the prefix would set every glass).
+  const pathFor = (d) => (d.scope === 'vessel' && objects.length > 1 ? `objects[${selected}].${d.path}` : d.path);
 
   function refreshValues() {
     const values = JSON.parse(api.values());
@@ -196,11 +271,12 @@
     }
   }
 
-  // Values go to the module once per animation frame (sliders fire faster than that).
-  const pending = new Map();
+  // Values go to the module once per animation frame (sliders fire faster than that), to the
+  // object selected when the value was entered.
+  const pending = new Map();  // full path -> { row path, text }
   let flushQueued = false;
   function commit(path, text) {
-    pending.set(path, text);
+    pending.set(pathFor(controls.get(path).desc), { path, text });
     if (!flushQueued) {
       flushQueued = true;
       requestAnimationFrame(flush);
@@ -208,15 +284,16 @@
   }
   function flush() {
     flushQueued = false;
-    for (const [path, text] of pending) {
-      const err = api.setParam(path, text);
+    for (const [full, { path, text }] of pending) {
+      const err = api.setParam(full, text);
       controls.get(path).error(err);
       if (err) say(err, true);
       else if ($('message').classList.contains('error')) say('');
     }
     pending.clear();
   }
-  page.setParam = (path, text) => {  // for tests and the console: same path as the panel
+  // For tests and the console: any path the module takes ("objects[1].liquid.fill" too).
+  page.setParam = (path, text) => {
     const err = api.setParam(path, String(text));
     if (!err) refreshValues();
     return err;
@@ -334,6 +411,7 @@
     unit.textContent = d.unit;
     control.append(unit);
     controls.set(d.path, {
+      desc: d,
       show,
       error: (e) => {
         err.textContent = e;
@@ -358,13 +436,19 @@
         say(r.error, true);  // nothing was applied
         return r.error;
       }
+      refreshObjects();
       refreshValues();
       say(`loaded ${r.kind} "${r.name}" from ${name}`);
       return '';
     };
     $('export').addEventListener('click', () => {
       const name = `${current.drink}-custom`;
-      const text = api.exportPreset(name);
+      const r = JSON.parse(api.exportPreset(name));
+      if (r.error) {
+        say('export: ' + r.error, true);
+        return;
+      }
+      const text = r.text;
       page.lastExport = text;
       const url = URL.createObjectURL(new Blob([text], { type: 'application/json' }));
       const a = document.createElement('a');
@@ -407,6 +491,19 @@
       const r = canvas.getBoundingClientRect();
       return [e.clientX - r.left, e.clientY - r.top, r.width, r.height];
     };
+    // A click or tap (pressed and released without wandering further than a hand shakes)
+    // selects the glass under it; a drag tilts the selected glass, whatever it starts on.
+    const slop = { mouse: 4, touch: 10 };  // CSS pixels
+    let tap = null;  // { x, y, moved } since the press, or null
+    const tapStart = (p) => (tap = { x: p.clientX, y: p.clientY, moved: false });
+    const tapMove = (p, limit) => {
+      if (tap && Math.hypot(p.clientX - tap.x, p.clientY - tap.y) > limit) tap.moved = true;
+    };
+    const tapEnd = (p) => {
+      if (tap && !tap.moved) selectAt(...local(p));
+      tap = null;
+    };
+
     // Mouse (and pen) through pointer events; touch has its own events below.
     let buttons = 0;
     let fingers = 0;
@@ -421,22 +518,26 @@
       useGesture('mouse');
       canvas.setPointerCapture(e.pointerId);
       buttons |= 1 << e.button;
+      if (e.button === 0) tapStart(e);
       api.mouse(0, e.button, ...local(e), e.shiftKey ? 1 : 0);
     });
     canvas.addEventListener('pointermove', (e) => {
       if (e.pointerType === 'touch' || !buttons) return;
+      tapMove(e, slop.mouse);
       api.mouse(1, 0, ...local(e), 0);
     });
     const up = (e) => {
       if (e.pointerType === 'touch' || !(buttons & (1 << e.button))) return;
       buttons &= ~(1 << e.button);
       api.mouse(2, e.button, ...local(e), 0);
+      if (e.button === 0) tapEnd(e);
     };
     canvas.addEventListener('pointerup', up);
     canvas.addEventListener('pointercancel', (e) => {
       if (e.pointerType === 'touch') return;
       for (const b of [0, 2]) if (buttons & (1 << b)) api.mouse(2, b, ...local(e), 0);
       buttons = 0;
+      tap = null;
     });
     canvas.addEventListener('contextmenu', (e) => e.preventDefault());
 
@@ -445,10 +546,15 @@
       if (kind === 0) useGesture('touch');
       fingers = e.touches.length;
       if (kind === 3) {
+        tap = null;
         api.touch(3, 0, 0, 0, 1, 1);
         return;
       }
       for (const t of e.changedTouches) api.touch(kind, t.identifier, ...local(t));
+      // A tap is one finger, down and up in place; a second finger makes it a gesture.
+      if (kind === 0) e.touches.length === 1 ? tapStart(e.changedTouches[0]) : (tap = null);
+      else if (kind === 1) for (const t of e.changedTouches) tapMove(t, slop.touch);
+      else if (e.touches.length === 0) tapEnd(e.changedTouches[0]);
     };
     const opts = { passive: false };
     canvas.addEventListener('touchstart', touch(0), opts);

@@ -4,14 +4,20 @@
 //   check_screenshot FILE WIDTH HEIGHT panel OTHER   the size, and the left part (where the
 //                                                    panel sits) clearly differs from OTHER,
 //                                                    the same scene without the panel
+//   check_screenshot FILE WIDTH HEIGHT scene PRESET  the size, not blank, and every object of
+//                                                    the preset's scene drawn where the
+//                                                    reference intersector sees it
 // Prints what it measured; exits 1 naming the check that failed.
 #include "core/io/image.hpp"
+#include "core/params/preset.hpp"
+#include "core/scene/frame.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 using draught::Image;
 
@@ -54,6 +60,56 @@ int fail(const std::string& what) {
   return 1;
 }
 
+// Every object of the scene drawn: where the reference intersector sees object i (its pixels
+// in the lower half, below the overlay in the top right), the picture's mean colour must stand apart
+// from the floor and backdrop beside it. An object the renderer left out shows what lies
+// behind it, like its neighbourhood.
+int check_scene(const Image& img, const std::string& preset) {
+  draught::SceneRequest req;
+  req.preset = preset;
+  const draught::Scene scene = draught::resolve_scene_objects(req);
+  const draught::FrameState frame = draught::make_frame(scene);
+  const int step = 2, top = img.height / 2;  // every other pixel: enough, and quick
+  std::vector<int> object(std::size_t(img.width) * std::size_t(img.height), -2);
+  for (int y = top; y < img.height; y += step)
+    for (int x = 0; x < img.width; x += step)
+      object[std::size_t(y) * img.width + x] = draught::pick_object(frame, x + 0.5, y + 0.5, img.width, img.height);
+  std::printf("%s: %zu objects\n", preset.c_str(), frame.vessels.size());
+  if (frame.vessels.size() != scene.objects.size()) return fail("the frame does not hold every object");
+  for (int i = 0; i < int(frame.vessels.size()); ++i) {
+    Region box{img.width, img.height, 0, 0};
+    Mean in;
+    int n = 0;
+    for (int y = top; y < img.height; y += step)
+      for (int x = 0; x < img.width; x += step)
+        if (object[std::size_t(y) * img.width + x] == i) {
+          box = {std::min(box.x0, x), std::min(box.y0, y), std::max(box.x1, x + 1), std::max(box.y1, y + 1)};
+          in.r += img.px(x, y)[0], in.g += img.px(x, y)[1], in.b += img.px(x, y)[2];
+          ++n;
+        }
+    const std::string name = "object " + std::to_string(i) + " (" + scene.objects[std::size_t(i)].name + ")";
+    if (n < 20) return fail(name + " covers too few pixels below the overlay to judge");
+    // Beside it: the floor and backdrop (no object) in its rows, within its own width.
+    Mean out;
+    int m = 0;
+    const int w = box.x1 - box.x0;
+    for (int y = box.y0; y < box.y1; y += step)
+      for (int x = std::max(0, box.x0 - w) / step * step; x < std::min(img.width, box.x1 + w); x += step)
+        if (object[std::size_t(y) * img.width + x] == -1) {
+          out.r += img.px(x, y)[0], out.g += img.px(x, y)[1], out.b += img.px(x, y)[2];
+          ++m;
+        }
+    if (m < 10) return fail(name + ": no floor or backdrop beside it to compare with");
+    in = {in.r / n, in.g / n, in.b / n};
+    out = {out.r / m, out.g / m, out.b / m};
+    const double d = distance(in, out);
+    std::printf("%s: %d pixels, mean (%.0f, %.0f, %.0f); beside it (%.0f, %.0f, %.0f); differs by %.0f\n",
+                name.c_str(), n, in.r, in.g, in.b, out.r, out.g, out.b, d);
+    if (d < 40) return fail(name + " looks like the floor beside it: not drawn");
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -82,7 +138,14 @@ int main(int argc, char** argv) {
   std::printf("green channel range: %d..%d\n", lo, hi);
   if (hi - lo < 60) return fail("the picture is (nearly) uniform: nothing was drawn");
 
-  if (mode == "glass") {
+  if (mode == "scene") {
+    if (argc < 6) return fail("scene needs the preset the viewer showed");
+    try {
+      if (check_scene(img, argv[5])) return 1;
+    } catch (const std::exception& e) {
+      return fail(e.what());
+    }
+  } else if (mode == "glass") {
     const Region centre = fraction(img, 0.4, 0.35, 0.6, 0.75);
     const Mean c = mean(img, centre);
     const Region corners[] = {fraction(img, 0, 0, 0.12, 0.12), fraction(img, 0.88, 0, 1, 0.12),
@@ -114,7 +177,7 @@ int main(int argc, char** argv) {
     std::printf("panel region differs from the panel-less shot by %.1f per pixel\n", diff / n);
     if (diff / n < 20) return fail("no panel drawn over the top left of the window");
   } else {
-    return fail("unknown mode '" + mode + "': expected glass or panel");
+    return fail("unknown mode '" + mode + "': expected glass, panel or scene");
   }
   std::printf("ok\n");
   return 0;

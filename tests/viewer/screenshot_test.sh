@@ -1,22 +1,35 @@
 #!/usr/bin/env bash
 # The viewer in a virtual X server (Xvfb, Mesa's software GLES 3): one screenshot without the
 # panel (the glass must show), one at the low quality tier (still the glass, from half the
-# resolution), one with the panel (the panel must draw).
+# resolution), one with the panel (the panel must draw), and scenes checked object by object
+# against the reference intersector: the single glass, then the flight of four glasses
+# (presets/scenes/flight.json).
 #   screenshot_test.sh XVFB_RUN VIEWER CHECKER OUTDIR
 set -euo pipefail
 xvfb_run=$1 viewer=$2 checker=$3 out=$4
+presets="$(cd "$(dirname "$0")/../../presets" && pwd)"
 mkdir -p "$out"
 rm -f "$out"/viewer-*.png
 
 run() {
   # 24-bit screen: GL needs a true-colour visual.
-  "$xvfb_run" -a -s "-screen 0 1024x768x24" "$viewer" --preset lager --size 320x240 --frames 30 "$@"
+  "$xvfb_run" -a -s "-screen 0 1024x768x24" "$viewer" "$@"
 }
 
-run --hide-panel --screenshot "$out/viewer-glass.png"
+run --preset lager --size 320x240 --frames 30 --hide-panel --screenshot "$out/viewer-glass.png"
 "$checker" "$out/viewer-glass.png" 320 240 glass
-run --hide-panel --quality 0 --screenshot "$out/viewer-low.png"
+run --preset lager --size 320x240 --frames 30 --hide-panel --quality 0 --screenshot "$out/viewer-low.png"
 "$checker" "$out/viewer-low.png" 320 240 glass
-run --screenshot "$out/viewer-panel.png"
+run --preset lager --size 320x240 --frames 30 --screenshot "$out/viewer-panel.png"
 "$checker" "$out/viewer-panel.png" 320 240 panel "$out/viewer-glass.png"
-echo "viewer screenshots: $out/viewer-glass.png $out/viewer-low.png $out/viewer-panel.png"
+# The scene check on one glass (the same code path as the flight's).
+"$checker" "$out/viewer-glass.png" 320 240 scene lager
+
+# Wide, so four glasses stand clear of the overlay; few frames, four glasses cost.
+if [ ! -f "$presets/scenes/flight.json" ]; then
+  echo "viewer_screenshot: $presets/scenes/flight.json is missing: the flight arrives with the scene presets (issue 9)" >&2
+  exit 1
+fi
+run --preset flight --hide-panel --size 640x360 --frames 10 --screenshot "$out/viewer-flight.png"
+"$checker" "$out/viewer-flight.png" 640 360 scene flight
+echo "viewer screenshots: $out/viewer-glass.png $out/viewer-low.png $out/viewer-panel.png $out/viewer-flight.png"

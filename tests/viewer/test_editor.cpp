@@ -1,5 +1,5 @@
-// The viewer's editor without a window: undo steps, presets, and load/save errors that
-// leave everything as it was.
+// The viewer's editor without a window: undo steps, presets, load/save errors that leave
+// everything as it was, and scenes of several objects with a selection.
 #include "editor.hpp"
 
 #include "core/io/files.hpp"
@@ -18,9 +18,10 @@ namespace fs = std::filesystem;
 // Every parameter as text: equal texts, equal parameters.
 std::string dump(const Params& p) { return preset_json(p, "scene", "x", "", {}); }
 
-Params with_fill(Params p, float fill) {
-  set_param(p, *find_param("liquid.fill"), fill);
-  return p;
+// The scene with liquid.fill set on every object (the one object of a single-glass scene).
+Scene with_fill(Scene s, float fill) {
+  set_param(s, parse_param_ref(s, "liquid.fill"), fill);
+  return s;
 }
 
 class EditorTest : public ::testing::Test {
@@ -37,65 +38,65 @@ TEST_F(EditorTest, OpensLikeTheCli) {
   Editor ed("lager", "");
   EXPECT_EQ(ed.drink_label(), "lager");
   EXPECT_EQ(ed.glass_label(), "pint");  // the drink's suggested glass
-  EXPECT_EQ(dump(ed.params()), dump(resolve_scene({"lager", "", {}, {}})));
+  EXPECT_EQ(dump(ed.document()), dump(resolve_scene({"lager", "", {}, {}})));
   EXPECT_THROW(Editor("no-such-drink", ""), InputError);
 }
 
 TEST_F(EditorTest, UndoStepsBackOneChangeAtATime) {
   Editor ed("lager", "");
-  const std::string original = dump(ed.params());
+  const std::string original = dump(ed.document());
   EXPECT_FALSE(ed.undo());
-  ed.change(with_fill(ed.params(), 0.5f));
+  ed.change(with_fill(ed.scene(), 0.5f));
   ed.settle(false);
-  ed.change(with_fill(ed.params(), 0.3f));
+  ed.change(with_fill(ed.scene(), 0.3f));
   ed.settle(false);
   EXPECT_EQ(ed.undo_depth(), 2u);
   const unsigned rev = ed.revision();
   ASSERT_TRUE(ed.undo());
   EXPECT_GT(ed.revision(), rev);  // the app hands the old parameters to the simulation
-  EXPECT_FLOAT_EQ(ed.params().liquid.fill, 0.5f);
+  EXPECT_FLOAT_EQ(ed.document().liquid.fill, 0.5f);
   ASSERT_TRUE(ed.undo());
-  EXPECT_EQ(dump(ed.params()), original);
+  EXPECT_EQ(dump(ed.document()), original);
   EXPECT_FALSE(ed.undo());
 }
 
 TEST_F(EditorTest, ADragIsOneUndoStep) {
   Editor ed("lager", "");
-  const std::string original = dump(ed.params());
+  const std::string original = dump(ed.document());
   for (float f : {0.7f, 0.6f, 0.5f}) {
-    ed.change(with_fill(ed.params(), f));
+    ed.change(with_fill(ed.scene(), f));
     ed.settle(true);  // the slider is still held
   }
   ed.settle(false);
   EXPECT_EQ(ed.undo_depth(), 1u);
   ASSERT_TRUE(ed.undo());
-  EXPECT_EQ(dump(ed.params()), original);
+  EXPECT_EQ(dump(ed.document()), original);
 }
 
 TEST_F(EditorTest, ChoosingADrinkBringsItsGlassAndCanBeUndone) {
   Editor ed("lager", "");
-  const std::string lager = dump(ed.params());
+  const std::string lager = dump(ed.document());
   ASSERT_TRUE(ed.choose_drink("stout")) << ed.status().text;
   EXPECT_EQ(ed.drink_label(), "stout");
   EXPECT_EQ(ed.glass_label(), "nonic");
   ASSERT_TRUE(ed.choose_glass("tulip")) << ed.status().text;
   EXPECT_EQ(ed.glass_label(), "tulip");
-  EXPECT_EQ(dump(ed.params()), dump(resolve_scene({"stout", "tulip", {}, {}})));
+  EXPECT_EQ(dump(ed.document()), dump(resolve_scene({"stout", "tulip", {}, {}})));
   ASSERT_TRUE(ed.undo());
   EXPECT_EQ(ed.glass_label(), "nonic");  // the names come back with the parameters
   ASSERT_TRUE(ed.undo());
-  EXPECT_EQ(dump(ed.params()), lager);
+  EXPECT_EQ(dump(ed.document()), lager);
   EXPECT_EQ(ed.drink_label(), "lager");
   EXPECT_EQ(ed.glass_label(), "pint");
   ASSERT_TRUE(ed.choose_glass("flute"));  // undone back to lager: the glass goes with lager
-  EXPECT_EQ(dump(ed.params()), dump(resolve_scene({"lager", "flute", {}, {}})));
+  EXPECT_EQ(dump(ed.document()), dump(resolve_scene({"lager", "flute", {}, {}})));
 }
 
 TEST_F(EditorTest, BadFilesChangeNothing) {
   Editor ed("lager", "");
-  ed.change(with_fill(ed.params(), 0.4f));
+  ed.change(with_fill(ed.scene(), 0.4f));
   ed.settle(false);
-  const std::string before = dump(ed.params());
+  const std::string before = dump(ed.document());
   const unsigned rev = ed.revision();
 
   EXPECT_FALSE(ed.load((dir / "missing.json").string()));
@@ -114,16 +115,16 @@ TEST_F(EditorTest, BadFilesChangeNothing) {
   EXPECT_FALSE(ed.choose_glass("no-such-glass"));
   EXPECT_FALSE(ed.save_as((dir / "no-such-dir" / "x.json").string(), "scene"));
   EXPECT_FALSE(ed.save());  // nothing loaded or saved yet
-  EXPECT_EQ(dump(ed.params()), before);
+  EXPECT_EQ(dump(ed.document()), before);
   EXPECT_EQ(ed.revision(), rev);
   EXPECT_EQ(ed.drink_label(), "lager");
 }
 
 TEST_F(EditorTest, SavedScenesLoadBackTheSame) {
   Editor ed("red-wine", "");
-  ed.change(with_fill(ed.params(), 0.33f));
+  ed.change(with_fill(ed.scene(), 0.33f));
   ed.settle(false);
-  const std::string edited = dump(ed.params());
+  const std::string edited = dump(ed.document());
   const fs::path file = dir / "mine.json";
   ASSERT_TRUE(ed.save_as(file.string(), "scene")) << ed.status().text;
   EXPECT_EQ(ed.file(), file.string());
@@ -131,7 +132,7 @@ TEST_F(EditorTest, SavedScenesLoadBackTheSame) {
 
   Editor other("lager", "");
   ASSERT_TRUE(other.load(file.string())) << other.status().text;
-  EXPECT_EQ(dump(other.params()), edited);
+  EXPECT_EQ(dump(other.document()), edited);
   EXPECT_EQ(other.drink_label(), "mine");
   EXPECT_EQ(other.glass_label(), "(the scene's)");
   ASSERT_TRUE(other.save()) << other.status().text;  // Save writes the loaded file again
@@ -148,7 +149,97 @@ TEST_F(EditorTest, GlassAndDrinkFilesPlayTheirRole) {
   ASSERT_TRUE(ed.load(glass.string())) << ed.status().text;
   EXPECT_EQ(ed.glass_label(), "my-glass");
   EXPECT_EQ(ed.drink_label(), "stout");
-  EXPECT_EQ(dump(ed.params()), dump(resolve_scene({"stout", glass.string(), {}, {}})));
+  EXPECT_EQ(dump(ed.document()), dump(resolve_scene({"stout", glass.string(), {}, {}})));
+}
+
+// Two lagers side by side: the scene of several objects a scene preset would give.
+Scene two_glasses(const Scene& one) {
+  Scene s = one;
+  SceneObject second = s.objects.at(0);
+  second.name = "second";
+  second.placement.position.x = 0.12f;
+  s.objects.push_back(second);
+  return s;
+}
+
+TEST_F(EditorTest, SingleGlassPresetsAreSceneOfOneObject) {
+  Editor ed("stout", "");
+  ASSERT_EQ(ed.scene().objects.size(), 1u);
+  EXPECT_EQ(ed.selected(), 0);
+  EXPECT_EQ(dump(ed.document()), dump(vessel_document(resolve_scene_objects({"stout", "", {}, {}}), 0)));
+}
+
+TEST_F(EditorTest, SelectionIsNoUndoStepAndStaysInRange) {
+  Editor ed("lager", "");
+  ed.change(two_glasses(ed.scene()));
+  ed.settle(false);
+  const unsigned rev = ed.revision();
+  const std::size_t depth = ed.undo_depth();
+  ed.select(1);
+  EXPECT_EQ(ed.selected(), 1);
+  EXPECT_EQ(ed.scene().selected, 1);
+  EXPECT_EQ(ed.revision(), rev);  // nothing to hand on: the simulation is told directly
+  EXPECT_EQ(ed.undo_depth(), depth);
+  ed.select(7);
+  EXPECT_EQ(ed.selected(), 1);  // the last object
+  ed.select(-3);
+  EXPECT_EQ(ed.selected(), 0);
+
+  ed.select(1);
+  ed.change(with_fill(ed.scene(), 0.5f));  // an edit keeps the selection
+  ed.settle(false);
+  EXPECT_EQ(ed.selected(), 1);
+  ASSERT_TRUE(ed.undo());
+  EXPECT_EQ(ed.selected(), 1);
+  ASSERT_TRUE(ed.undo());  // back to one glass: the selection follows
+  EXPECT_EQ(ed.scene().objects.size(), 1u);
+  EXPECT_EQ(ed.selected(), 0);
+}
+
+TEST_F(EditorTest, ObjectPathsEditOneObject) {
+  Editor ed("lager", "");
+  ed.change(two_glasses(ed.scene()));
+  ed.settle(false);
+  ed.select(1);
+  Scene s = ed.scene();
+  set_param(s, parse_param_ref(s, "objects[1].liquid.fill"), 0.25f);
+  set_param(s, parse_param_ref(s, "env.floor"), false);
+  ed.change(s);
+  EXPECT_FLOAT_EQ(ed.document().liquid.fill, 0.25f);  // the selected object
+  EXPECT_FALSE(ed.document().env.floor);
+  EXPECT_FLOAT_EQ(vessel_document(ed.scene(), 0).liquid.fill, resolve_scene({"lager", "", {}, {}}).liquid.fill);
+  ed.select(0);
+  EXPECT_FLOAT_EQ(ed.document().liquid.fill, vessel_document(ed.scene(), 0).liquid.fill);
+}
+
+TEST_F(EditorTest, ASceneOfSeveralObjectsSavesOneGlassAsDrinkOrGlass) {
+  Editor ed("lager", "");
+  Scene s = two_glasses(ed.scene());
+  set_param(s, parse_param_ref(s, "objects[1].liquid.srm"), 30.0f);
+  ed.change(s);
+  ed.settle(false);
+  ed.select(1);
+  EXPECT_FALSE(ed.save_as((dir / "both.json").string(), "scene"));
+  EXPECT_NE(ed.status().text.find("2 objects"), std::string::npos) << ed.status().text;
+  EXPECT_FALSE(fs::exists(dir / "both.json"));
+  const fs::path drink = dir / "second.json";
+  ASSERT_TRUE(ed.save_as(drink.string(), "drink")) << ed.status().text;
+  Params p = default_params();
+  apply_preset(load_preset(drink), p);
+  EXPECT_FLOAT_EQ(p.liquid.srm, 30.0f);  // the selected glass's drink
+}
+
+TEST_F(EditorTest, APresetSwitchKeepsTheSelectionInRange) {
+  Editor ed("lager", "");
+  ed.change(two_glasses(ed.scene()));
+  ed.settle(false);
+  ed.select(1);
+  ASSERT_TRUE(ed.choose_drink("stout"));
+  EXPECT_EQ(ed.scene().objects.size(), 1u);
+  EXPECT_EQ(ed.selected(), 0);
+  ASSERT_TRUE(ed.undo());
+  EXPECT_EQ(ed.scene().objects.size(), 2u);
+  EXPECT_EQ(ed.selected(), 0);
 }
 
 }  // namespace

@@ -85,6 +85,22 @@ export function difference(a, b) {
   return sum / ((a.data.length / 4) * 3);
 }
 
+// Mean absolute difference per colour channel over the pixels of `box` ({x0, y0, x1, y1},
+// ends excluded), of k x k block means: rising bubbles are small and move on their own, a
+// tilt moves large areas, so blocks keep the one and average the other out.
+export function blockDifference(a, b, box, k = 4) {
+  let sum = 0, n = 0;
+  for (let by = Math.max(0, box.y0); by + k <= Math.min(a.height, box.y1); by += k)
+    for (let bx = Math.max(0, box.x0); bx + k <= Math.min(a.width, box.x1); bx += k, ++n)
+      for (let c = 0; c < 3; ++c) {
+        let d = 0;
+        for (let y = by; y < by + k; ++y)
+          for (let x = bx; x < bx + k; ++x) d += a.data[4 * (y * a.width + x) + c] - b.data[4 * (y * a.width + x) + c];
+        sum += Math.abs(d) / (k * k);
+      }
+  return n ? sum / (n * 3) : 0;
+}
+
 // Mean brightness, 0..255, and whether anything but one flat colour was drawn.
 export function stats(img) {
   let sum = 0, min = 255, max = 0;
