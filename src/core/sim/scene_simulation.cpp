@@ -19,7 +19,10 @@ SceneSimulation::SceneSimulation(const Scene& s) { set_scene(s); }
 
 void SceneSimulation::set_scene(const Scene& s) {
   const bool same_list = s.objects.size() == scene_.objects.size() && sims_.size() == s.objects.size();
-  if (!same_list) sims_.assign(s.objects.size(), std::nullopt);
+  if (!same_list) {
+    sims_.assign(s.objects.size(), std::nullopt);
+    releases_.assign(s.objects.size(), Release{});
+  }
   for (size_t i = 0; i < s.objects.size(); ++i) {
     const VesselObject* v = as_vessel(s.objects[i]);
     if (!v) {
@@ -39,7 +42,37 @@ void SceneSimulation::set_scene(const Scene& s) {
 }
 
 void SceneSimulation::select(int object) {
-  scene_.selected = std::clamp(object, 0, std::max(0, int(scene_.objects.size()) - 1));
+  const int next = std::clamp(object, 0, std::max(0, int(scene_.objects.size()) - 1));
+  const size_t prev = size_t(scene_.selected);
+  if (next != scene_.selected && prev < releases_.size()) releases_[prev] = {time(), last_input_.pose};
+  scene_.selected = next;
+  last_input_ = MotionSample{};
+}
+
+MotionSample SceneSimulation::released(size_t i, double t) {
+  MotionSample m;
+  m.time = t;
+  if (i >= releases_.size() || releases_[i].start < 0) return m;
+  const Release r = releases_[i];
+  // Eased from where it was let go to upright; velocities by central differences.
+  auto pose_at = [&](double time) {
+    const double u = std::clamp((time - r.start) / kSettleSeconds, 0.0, 1.0);
+    const double s = u * u * (3 - 2 * u);
+    return Pose{glm::slerp(r.from.orientation, glm::dquat(1, 0, 0, 0), s), r.from.position * (1 - s)};
+  };
+  if (t - r.start >= kSettleSeconds) {
+    releases_[i].start = -1;
+    return m;
+  }
+  const double h = 1e-3;
+  m.pose = pose_at(t);
+  const Pose before = pose_at(t - h), after = pose_at(t + h);
+  const glm::dquat dq = after.orientation * glm::inverse(before.orientation);
+  const double angle = 2.0 * std::acos(std::clamp(std::abs(dq.w), 0.0, 1.0));
+  const glm::dvec3 axis(dq.x, dq.y, dq.z);
+  if (glm::length(axis) > 1e-15) m.angular_velocity = glm::normalize(axis) * (dq.w < 0 ? -angle : angle) / (2 * h);
+  m.linear_acceleration = (after.position - 2.0 * m.pose.position + before.position) / (h * h);
+  return sanitize(m);
 }
 
 Simulation* SceneSimulation::vessel(int i) {
@@ -66,11 +99,10 @@ void SceneSimulation::step(const MotionSample& m, double drink_rate) {
     if (!sims_[i]) continue;
     const Placement& at = scene_.objects[i].placement;
     if (int(i) == scene_.selected) {
+      last_input_ = m;
       sims_[i]->step(placed(m, at), drink_rate);
     } else {
-      MotionSample rest;
-      rest.time = m.time;
-      sims_[i]->step(placed(rest, at), 0);
+      sims_[i]->step(placed(released(i, m.time), at), 0);
     }
   }
 }

@@ -51,6 +51,17 @@ class SceneSimulation {
  private:
   Scene scene_;
   std::vector<std::optional<Simulation>> sims_;  // one per object; empty for other kinds
+  // A glass that input lets go of (the selection moved on) is set back upright over
+  // kSettleSeconds, smoothly, so its drink sloshes as when a hand puts a glass down
+  // instead of snapping to rest.
+  struct Release {
+    double start = -1;  // < 0: standing at rest
+    Pose from;          // where input left it, in its own stage
+  };
+  static constexpr double kSettleSeconds = 0.6;
+  MotionSample released(size_t object, double t);
+  std::vector<Release> releases_;
+  MotionSample last_input_;  // the selected glass's last motion, in its own stage
 };
 
 }  // namespace draught

@@ -188,5 +188,32 @@ TEST(SceneSimulation, NewParametersKeepTheStateOfUnchangedGlasses) {
   EXPECT_EQ(sim.vessel(2)->params().liquid.srm, 20.0f);
 }
 
+// A glass the selection leaves is put back upright smoothly (its drink sloshes as when a
+// hand sets a glass down), not snapped to rest; the newly selected glass follows input.
+TEST(SceneSimulation, ReleasedGlassEasesBackUpright) {
+  SceneSimulation sim(flight());
+  sim.select(0);
+  TipDriver tip(sim.vessel(0)->vessel().r_outer.front());
+  sim.advance(tip, 1.2);
+  ASSERT_NEAR(axis_tilt(sim.frame().vessels[0]), 25.0, 0.5);
+  sim.select(1);
+  const double t0 = sim.time();
+  struct Still : InputDriver {
+    const char* name() const override { return "still"; }
+    MotionSample sample(double t) override { MotionSample m; m.time = t; return m; }
+  } still;
+  sim.advance(still, t0 + 0.1);
+  const double early = axis_tilt(sim.frame().vessels[0]);
+  EXPECT_GT(early, 15.0) << "let go, not snapped upright";
+  sim.advance(still, t0 + 0.3);
+  const double mid = axis_tilt(sim.frame().vessels[0]);
+  EXPECT_LT(mid, early);
+  EXPECT_GT(mid, 1.0);
+  sim.advance(still, t0 + 0.7);
+  EXPECT_LT(axis_tilt(sim.frame().vessels[0]), 1e-6);
+  EXPECT_LT(axis_tilt(sim.frame().vessels[1]), 1e-6);
+  EXPECT_GT(sim.vessel(0)->energy(), 0.0) << "setting it down moves the drink";
+}
+
 }  // namespace
 }  // namespace draught
