@@ -129,14 +129,13 @@ bool Editor::save_as(const std::string& path_text, const std::string& kind) {
   if (kind == "drink") groups = {"liquid", "foam", "bubbles"};
   else if (kind == "glass") groups = {"glass"};
   else if (kind != "scene") return fail("unknown preset kind '" + kind + "': expected scene, drink or glass");
-  // A preset describes one glass; a file format for several is the scene presets' (not
-  // written by the viewer yet).
-  if (kind == "scene" && now_.scene.objects.size() > 1)
-    return fail("this scene has " + std::to_string(now_.scene.objects.size()) +
-                " objects; Save as scene writes one glass: save the selected one as a drink or glass");
   const std::filesystem::path path = as_path(path_text);
   try {
-    save_preset(path, preset_json(document(), kind, path.stem().string(), "saved from draught-viewer", groups));
+    // A scene is saved whole (every object and its placement); a drink or a glass is the
+    // selected object's.
+    save_preset(path, kind == "scene"
+                          ? scene_preset_json(now_.scene, path.stem().string(), "saved from draught-viewer")
+                          : preset_json(document(), kind, path.stem().string(), "saved from draught-viewer", groups));
   } catch (const std::exception& e) {
     return fail(e.what());
   }

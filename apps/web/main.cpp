@@ -482,14 +482,11 @@ EMSCRIPTEN_KEEPALIVE const char* draught_load_preset(const char* text, const cha
 }
 
 // Everything as a scene preset, loadable again by the page or the CLI: {"text", "error"}.
-// A preset holds one glass: a scene of several objects cannot be exported yet.
+// A scene of several objects is exported whole, every object with its placement.
 EMSCRIPTEN_KEEPALIVE const char* draught_export_preset(const char* name) {
   if (!app) return answer(json{{"error", "not started"}}.dump());
-  if (app->scene.objects.size() != 1)
-    return answer(json{{"error", "this scene has " + std::to_string(app->scene.objects.size()) +
-                                     " objects; a preset exported from the page holds one glass"}}.dump());
   try {
-    const std::string text = preset_json(vessel_document(app->scene, 0), "scene", name, "Saved from the draught web page", {});
+    const std::string text = scene_preset_json(app->scene, name, "Saved from the draught web page");
     return answer(json{{"text", text}, {"error", ""}}.dump());
   } catch (const std::exception& e) {
     return answer(json{{"error", e.what()}}.dump());

@@ -212,16 +212,27 @@ TEST_F(EditorTest, ObjectPathsEditOneObject) {
   EXPECT_FLOAT_EQ(ed.document().liquid.fill, vessel_document(ed.scene(), 0).liquid.fill);
 }
 
-TEST_F(EditorTest, ASceneOfSeveralObjectsSavesOneGlassAsDrinkOrGlass) {
+TEST_F(EditorTest, ASceneOfSeveralObjectsSavesWholeOrOneGlassAsDrinkOrGlass) {
   Editor ed("lager", "");
   Scene s = two_glasses(ed.scene());
   set_param(s, parse_param_ref(s, "objects[1].liquid.srm"), 30.0f);
+  set_param(s, parse_param_ref(s, "env.floor"), false);
+  s.objects[1].placement.yaw = 30.0f;
   ed.change(s);
   ed.settle(false);
   ed.select(1);
-  EXPECT_FALSE(ed.save_as((dir / "both.json").string(), "scene"));
-  EXPECT_NE(ed.status().text.find("2 objects"), std::string::npos) << ed.status().text;
-  EXPECT_FALSE(fs::exists(dir / "both.json"));
+  // The whole scene: every object with its placement and values loads back the same.
+  const fs::path both = dir / "both.json";
+  ASSERT_TRUE(ed.save_as(both.string(), "scene")) << ed.status().text;
+  const Scene back = resolve_scene_objects({both.string(), "", {}, {}});
+  ASSERT_EQ(back.objects.size(), 2u);
+  EXPECT_EQ(back.objects[1].name, "second");
+  EXPECT_FLOAT_EQ(back.objects[1].placement.position.x, 0.12f);
+  EXPECT_FLOAT_EQ(back.objects[1].placement.yaw, 30.0f);
+  EXPECT_FLOAT_EQ(vessel_document(back, 1).liquid.srm, 30.0f);
+  EXPECT_FLOAT_EQ(vessel_document(back, 0).liquid.srm, vessel_document(ed.scene(), 0).liquid.srm);
+  EXPECT_FALSE(back.params.env.floor);
+  EXPECT_EQ(dump(vessel_document(back, 1)), dump(vessel_document(ed.scene(), 1)));
   const fs::path drink = dir / "second.json";
   ASSERT_TRUE(ed.save_as(drink.string(), "drink")) << ed.status().text;
   Params p = default_params();

@@ -375,9 +375,12 @@ test('several glasses: a click, a tap and the picker select one; the panel edits
     await page.waitForFunction((f) => document.getElementById('p-liquid-fill').value === f, first);
     // A scene parameter has no object.
     assert.match(await page.evaluate(() => window.draught.setParam('objects[1].env.floor', 'false')), /objects\[1\]\.env\.floor/);
-    // One preset holds one glass: exporting three says so instead.
-    await page.click('#export');
-    await page.waitForFunction(() => /export: .*3 objects/.test(document.getElementById('message').textContent));
+    // Export writes the whole scene: three objects, the second glass's own fill kept.
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#export')]);
+    const exported = JSON.parse(fs.readFileSync(await download.path(), 'utf8'));
+    assert.equal(exported.kind, 'scene');
+    assert.equal(exported.objects.length, 3);
+    assert.equal(exported.objects[1].params.liquid.fill, 0.3);
     await page.screenshot({ path: path.join(artifacts, 'three-glasses.png') });
 
     // Back to one glass: the picker goes.

@@ -234,6 +234,34 @@ std::vector<Preset> list_presets() {
   return out;
 }
 
+namespace {
+json value_json(const ParamValue& v) {
+  json val;
+  std::visit(
+      [&](auto&& x) {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, glm::vec3>) val = {x.x, x.y, x.z};
+        else if constexpr (std::is_same_v<T, Curve>) {
+          val = json::array();
+          for (auto& q : x) val.push_back({q.x, q.y});
+        } else val = x;
+      },
+      v);
+  return val;
+}
+
+// {"group": {"name": value}} for the rows of one scope.
+json groups_json(const Params& p, ParamScope scope) {
+  json params = json::object();
+  for (auto& d : param_table()) {
+    if (d.scope != scope) continue;
+    const std::string g = group_of(d.path);
+    params[g][d.path.substr(g.size() + 1)] = value_json(get_param(p, d));
+  }
+  return params;
+}
+}  // namespace
+
 std::string preset_json(const Params& p, const std::string& kind, const std::string& name,
                         const std::string& description, const std::vector<std::string>& groups) {
   json j = json::object();
@@ -245,21 +273,32 @@ std::string preset_json(const Params& p, const std::string& kind, const std::str
   for (auto& d : param_table()) {
     const std::string g = group_of(d.path);
     if (!groups.empty() && std::find(groups.begin(), groups.end(), g) == groups.end()) continue;
-    ParamValue v = get_param(p, d);
-    json val;
-    std::visit(
-        [&](auto&& x) {
-          using T = std::decay_t<decltype(x)>;
-          if constexpr (std::is_same_v<T, glm::vec3>) val = {x.x, x.y, x.z};
-          else if constexpr (std::is_same_v<T, Curve>) {
-            val = json::array();
-            for (auto& q : x) val.push_back({q.x, q.y});
-          } else val = x;
-        },
-        v);
-    params[g][d.path.substr(g.size() + 1)] = val;
+    params[g][d.path.substr(g.size() + 1)] = value_json(get_param(p, d));
   }
   j["params"] = params;
+  return j.dump(2) + "\n";
+}
+
+std::string scene_preset_json(const Scene& scene, const std::string& name, const std::string& description) {
+  if (scene.objects.size() <= 1) return preset_json(vessel_document(scene, 0), "scene", name, description, {});
+  json j = json::object();
+  j["draught_preset"] = kPresetFormat;
+  j["kind"] = "scene";
+  j["name"] = name;
+  if (!description.empty()) j["description"] = description;
+  j["params"] = groups_json(vessel_document(scene, 0), ParamScope::Scene);
+  // Each object with every vessel value written out: what was edited is kept as it is,
+  // independent of the glass and drink presets it came from.
+  json objects = json::array();
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& o = scene.objects[i];
+    const Placement& at = o.placement;
+    objects.push_back({{"name", o.name},
+                       {"position", {at.position.x, at.position.y, at.position.z}},
+                       {"yaw", at.yaw},
+                       {"params", groups_json(vessel_document(scene, int(i)), ParamScope::Vessel)}});
+  }
+  j["objects"] = objects;
   return j.dump(2) + "\n";
 }
 

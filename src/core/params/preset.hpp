@@ -80,6 +80,10 @@ std::vector<Preset> list_presets();
 // Serialises the given parameter groups ("glass", "liquid", ...; empty = all) of p.
 std::string preset_json(const Params& p, const std::string& kind, const std::string& name,
                         const std::string& description, const std::vector<std::string>& groups);
+// A scene preset of the whole scene: its own groups and every object with its placement
+// and all its vessel values (a scene of one glass is written as a single-glass scene
+// preset, as before). Loads back into the same scene.
+std::string scene_preset_json(const Scene&, const std::string& name, const std::string& description);
 void save_preset(const std::filesystem::path&, const std::string& json_text);  // validates, atomic
 
 // What a render asks for: a glass preset, a drink (or scene) preset, then camera and

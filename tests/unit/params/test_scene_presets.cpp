@@ -113,6 +113,29 @@ TEST(ScenePreset, ShippedFlight) {
   EXPECT_TRUE(s.params.camera.auto_frame) << "the camera frames the whole flight";
 }
 
+// What the viewer's Save and the page's Export write: the whole scene, loading back to
+// the same objects, placements and values.
+TEST(ScenePreset, WrittenSceneLoadsBackTheSame) {
+  Scene s = resolve_scene_objects({"flight", "", {"objects[2].liquid.fill=0.4", "env.floor=false"}, {}});
+  s.objects[1].placement.yaw = 15.0f;
+  const fs::path file = fs::temp_directory_path() / ("draught-scene-" + std::to_string(::getpid()) + ".json");
+  save_preset(file, scene_preset_json(s, "my-flight", "saved in a test"));
+  const Scene back = resolve_scene_objects({file.string(), "", {}, {}});
+  fs::remove(file);
+  ASSERT_EQ(back.objects.size(), s.objects.size());
+  for (size_t i = 0; i < s.objects.size(); ++i) {
+    EXPECT_EQ(back.objects[i].name, s.objects[i].name);
+    EXPECT_EQ(back.objects[i].placement.position, s.objects[i].placement.position);
+    EXPECT_EQ(back.objects[i].placement.yaw, s.objects[i].placement.yaw);
+    for (const ParamDesc& d : param_table())
+      if (d.scope == ParamScope::Vessel)
+        EXPECT_TRUE(get_param(vessel_document(back, int(i)), d) == get_param(vessel_document(s, int(i)), d))
+            << "objects[" << i << "]." << d.path;
+  }
+  EXPECT_FLOAT_EQ(vessel_document(back, 2).liquid.fill, 0.4f);
+  EXPECT_FALSE(back.params.env.floor);
+}
+
 TEST(ScenePreset, ObjectParamsComeAfterGlassAndDrink) {
   const Scene s = scene_from_preset(parse_preset(
       scene_json(R"([{ "name": "x", "glass": "pint", "drink": "lager",
