@@ -3,6 +3,7 @@
 #include "core/io/files.hpp"
 #include "core/params/json_input.hpp"
 #include "core/params/preset.hpp"
+#include "core/text/echo.hpp"
 #include "core/sim/simulation.hpp"
 
 #include <algorithm>
@@ -73,7 +74,7 @@ TimelineAction parse_action(const Reader& r, const json& a, const std::string& a
   act.at = r.number(a, "at", at + ".at", 0, 3600, " (seconds)", &zero);
   if (a.contains("ease")) {
     const std::string e = r.string(a, "ease", at + ".ease");
-    if (e != "smooth" && e != "linear") r.fail(at + ".ease", "expected \"smooth\" or \"linear\", got \"" + e + "\"");
+    if (e != "smooth" && e != "linear") r.fail(at + ".ease", "expected \"smooth\" or \"linear\", got " + quote_input(e));
     act.linear = e == "linear";
   }
   auto duration = [&](double lo, const double* def) {
@@ -109,7 +110,7 @@ TimelineAction parse_action(const Reader& r, const json& a, const std::string& a
     if (!a.contains("param")) r.fail(f + "param", "missing, expected a parameter path such as \"liquid.srm\"");
     const std::string path = r.string(a, "param", f + "param");
     act.param = find_param(path);
-    if (!act.param) r.fail(f + "param", unknown_param_message(path));
+    if (!act.param) r.fail(f + "param", unknown_param_message(shorten(path)));
     if (!a.contains("value")) r.fail(f + "value", "missing, expected " + expected_text(*act.param));
     act.value = param_value_from_json(*act.param, a["value"], r.file, f + "value");
     act.duration = duration(0, &zero);
@@ -117,7 +118,7 @@ TimelineAction parse_action(const Reader& r, const json& a, const std::string& a
     check_keys(r, a, f, {"at", "action"});
     act.kind = TimelineAction::Kind::Pour;
   } else {
-    r.fail(at + ".action", "expected one of tilt, rotate, shake, sip, orbit, set, pour, got \"" + kind + "\"");
+    r.fail(at + ".action", "expected one of tilt, rotate, shake, sip, orbit, set, pour, got " + quote_input(kind));
   }
   return act;
 }
