@@ -130,6 +130,25 @@ class ShapeCheck {
   std::vector<Level> levels_;
 };
 
+// The parser quotes the token it last read, raw: it may be a whole long string, or hold
+// bytes that are not UTF-8. Cap it and make it valid; keep the rest of the message.
+std::string tidy_parser_message(const std::string& what) {
+  const std::string marker = "last read: '";
+  const auto a = what.find(marker);
+  if (a == std::string::npos) return shorten(make_valid_utf8(what), 4 * kEchoBytes);
+  const auto from = a + marker.size();
+  auto to = what.find("'; expected", from);
+  if (to == std::string::npos) to = what.ends_with("'") ? what.size() - 1 : what.size();
+  // The end of the token is where the parser stopped: show that part.
+  std::string token = make_valid_utf8(what.substr(from, to - from));
+  if (token.size() > kEchoBytes) {
+    std::size_t cut = token.size() - kEchoBytes;
+    while (cut < token.size() && (static_cast<unsigned char>(token[cut]) & 0xC0) == 0x80) ++cut;  // whole characters
+    token = "..." + token.substr(cut);
+  }
+  return make_valid_utf8(what.substr(0, from)) + token + shorten(make_valid_utf8(what.substr(to)), 2 * kEchoBytes);
+}
+
 }  // namespace
 
 std::string short_dump(const json& j) {
@@ -211,12 +230,14 @@ json parse_json_file_text(const std::string& text, const std::string& file) {
     }
     std::string what = e.what();
     auto p = what.find(": ", what.find("parse error"));
-    throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(col) +
-                     ": malformed JSON: " + (p == std::string::npos ? what : what.substr(p + 2)));
+    // The parser quotes what it last read, raw: a long token, or invalid UTF-8.
+    throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(col) + ": malformed JSON: " +
+                     tidy_parser_message(p == std::string::npos ? what : what.substr(p + 2)));
   } catch (const json::exception& e) {  // e.g. a number too large for a double
     std::string what = e.what();
     auto p = what.find("] ");
-    throw InputError(file + ": malformed JSON: " + (p == std::string::npos ? what : what.substr(p + 2)));
+    throw InputError(file + ": malformed JSON: " +
+                     shorten(make_valid_utf8(p == std::string::npos ? what : what.substr(p + 2)), 4 * kEchoBytes));
   }
   return j;
 }

@@ -19,6 +19,11 @@ inline constexpr std::size_t kEchoPathBytes = 4096;
 // boundary (bytes of a broken sequence count as characters of their own).
 std::string_view utf8_prefix(std::string_view s, std::size_t max_bytes);
 
+// `s` with every byte that is not part of a well-formed UTF-8 character replaced by
+// U+FFFD, so text quoted from a broken file (e.g. a parser's "last read: '...'") is
+// valid UTF-8 whatever the input was.
+std::string make_valid_utf8(std::string_view s);
+
 // `s` itself when it fits in `max_bytes`, else its UTF-8-safe prefix followed by "..."
 // (the result is then at most max_bytes + 3 bytes long).
 std::string shorten(std::string_view s, std::size_t max_bytes = kEchoBytes);
