@@ -42,27 +42,35 @@ void show_progress(int done, int total, double seconds, bool final) {
   std::fflush(stderr);
 }
 
-}  // namespace
-
-int animate(const RenderRequest& req, const AnimateRequest& anim) {
-  const fs::path timeline_path = timeline_file(anim.timeline);
-  const Timeline timeline = load_timeline(timeline_path.string());
+// The scene a timeline plays in (flags win over the timeline's own preset and glass),
+// with every file it reads added to `inputs`, so that the output cannot replace one.
+SceneRequest timeline_scene(const RenderRequest& req, const AnimateRequest& anim, const Timeline& timeline,
+                            std::vector<InputFile>& inputs) {
   SceneRequest scene = req.scene;
-  std::vector<InputFile> inputs = {{"--timeline", timeline_path}};
-  if (!req.shader_dir.empty()) inputs.push_back({"--shader-dir", req.shader_dir});
   const std::string field = timeline.file + ": field '";
-  if (anim.preset_given) inputs.push_back({"--preset", preset_file(scene.preset, "drink", "--preset")});
-  else if (!timeline.preset.empty()) {
+  if (!anim.preset_given && !timeline.preset.empty()) {
     scene.preset = timeline.preset;
     inputs.push_back({"timeline's preset", preset_file(scene.preset, "drink", field + "preset':")});
   } else {
     inputs.push_back({"--preset", preset_file(scene.preset, "drink", "--preset")});
   }
-  if (anim.glass_given) inputs.push_back({"--glass", preset_file(scene.glass, "glass", "--glass")});
-  else if (!timeline.glass.empty()) {
+  if (!anim.glass_given && !timeline.glass.empty()) {
     scene.glass = timeline.glass;
     inputs.push_back({"timeline's glass", preset_file(scene.glass, "glass", field + "glass':")});
+  } else if (!scene.glass.empty()) {
+    inputs.push_back({"--glass", preset_file(scene.glass, "glass", "--glass")});
   }
+  if (!req.shader_dir.empty()) inputs.push_back({"--shader-dir", req.shader_dir});
+  return scene;
+}
+
+}  // namespace
+
+int animate(const RenderRequest& req, const AnimateRequest& anim) {
+  const fs::path timeline_path = timeline_file(anim.timeline);
+  const Timeline timeline = load_timeline(timeline_path.string());
+  std::vector<InputFile> inputs = {{"--timeline", timeline_path}};
+  const SceneRequest scene = timeline_scene(req, anim, timeline, inputs);
   const double fps = anim.fps > 0 ? anim.fps : (timeline.fps > 0 ? timeline.fps : 30.0);
   const double duration = anim.duration > 0 ? anim.duration : timeline.duration;
   const int frames = std::max(1, int(std::floor(duration * fps + 1e-9)));
@@ -73,8 +81,9 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
   const std::string ext = fs::path(shown).extension().string();
   const bool video = ext == ".mp4" || ext == ".gif";
   if (!video && !ext.empty())
-    throw InputError("-o " + shorten(shown, kEchoPathBytes) + ": with --timeline, expected a folder for PNG frames (e.g. frames/), "
-                     "or a file ending in .mp4 or .gif");
+    throw InputError("-o " + shorten(shown, kEchoPathBytes) +
+                     ": with --timeline, expected a folder for PNG frames (e.g. frames/), or a file ending in .mp4 "
+                     "or .gif");
   // Links are followed: the file or folder they point to is what gets replaced.
   const fs::path dest = video ? write_destination(shown) : SequenceFolder::destination(shown);
   refuse_overwriting_inputs(dest, shown, inputs, !video);
@@ -82,24 +91,28 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
   std::string log;
   const Params base = resolve_scene(scene, &log);
   check_camera(base, req.camera_given);
-  if (req.verbose) std::fprintf(stderr, "%stimeline: %s (%d frames at %g fps)\n", log.c_str(), timeline.file.c_str(), frames, fps);
-  auto ctx = gpu::HeadlessContext::create();
-  if (req.verbose) std::fprintf(stderr, "renderer: %s (%s)\n", ctx->renderer().c_str(), ctx->platform().c_str());
-  gpu::Renderer renderer(req.shader_dir);
+  if (req.verbose)
+    std::fprintf(stderr, "%stimeline: %s (%d frames at %g fps)\n", log.c_str(), timeline.file.c_str(), frames, fps);
 
-  Simulation sim(timeline.params_at(0, base));
-  sim.settle_bubbles(4.0);  // a drink that has been standing (a pour clears them)
-  TimelineDriver driver(timeline, sim.vessel().r_outer.front());
+  // The output is set up (and a folder that may not be replaced refused) before the
+  // costly part; ffmpeg starts before the GL driver's threads do.
   if (dest.has_parent_path()) {
     std::error_code ec;
     fs::create_directories(dest.parent_path(), ec);
     if (ec) throw InputError("-o " + shown + ": cannot create " + dest.parent_path().string() + ": " + ec.message());
-    sweep_stale_temporaries(dest.parent_path());
   }
+  sweep_stale_temporaries(dest.parent_path());  // of runs killed before they could clean up
   std::optional<Encoder> encoder;
   std::optional<SequenceFolder> sequence;
   if (video) encoder.emplace(dest, shown, req.width, req.height, fps);
   else sequence.emplace(dest, shown, anim.overwrite);
+
+  auto ctx = gpu::HeadlessContext::create();
+  if (req.verbose) std::fprintf(stderr, "renderer: %s (%s)\n", ctx->renderer().c_str(), ctx->platform().c_str());
+  gpu::Renderer renderer(req.shader_dir);
+  Simulation sim(timeline.params_at(0, base));
+  sim.settle_bubbles(4.0);  // a drink that has been standing (a pour clears them)
+  TimelineDriver driver(timeline, sim.vessel().r_outer.front());
   const bool progress = anim.progress || isatty(STDERR_FILENO);
   const auto t0 = std::chrono::steady_clock::now();
   for (int i = 0; i < frames; ++i) {
@@ -118,13 +131,14 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
   }
   if (encoder) encoder->finish();
   else sequence->publish();
+
   fs::path given(shown);
   if (!given.has_filename()) given = given.parent_path();  // frames/ -> frames
   std::error_code ec;
   const std::string through =
       fs::is_symlink(fs::symlink_status(given, ec)) ? "through the symbolic link, to " + dest.string() + "; " : "";
-  std::printf("wrote %s (%s%d frame%s, %g fps, %.2f s; spilled %.1f %% of the glass)\n", shown.c_str(), through.c_str(),
-              frames, frames == 1 ? "" : "s", fps, frames / fps, 100.0 * sim.spilled());
+  std::printf("wrote %s (%s%d frame%s, %g fps, %.2f s; spilled %.1f %% of the glass)\n", shown.c_str(),
+              through.c_str(), frames, frames == 1 ? "" : "s", fps, frames / fps, 100.0 * sim.spilled());
   return 0;
 }
 
