@@ -23,6 +23,9 @@ set(DRAUGHT_CORE_SOURCES
   src/core/sim/scene_simulation.cpp
   src/core/io/image.cpp
   src/core/io/files.cpp
+  src/core/io/temporaries.cpp
+  src/core/text/echo.cpp
+  src/core/text/suggest.cpp
   src/core/input/gesture.cpp
   src/core/input/fusion.cpp
   src/core/input/imu_driver.cpp

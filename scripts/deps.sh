@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages draught needs, skipping those already there
-# (idempotent). Uses sudo when not root.
+# (idempotent). Uses sudo when not root. clang and libclang-rt-14-dev (its runtime
+# libraries, libFuzzer among them) build the fuzz targets (scripts/fuzz.sh).
 set -euo pipefail
 
 packages=(
@@ -11,6 +12,7 @@ packages=(
   libsdl2-dev ffmpeg
   libimgui-dev xvfb xauth
   emscripten chromium
+  clang libclang-rt-14-dev
 )
 
 missing=()

@@ -1,126 +1,35 @@
 // `draught render --timeline`: plays a timeline through the simulation and writes a PNG
-// sequence, or pipes the frames to ffmpeg for MP4 / GIF. Deterministic: fixed steps,
-// and frame i is the state at exactly i / fps seconds.
+// sequence (built in a temporary folder, moved into place whole: output.hpp), or streams
+// the frames to ffmpeg for MP4 / GIF (encoder.hpp). Deterministic: fixed steps, and
+// frame i is the state at exactly i / fps seconds.
 #include "commands.hpp"
+
+#include "cleanup.hpp"
+#include "encoder.hpp"
+#include "names.hpp"
+#include "output.hpp"
 
 #include "core/io/files.hpp"
 #include "core/params/preset.hpp"
 #include "core/params/timeline.hpp"
 #include "core/sim/scene_simulation.hpp"
+#include "core/text/echo.hpp"
 #include "gpu/context.hpp"
 #include "gpu/renderer.hpp"
 
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <chrono>
-#include <csignal>
+#include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
-
-extern char** environ;
+#include <optional>
 
 namespace draught::cli {
 
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string find_on_path(const std::string& exe) {
-  const char* path = std::getenv("PATH");
-  std::string dirs = path ? path : "/usr/bin:/bin";
-  for (size_t start = 0; start <= dirs.size();) {
-    size_t end = dirs.find(':', start);
-    if (end == std::string::npos) end = dirs.size();
-    const fs::path candidate = fs::path(dirs.substr(start, end - start)) / exe;
-    if (access(candidate.c_str(), X_OK) == 0) return candidate.string();
-    start = end + 1;
-  }
-  return "";
-}
-
-// ffmpeg reading raw RGBA frames on its stdin.
-class Encoder {
- public:
-  Encoder(const fs::path& out, int w, int h, double fps) {
-    const char* pinned = std::getenv("DRAUGHT_FFMPEG");
-    if (pinned && *pinned && access(pinned, X_OK) != 0)
-      throw InputError("-o " + out.string() + ": DRAUGHT_FFMPEG=" + pinned + " is not an executable ffmpeg");
-    const std::string ffmpeg = pinned && *pinned ? std::string(pinned) : find_on_path("ffmpeg");
-    if (ffmpeg.empty())
-      throw InputError("-o " + out.string() +
-                       ": ffmpeg was not found on PATH (Debian: apt install ffmpeg); or write PNG frames with -o DIR/");
-    part_ = out.string() + ".part";
-    const bool gif = out.extension() == ".gif";
-    char size[32], rate[32];
-    std::snprintf(size, sizeof size, "%dx%d", w, h);
-    std::snprintf(rate, sizeof rate, "%g", fps);
-    std::vector<std::string> args = {ffmpeg, "-nostdin", "-y", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt", "rgba",
-                                     "-s", size, "-r", rate, "-i", "-"};
-    if (gif) {  // one palette for the whole clip keeps the colours of the drink
-      for (const char* a : {"-vf", "split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=sierra2_4a",
-                            "-loop", "0", "-f", "gif"})
-        args.emplace_back(a);
-    } else {
-      for (const char* a : {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf",
-                            "18", "-movflags", "+faststart", "-f", "mp4"})
-        args.emplace_back(a);
-    }
-    args.push_back(part_);
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    int fds[2];
-    if (pipe(fds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, fds[0], 0);
-    posix_spawn_file_actions_addclose(&actions, fds[1]);
-    const int rc = posix_spawn(&pid_, ffmpeg.c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    close(fds[0]);
-    if (rc != 0) {
-      close(fds[1]);
-      throw std::runtime_error("cannot start " + ffmpeg + ": " + std::strerror(rc));
-    }
-    fd_ = fds[1];
-    std::signal(SIGPIPE, SIG_IGN);  // a dying ffmpeg makes write() fail instead of killing us
-  }
-  ~Encoder() {
-    if (fd_ >= 0) close(fd_);
-    if (pid_ > 0) waitpid(pid_, nullptr, 0);
-    if (!part_.empty()) fs::remove(part_);
-  }
-  void write(const Image& img) {
-    const std::uint8_t* p = img.rgba.data();
-    size_t left = img.rgba.size();
-    while (left > 0) {
-      const ssize_t n = ::write(fd_, p, left);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) throw std::runtime_error("ffmpeg stopped reading frames (see its message above)");
-      p += n, left -= size_t(n);
-    }
-  }
-  void finish(const fs::path& out) {
-    close(fd_);
-    fd_ = -1;
-    int status = 0;
-    waitpid(pid_, &status, 0);
-    pid_ = -1;
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-      throw std::runtime_error("ffmpeg failed writing " + out.string() + " (see its message above)");
-    fs::rename(part_, out);
-    part_.clear();
-  }
-
- private:
-  pid_t pid_ = -1;
-  int fd_ = -1;
-  std::string part_;
-};
 
 // "[#######.......]  42/120 frames  3.1 fps  25 s left", redrawn in place.
 void show_progress(int done, int total, double seconds, bool final) {
@@ -134,71 +43,111 @@ void show_progress(int done, int total, double seconds, bool final) {
   std::fflush(stderr);
 }
 
-}  // namespace
-
-int animate(const RenderRequest& req, const AnimateRequest& anim) {
-  Timeline timeline = load_timeline(anim.timeline);
+// The scene a timeline plays in (flags win over the timeline's own preset and glass),
+// with every file it reads added to `inputs`, so that the output cannot replace one.
+SceneRequest timeline_scene(const RenderRequest& req, const AnimateRequest& anim, const Timeline& timeline,
+                            std::vector<InputFile>& inputs) {
   SceneRequest scene = req.scene;
-  if (!anim.preset_given && !timeline.preset.empty()) scene.preset = timeline.preset;
+  const std::string field = timeline.file + ": field '";
+  if (!anim.preset_given && !timeline.preset.empty()) {
+    scene.preset = timeline.preset;
+    inputs.push_back({"timeline's preset", preset_file(scene.preset, "drink", field + "preset':")});
+  } else {
+    inputs.push_back({"--preset", preset_file(scene.preset, "drink", "--preset")});
+  }
   if (!anim.glass_given && !timeline.glass.empty()) {
     // A scene that places its own glasses takes none from the timeline.
     if (!load_preset(find_preset(scene.preset, "drink")).objects.empty())
       throw InputError(timeline.file + ": field 'glass': the scene '" + scene.preset +
                        "' places its own glasses; leave out the timeline's glass");
     scene.glass = timeline.glass;
+    inputs.push_back({"timeline's glass", preset_file(scene.glass, "glass", field + "glass':")});
+  } else if (!scene.glass.empty()) {
+    inputs.push_back({"--glass", preset_file(scene.glass, "glass", "--glass")});
   }
+  if (!req.shader_dir.empty()) inputs.push_back({"--shader-dir", req.shader_dir});
+  return scene;
+}
+
+}  // namespace
+
+int animate(const RenderRequest& req, const AnimateRequest& anim) {
+  const fs::path timeline_path = timeline_file(anim.timeline);
+  Timeline timeline = load_timeline(timeline_path.string());
+  std::vector<InputFile> inputs = {{"--timeline", timeline_path}};
+  const SceneRequest scene = timeline_scene(req, anim, timeline, inputs);
   const double fps = anim.fps > 0 ? anim.fps : (timeline.fps > 0 ? timeline.fps : 30.0);
   const double duration = anim.duration > 0 ? anim.duration : timeline.duration;
   const int frames = std::max(1, int(std::floor(duration * fps + 1e-9)));
 
-  fs::path out = anim.output.empty() ? fs::path("out") / (timeline.name.empty() ? "animation" : timeline.name) / ""
-                                     : fs::path(anim.output);
-  const std::string ext = out.extension().string();
+  const std::string shown =
+      anim.output.empty() ? (fs::path("out") / (timeline.name.empty() ? "animation" : timeline.name) / "").string()
+                          : anim.output;
+  const std::string ext = fs::path(shown).extension().string();
   const bool video = ext == ".mp4" || ext == ".gif";
   if (!video && !ext.empty())
-    throw InputError("-o " + out.string() + ": with --timeline, expected a folder for PNG frames (e.g. frames/), "
-                     "or a file ending in .mp4 or .gif");
+    throw InputError("-o " + shorten(shown, kEchoPathBytes) +
+                     ": with --timeline, expected a folder for PNG frames (e.g. frames/), or a file ending in .mp4 "
+                     "or .gif");
+  // Links are followed: the file or folder they point to is what gets replaced.
+  const fs::path dest = video ? write_destination(shown) : SequenceFolder::destination(shown);
+  refuse_overwriting_inputs(dest, shown, inputs, !video);
 
   std::string log;
   const Scene base = resolve_scene_objects(scene, &log);
+  check_camera(base.params, req.camera_given);
   bind_timeline(timeline, base);  // the objects its actions address are in this scene
-  if (req.verbose) std::fprintf(stderr, "%stimeline: %s (%d frames at %g fps)\n", log.c_str(), timeline.file.c_str(), frames, fps);
+  if (req.verbose)
+    std::fprintf(stderr, "%stimeline: %s (%d frames at %g fps)\n", log.c_str(), timeline.file.c_str(), frames, fps);
+
+  // The output is set up (and a folder that may not be replaced refused) before the
+  // costly part; ffmpeg starts before the GL driver's threads do.
+  if (dest.has_parent_path()) {
+    std::error_code ec;
+    fs::create_directories(dest.parent_path(), ec);
+    if (ec) throw InputError("-o " + shown + ": cannot create " + dest.parent_path().string() + ": " + ec.message());
+  }
+  sweep_stale_temporaries(dest.parent_path());  // of runs killed before they could clean up
+  std::optional<Encoder> encoder;
+  std::optional<SequenceFolder> sequence;
+  if (video) encoder.emplace(dest, shown, req.width, req.height, fps);
+  else sequence.emplace(dest, shown, anim.overwrite);
+
   auto ctx = gpu::HeadlessContext::create();
   if (req.verbose) std::fprintf(stderr, "renderer: %s (%s)\n", ctx->renderer().c_str(), ctx->platform().c_str());
   gpu::Renderer renderer(req.shader_dir);
-
   SceneSimulation sim(timeline.scene_at(0, base));
   sim.settle_bubbles(4.0);  // drinks that have been standing (a pour clears them)
   std::vector<TimelineDriver> drivers = timeline_drivers(timeline, sim);  // one per object
-  std::unique_ptr<Encoder> encoder;
-  if (video) {
-    if (out.has_parent_path()) fs::create_directories(out.parent_path());
-    encoder = std::make_unique<Encoder>(out, req.width, req.height, fps);
-  } else {
-    fs::create_directories(out);
-  }
   const bool progress = anim.progress || isatty(STDERR_FILENO);
   const auto t0 = std::chrono::steady_clock::now();
   for (int i = 0; i < frames; ++i) {
     play_timeline(sim, drivers, timeline, base, i / fps);
-    const Image img = renderer.render(sim.frame(), req.width, req.height);
-    if (encoder) {
-      encoder->write(img);
-    } else {
-      char name[32];
-      std::snprintf(name, sizeof name, "frame_%05d.png", i);
-      write_png(out / name, img);
+    Image img;
+    try {
+      img = renderer.render(sim.frame(), req.width, req.height);
+    } catch (const std::runtime_error& e) {
+      explain_size_error(e, req, base.params.render.supersample);
     }
+    if (encoder) encoder->write(img);
+    else write_png(sequence->folder() / SequenceFolder::frame_name(i), img);
     if (progress)
       show_progress(i + 1, frames, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
                     i + 1 == frames);
   }
-  if (encoder) encoder->finish(out);
+  if (encoder) encoder->finish();
+  else sequence->publish();
+
+  fs::path given(shown);
+  if (!given.has_filename()) given = given.parent_path();  // frames/ -> frames
+  std::error_code ec;
+  const std::string through =
+      fs::is_symlink(fs::symlink_status(given, ec)) ? "through the symbolic link, to " + dest.string() + "; " : "";
   double spilled = 0;  // the most any glass spilled
   for (int i = 0; i < int(base.objects.size()); ++i)
     if (const Simulation* v = sim.vessel(i)) spilled = std::max(spilled, v->spilled());
-  std::printf("wrote %s (%d frame%s, %g fps, %.2f s; spilled %.1f %% of the glass%s)\n", out.string().c_str(), frames,
-              frames == 1 ? "" : "s", fps, frames / fps, 100.0 * spilled,
+  std::printf("wrote %s (%s%d frame%s, %g fps, %.2f s; spilled %.1f %% of the glass%s)\n", shown.c_str(),
+              through.c_str(), frames, frames == 1 ? "" : "s", fps, frames / fps, 100.0 * spilled,
               base.objects.size() > 1 ? " that spilled most" : "");
   return 0;
 }

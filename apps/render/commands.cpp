@@ -1,6 +1,11 @@
 #include "commands.hpp"
 
+#include "cleanup.hpp"
+#include "names.hpp"
+#include "output.hpp"
+
 #include "core/io/files.hpp"
+#include "core/text/echo.hpp"
 #include "core/scene/frame.hpp"
 #include "core/params/preset.hpp"
 #include "core/params/timeline.hpp"
@@ -24,12 +29,32 @@ void parse_size(const std::string& text, int& w, int& h) {
   };
   if (x == std::string::npos || !whole_number(std::string_view(text).substr(0, x), w) ||
       !whole_number(std::string_view(text).substr(x + 1), h) || w < 1 || h < 1 || w > 8192 || h > 8192)
-    throw InputError("--size " + text + ": expected WIDTHxHEIGHT, each from 1 to 8192, e.g. 512x512");
+    throw InputError("--size " + shorten(text) + ": expected WIDTHxHEIGHT, each from 1 to 8192, e.g. 512x512");
+}
+
+void explain_size_error(const std::runtime_error& e, const RenderRequest& req, int supersample) {
+  const std::string what = e.what();
+  if (what.find("offscreen framebuffer") == std::string::npos) throw;
+  throw InputError("--size " + std::to_string(req.width) + "x" + std::to_string(req.height) +
+                   (supersample > 1 ? " at --supersample " + std::to_string(supersample) + " (rendered at " +
+                                          std::to_string(req.width * supersample) + "x" +
+                                          std::to_string(req.height * supersample) + ", then averaged down)"
+                                    : std::string()) +
+                   ": " + what + "; choose a smaller size or supersampling");
+}
+
+void check_camera(const SceneParams& p, bool camera_given) {
+  const glm::vec3 e = p.camera.eye;
+  if (glm::length(p.camera.target - e) > 1e-6f) return;
+  char at[96];
+  std::snprintf(at, sizeof at, "(%g, %g, %g)", double(e.x), double(e.y), double(e.z));
+  throw InputError(std::string(camera_given ? "--camera: " : "") + "camera.eye and camera.target are the same point " +
+                   at + ": the camera needs a direction to look in; move the eye or the target");
 }
 
 int render(const RenderRequest& req) {
   std::filesystem::path out(req.output);
-  if (out.extension() != ".png") throw InputError("-o " + req.output + ": expected a file name ending in .png");
+  if (out.extension() != ".png") throw InputError("-o " + shorten(req.output, kEchoPathBytes) + ": expected a file name ending in .png");
   gpu::DebugView view = gpu::DebugView::None;
   if (req.debug == "depth") view = gpu::DebugView::Depth;
   else if (req.debug == "normal") view = gpu::DebugView::Normal;
@@ -37,24 +62,38 @@ int render(const RenderRequest& req) {
   else if (req.debug == "cost") view = gpu::DebugView::Cost;
   else if (!req.debug.empty()) throw InputError("--debug " + req.debug + ": expected depth, normal, material or cost");
 
+  // Names resolved first, so a typo gets its "did you mean"; what is read is never written.
+  std::vector<InputFile> inputs = {{"--preset", preset_file(req.scene.preset, "drink", "--preset")}};
+  if (!req.scene.glass.empty()) inputs.push_back({"--glass", preset_file(req.scene.glass, "glass", "--glass")});
+  if (!req.shader_dir.empty()) inputs.push_back({"--shader-dir", req.shader_dir});
+  const std::filesystem::path dest = write_destination(out);
+  refuse_overwriting_inputs(dest, req.output, inputs, false);
   std::string log;
   const Scene scene = resolve_scene_objects(req.scene, &log);
+  check_camera(scene.params, req.camera_given);
   if (req.verbose) std::fprintf(stderr, "%s", log.c_str());
   const FrameState frame = make_frame(scene);
   auto ctx = gpu::HeadlessContext::create();
   if (req.verbose) std::fprintf(stderr, "renderer: %s (%s)\n", ctx->renderer().c_str(), ctx->platform().c_str());
   gpu::Renderer renderer(req.shader_dir);
   auto t0 = std::chrono::steady_clock::now();
-  Image img = view == gpu::DebugView::None
-                  ? renderer.render(frame, req.width, req.height)
-                  : gpu::visualize_debug(renderer.render_debug(frame, req.width, req.height, view), view);
+  Image img;
+  try {
+    img = view == gpu::DebugView::None
+              ? renderer.render(frame, req.width, req.height)
+              : gpu::visualize_debug(renderer.render_debug(frame, req.width, req.height, view), view);
+  } catch (const std::runtime_error& e) {
+    explain_size_error(e, req, view == gpu::DebugView::None ? scene.params.render.supersample : 1);
+  }
   auto ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
-  write_png(out, img);
+  if (dest.has_parent_path()) std::filesystem::create_directories(dest.parent_path());
+  sweep_stale_temporaries(dest.parent_path());
+  write_png(dest, img);
   if (req.verbose)
     std::fprintf(stderr, "rendered %dx%d (supersample %d) in %.1f ms\n", req.width, req.height,
                  view == gpu::DebugView::None ? scene.params.render.supersample : 1, ms);
-  std::printf("wrote %s\n", out.string().c_str());
+  if (dest != out) std::printf("wrote %s (through the symbolic link, to %s)\n", out.c_str(), dest.c_str());
+  else std::printf("wrote %s\n", out.string().c_str());
   return 0;
 }
 
@@ -74,13 +113,8 @@ namespace {
 // A timeline's own scene (its preset and glass) must exist, and the objects its actions
 // address must be in it.
 void check_timeline_scene(Timeline& t, const std::string& f) {
-  for (auto [field, name, kind] : {std::tuple{"preset", t.preset, "drink"}, {"glass", t.glass, "glass"}}) {
-    try {  // the scene it names must exist
-      if (!name.empty()) find_preset(name, kind);
-    } catch (const InputError& e) {
-      throw InputError(f + ": field '" + field + "': " + e.what());
-    }
-  }
+  for (auto [field, name, kind] : {std::tuple{"preset", t.preset, "drink"}, {"glass", t.glass, "glass"}})
+    if (!name.empty()) preset_file(name, kind, f + ": field '" + field + "':");  // the scene it names must exist
   if (t.preset.empty()) return;  // objects are checked against the scene it is played in
   Scene scene;
   try {

@@ -3,6 +3,7 @@
 
 #include "core/params/preset.hpp"
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@ struct RenderRequest {
   std::string debug;  // "", depth, normal, material
   std::string shader_dir;
   bool verbose = false;
+  bool output_given = false, camera_given = false;  // -o and --camera were on the command line
 };
 
 // An animation: a timeline played through the simulation.
@@ -25,6 +27,7 @@ struct AnimateRequest {
   double duration = 0;    // 0: the timeline's
   bool preset_given = false, glass_given = false;  // flags win over the timeline's scene
   bool progress = false;  // draw the progress bar even when stderr is not a terminal
+  bool overwrite = false;  // a PNG sequence may replace a folder holding other files
 };
 
 int render(const RenderRequest&);
@@ -36,5 +39,12 @@ int bench(int frames, const std::vector<int>& sizes, bool verbose);
 
 // "512x256" -> 512, 256; throws InputError.
 void parse_size(const std::string& text, int& w, int& h);
+
+// Rethrows a render error that comes from the image's size as an InputError naming
+// --size and --supersample; any other error as it is. Call from a catch block.
+[[noreturn]] void explain_size_error(const std::runtime_error&, const RenderRequest&, int supersample);
+
+// Refuses a camera that looks nowhere (eye == target), naming --camera when it was given.
+void check_camera(const SceneParams&, bool camera_given);
 
 }  // namespace draught::cli

@@ -1,8 +1,10 @@
 // draught: headless renderer of drinks in glassware.
+#include "args.hpp"
+#include "cleanup.hpp"
 #include "commands.hpp"
 
 #include "core/io/files.hpp"
-#include "gpu/shader_source.hpp"
+#include "core/text/echo.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -11,43 +13,46 @@
 using namespace draught;
 
 int main(int argc, char** argv) {
+  cli::install_cleanup_on_signals();
   CLI::App app{"draught: raymarched drinks in glassware, rendered headless (OpenGL ES 3.0 via EGL)"};
   app.set_version_flag("--version", std::string("draught ") + DRAUGHT_VERSION);
   app.require_subcommand(1);
   app.fallthrough();  // global flags (--verbose) also after the subcommand
+  app.allow_extras();  // unknown words are kept, for a message that names them (args.hpp)
   bool verbose = false;
   app.add_flag("-v,--verbose", verbose, "Say which renderer and presets are used, and how long it took");
 
+  // Values are taken as text and checked by cli::*_flag, so every bad value gets the
+  // same kind of message (flag, value, what was expected) and exit code 1.
   cli::RenderRequest rr;
-  std::string size = "512x512", tonemap;
+  std::string size = "512x512", tonemap, debug, supersample, fps, duration;
   bool transparent = false;
-  int supersample = 0;
   auto* render = app.add_subcommand("render", "Render a preset to a PNG");
   render->add_option("-p,--preset", rr.scene.preset, "Drink or scene preset: a name or a JSON file")
       ->capture_default_str();
   render->add_option("-g,--glass", rr.scene.glass, "Glass preset: a name or a JSON file (default: the drink's)");
   render->add_option("-s,--size", size, "Image size WIDTHxHEIGHT")->capture_default_str();
-  render->add_option("-o,--output", rr.output, "Output PNG (written atomically)")->capture_default_str();
+  render->add_option("-o,--output", rr.output,
+                     "Output PNG (written atomically; a symbolic link is followed and its target replaced)")
+      ->capture_default_str();
   render->add_option("--set", rr.scene.sets, "Set a parameter: path=value (see `draught params`); repeatable")
       ->allow_extra_args(false);
   render->add_option("--camera", rr.scene.camera, "Camera: eye=x,y,z target=x,y,z vfov=degrees")->expected(1, 3);
-  render->add_option("--debug", rr.debug,
-                     "Write a debug view instead: depth, normal, material, or cost (intersection tests per pixel)")
-      ->check(CLI::IsMember({"depth", "normal", "material", "cost"}));
-  render->add_option("--tonemap", tonemap, "Output transform: none or aces")->check(CLI::IsMember({"none", "aces"}));
+  render->add_option("--debug", debug,
+                     "Write a debug view instead: depth, normal, material, or cost (intersection tests per pixel)");
+  render->add_option("--tonemap", tonemap, "Output transform: none or aces");
   render->add_flag("--transparent", transparent, "Transparent background, premultiplied alpha");
-  render->add_option("--supersample", supersample, "Anti-aliasing: samples per axis (1-4)")
-      ->check(CLI::Range(1, 4));
+  render->add_option("--supersample", supersample, "Anti-aliasing: samples per axis (1-4)");
   render->add_option("--shader-dir", rr.shader_dir, "Load shaders from this folder instead of the built-in ones");
   cli::AnimateRequest anim;
   render->add_option("-t,--timeline", anim.timeline,
                      "Animate: play this timeline (a name or a JSON file); -o is then a folder for PNG frames or a "
                      ".mp4/.gif file");
-  render->add_option("--fps", anim.fps, "Frames per second of the animation (default: the timeline's, else 30)")
-      ->check(CLI::Range(1.0, 120.0));
-  render->add_option("--duration", anim.duration, "Seconds to render (default: the timeline's)")
-      ->check(CLI::Range(0.01, 600.0));
+  render->add_option("--fps", fps, "Frames per second of the animation, 1-120 (default: the timeline's, else 30)");
+  render->add_option("--duration", duration, "Seconds to render, 0.01-600 (default: the timeline's)");
   render->add_flag("--progress", anim.progress, "Show the progress bar even when stderr is not a terminal");
+  render->add_flag("--overwrite", anim.overwrite,
+                   "Let a PNG sequence replace a folder that holds other files (all of them are removed)");
 
   auto* presets = app.add_subcommand("presets", "List the presets");
   std::vector<std::string> files;
@@ -56,37 +61,59 @@ int main(int argc, char** argv) {
   bool markdown = false;
   auto* params = app.add_subcommand("params", "Print the parameter table (path, type, default, range, unit, doc)");
   params->add_flag("--markdown", markdown, "As a Markdown table");
-  int frames = 20;
-  std::vector<int> sizes = {256, 512};
+  std::string frames = "20", sizes = "256,512";
   auto* bench = app.add_subcommand("bench", "Render fixed scenes for N frames and print median frame times");
-  bench->add_option("-n,--frames", frames, "Frames per scene and size")->check(CLI::Range(1, 10000))->capture_default_str();
-  bench->add_option("--sizes", sizes, "Square image sizes")->delimiter(',')->capture_default_str();
+  bench->add_option("-n,--frames", frames, "Frames per scene and size (1-10000)")->capture_default_str();
+  bench->add_option("--sizes", sizes, "Square image sizes, comma-separated")->capture_default_str();
 
-  CLI11_PARSE(app, argc, argv);
   try {
+    cli::check_verb(app, argc, argv);
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::Success& e) {  // --help, --version
+      return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+      throw InputError(cli::explain_parse_error(app, e));
+    }
+    if (app.remaining_size(true) > 0) throw InputError(cli::explain_extras(app));
     if (*render) {
+      cli::check_device_environment();
       cli::parse_size(size, rr.width, rr.height);
-      if (!tonemap.empty()) rr.scene.sets.push_back("render.tonemap=" + tonemap);
+      if (render->count("--debug"))
+        rr.debug = cli::choice_flag("--debug", debug, {"depth", "normal", "material", "cost"});
+      if (render->count("--tonemap"))
+        rr.scene.sets.push_back("render.tonemap=" + cli::choice_flag("--tonemap", tonemap, {"none", "aces"}));
       if (transparent) rr.scene.sets.push_back("render.transparent=true");
-      if (supersample) rr.scene.sets.push_back("render.supersample=" + std::to_string(supersample));
+      if (render->count("--supersample"))
+        rr.scene.sets.push_back("render.supersample=" +
+                                std::to_string(cli::integer_flag("--supersample", supersample, 1, 4)));
+      if (render->count("--fps")) anim.fps = cli::number_flag("--fps", fps, 1, 120, "frames per second");
+      if (render->count("--duration")) anim.duration = cli::number_flag("--duration", duration, 0.01, 600, "seconds");
       rr.verbose = verbose;
+      rr.output_given = render->count("--output") > 0;
+      rr.camera_given = render->count("--camera") > 0;
       if (!anim.timeline.empty()) {
         if (!rr.debug.empty()) throw InputError("--debug renders a still: leave out --timeline");
-        anim.output = render->get_option("--output")->count() ? rr.output : "";
-        anim.preset_given = render->get_option("--preset")->count() > 0;
-        anim.glass_given = render->get_option("--glass")->count() > 0;
+        anim.output = rr.output_given ? rr.output : "";
+        anim.preset_given = render->count("--preset") > 0;
+        anim.glass_given = render->count("--glass") > 0;
         return cli::animate(rr, anim);
       }
-      if (anim.fps > 0 || anim.duration > 0 || anim.progress)
-        throw InputError("--fps, --duration and --progress need --timeline");
+      for (const char* flag : {"--fps", "--duration", "--progress", "--overwrite"})
+        if (render->count(flag)) throw InputError(std::string(flag) + " needs --timeline (it is about animations)");
       return cli::render(rr);
     }
     if (*presets) return cli::list_presets();
     if (*validate) return cli::validate(files);
     if (*params) return cli::print_params(markdown);
-    if (*bench) return cli::bench(frames, sizes, verbose);
+    if (*bench) {
+      cli::check_device_environment();
+      return cli::bench(cli::integer_flag("--frames", frames, 1, 10000), cli::integer_list_flag("--sizes", sizes, 1, 8192),
+                        verbose);
+    }
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "draught: error: %s\n", e.what());
+    // Capped: a message is never a flood, and never ends inside a UTF-8 character.
+    std::fprintf(stderr, "draught: error: %s\n", shorten(e.what(), 4 * kEchoPathBytes).c_str());
     return 1;
   }
   return 0;

@@ -86,10 +86,22 @@ RenderTarget::RenderTarget(int w, int h, bool float_target) {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex_, 0);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    // Say which size failed and why: most often it is larger than the driver allows.
+    const GLenum err = glGetError();
+    GLint max_tex = 0, max_rb = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_tex);
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_rb);
     release();
+    const int limit = std::min(max_tex, max_rb);
+    const std::string size = std::to_string(w) + "x" + std::to_string(h);
+    if (std::max(w, h) > limit)
+      throw std::runtime_error("cannot create an offscreen framebuffer of " + size + " pixels: larger than this GL "
+                               "driver's limit of " + std::to_string(limit) + " pixels a side (GL_MAX_TEXTURE_SIZE " +
+                               std::to_string(max_tex) + ", GL_MAX_RENDERBUFFER_SIZE " + std::to_string(max_rb) + ")");
     throw std::runtime_error(float_target ? "float render targets are not supported by this GL driver "
                                             "(EXT_color_buffer_float); debug views need them"
-                                          : "cannot create an offscreen framebuffer");
+                                          : "cannot create an offscreen framebuffer of " + size + " pixels: " +
+                                                (err == GL_OUT_OF_MEMORY ? "out of GPU memory" : "refused by the GL driver"));
   }
 }
 

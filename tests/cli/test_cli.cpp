@@ -58,8 +58,8 @@ TEST_F(Info, RenderHelpListsOptions) {
 
 TEST_F(Info, NoSubcommandIsAnError) {
   auto r = draught({});
-  EXPECT_NE(r.exit_code, 0) << r.describe();
-  EXPECT_TRUE(contains(r.err, "subcommand")) << r.describe();
+  EXPECT_EQ(r.exit_code, 1) << r.describe();
+  EXPECT_TRUE(contains(r.err, "draught: error: expected a command: render, presets")) << r.describe();
 }
 
 TEST_F(Info, UnknownOptionIsAnError) {

@@ -228,8 +228,8 @@ std::string expected_text(const ParamDesc& d) {
       return s;
     }
     case ParamType::Curve:
-      return "at least 2 points [r, y] with r in [" + fmt(d.min) + ", " + fmt(d.max) +
-             "], y starting at 0 and strictly increasing up to at most " + fmt(d.max);
+      return "2 to 32 points [r, y] with r in [" + fmt(d.min) + ", " + fmt(d.max) +
+             "], y starting at 0 and strictly increasing up to at most " + fmt(d.max) + " (a glass at least 0.02 m tall)";
   }
   return "?";
 }

@@ -3,6 +3,7 @@
 #include "core/io/files.hpp"
 #include "core/params/json_input.hpp"
 #include "core/vessel/vessel.hpp"
+#include "core/text/echo.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -138,7 +139,7 @@ Preset parse_preset(const std::string& text, const std::string& file) {
                      ", got " + short_dump(j["draught_preset"]));
   p.kind = str_field("kind", true);
   if (p.kind != "glass" && p.kind != "drink" && p.kind != "scene")
-    throw InputError(file + ": field 'kind': expected \"glass\", \"drink\" or \"scene\", got \"" + p.kind + "\"");
+    throw InputError(file + ": field 'kind': expected \"glass\", \"drink\" or \"scene\", got " + quote_input(p.kind));
   p.name = str_field("name", true);
   p.description = str_field("description", false);
   p.suggested_glass = str_field("suggested_glass", false);
@@ -203,18 +204,21 @@ std::vector<std::filesystem::path> preset_dirs() {
 
 std::filesystem::path find_preset(const std::string& name, const std::string& kind) {
   if (name.find('/') != std::string::npos || name.ends_with(".json")) {
-    if (!std::filesystem::exists(name)) throw InputError(name + ": no such preset file");
+    std::error_code ec;  // a name too long for a path is no file either
+    if (!std::filesystem::exists(name, ec)) throw InputError(shorten(name, kEchoPathBytes) + ": no such preset file");
     return name;
   }
   std::string tried;
   for (auto& dir : preset_dirs()) {
     for (const std::string& sub : {kind == "glass" ? std::string("glasses") : kind + "s", std::string("scenes")}) {
       auto p = dir / sub / (name + ".json");
-      if (std::filesystem::exists(p)) return p;
+      std::error_code ec;
+      if (std::filesystem::exists(p, ec)) return p;
       tried += (tried.empty() ? "" : ", ") + p.string();
     }
   }
-  throw InputError("no " + kind + " preset named '" + name + "' (looked for " + tried +
+  if (name.size() > kEchoBytes) tried = "the preset folders";  // a long name (from a file?) is not repeated
+  throw InputError("no " + kind + " preset named '" + shorten(name) + "' (looked for " + tried +
                    "); `draught presets` lists them");
 }
 

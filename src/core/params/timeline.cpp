@@ -5,6 +5,7 @@
 #include "core/params/preset.hpp"
 #include "core/scene/frame.hpp"
 #include "core/sim/scene_simulation.hpp"
+#include "core/text/echo.hpp"
 #include "core/sim/simulation.hpp"
 
 #include <algorithm>
@@ -93,7 +94,7 @@ TimelineAction parse_action(const Reader& r, const json& a, const std::string& a
   act.at = r.number(a, "at", at + ".at", 0, 3600, " (seconds)", &zero);
   if (a.contains("ease")) {
     const std::string e = r.string(a, "ease", at + ".ease");
-    if (e != "smooth" && e != "linear") r.fail(at + ".ease", "expected \"smooth\" or \"linear\", got \"" + e + "\"");
+    if (e != "smooth" && e != "linear") r.fail(at + ".ease", "expected \"smooth\" or \"linear\", got " + quote_input(e));
     act.linear = e == "linear";
   }
   auto duration = [&](double lo, const double* def) {
@@ -134,16 +135,16 @@ TimelineAction parse_action(const Reader& r, const json& a, const std::string& a
     try {
       split = split_object_path(path);
     } catch (const ParamError& e) {
-      r.fail(f + "param", "expected " + e.expected + ", got \"" + path + "\"");
+      r.fail(f + "param", "expected " + e.expected + ", got " + quote_input(path));
     }
     act.param = find_param(split.param);
-    if (!act.param) r.fail(f + "param", unknown_param_message(std::string(split.param)));
+    if (!act.param) r.fail(f + "param", unknown_param_message(shorten(std::string(split.param))));
     if (split.object >= 0) {
       if (a.contains("object"))
         r.fail(f + "object", "the param \"" + path + "\" already names its object: give one or the other");
       if (split.object >= kMaxSceneObjects)
         r.fail(f + "param", "expected an object index from 0 to " + std::to_string(kMaxSceneObjects - 1) +
-                                " in objects[N], got \"" + path + "\"");
+                                " in objects[N], got " + quote_input(path));
       act.object = split.object;
       act.object_field = f + "param";
     }
@@ -157,7 +158,7 @@ TimelineAction parse_action(const Reader& r, const json& a, const std::string& a
     check_keys(r, a, f, {"at", "action", "object"});
     act.kind = TimelineAction::Kind::Pour;
   } else {
-    r.fail(at + ".action", "expected one of tilt, rotate, shake, sip, orbit, set, pour, got \"" + kind + "\"");
+    r.fail(at + ".action", "expected one of tilt, rotate, shake, sip, orbit, set, pour, got " + quote_input(kind));
   }
   parse_object(r, a, at, act);
   return act;

@@ -91,7 +91,7 @@ TEST(PresetErrors, WrongType) {
   EXPECT_TRUE(contains(parse_error(R"({ "kind": "scene", "name": "s", "params": { "render": { "tonemap": 1 } } })"),
                        {"x.json", "render.tonemap", "one of \"none\", \"aces\""}));
   EXPECT_TRUE(contains(parse_error(R"({ "kind": "glass", "name": "g", "params": { "glass": { "profile": [0.03, 0.1] } } })"),
-                       {"x.json", "glass.profile", "at least 2 points"}));
+                       {"x.json", "glass.profile", "2 to 32 points"}));
   EXPECT_TRUE(contains(parse_error(R"({ "kind": 3, "name": "g" })"), {"x.json", "'kind'", "expected a string"}));
   EXPECT_TRUE(contains(parse_error(R"({ "kind": "glass", "name": "g", "params": [] })"),
                        {"x.json", "'params'", "expected an object"}));

@@ -1,0 +1,186 @@
+#include "encoder.hpp"
+
+#include "cleanup.hpp"
+#include "core/io/files.hpp"
+#include "core/io/temporaries.hpp"
+
+#include <fcntl.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+
+namespace draught::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string find_on_path(const std::string& exe) {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "/usr/bin:/bin";
+  for (size_t start = 0; start <= dirs.size();) {
+    size_t end = dirs.find(':', start);
+    if (end == std::string::npos) end = dirs.size();
+    const fs::path candidate = fs::path(dirs.substr(start, end - start)) / exe;
+    if (access(candidate.c_str(), X_OK) == 0) return candidate.string();
+    start = end + 1;
+  }
+  return "";
+}
+
+// Starts `args` with stdin from `in` (or /dev/null when -1). The child dies with us
+// (PR_SET_PDEATHSIG) and sits in its own process group. Throws if exec fails.
+pid_t spawn(const std::vector<std::string>& args, int in) {
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  int status_pipe[2];  // carries exec's errno; closed by a successful exec (O_CLOEXEC)
+  if (pipe2(status_pipe, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid == 0) {  // the child: async-signal-safe calls only until exec
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(127);  // the parent died before prctl
+    setpgid(0, 0);
+    const int fd = in >= 0 ? in : open("/dev/null", O_RDONLY);
+    if (fd < 0 || dup2(fd, 0) < 0) _exit(127);
+    execv(argv[0], argv.data());
+    const int err = errno;
+    (void)!write(status_pipe[1], &err, sizeof err);
+    _exit(127);
+  }
+  close(status_pipe[1]);
+  if (pid < 0) {
+    close(status_pipe[0]);
+    throw std::runtime_error(std::string("cannot start ffmpeg: fork: ") + std::strerror(errno));
+  }
+  int err = 0;
+  ssize_t n;
+  while ((n = read(status_pipe[0], &err, sizeof err)) < 0 && errno == EINTR) {
+  }
+  close(status_pipe[0]);
+  if (n > 0) {
+    waitpid(pid, nullptr, 0);
+    throw std::runtime_error("cannot start " + args[0] + ": " + std::strerror(err));
+  }
+  return pid;
+}
+
+}  // namespace
+
+Encoder::Encoder(const fs::path& dest, const std::string& shown, int w, int h, double fps)
+    : dest_(dest), shown_(shown) {
+  const char* pinned = std::getenv("DRAUGHT_FFMPEG");
+  if (pinned && *pinned && access(pinned, X_OK) != 0)
+    throw InputError("-o " + shown + ": DRAUGHT_FFMPEG=" + pinned + " is not an executable ffmpeg");
+  ffmpeg_ = pinned && *pinned ? std::string(pinned) : find_on_path("ffmpeg");
+  if (ffmpeg_.empty())
+    throw InputError("-o " + shown +
+                     ": ffmpeg was not found on PATH (Debian: apt install ffmpeg); or write PNG frames with -o DIR/");
+  gif_ = dest.extension() == ".gif";
+  part_ = temporary();
+  char size[32], rate[32];
+  std::snprintf(size, sizeof size, "%dx%d", w, h);
+  std::snprintf(rate, sizeof rate, "%g", fps);
+  std::vector<std::string> args = {ffmpeg_, "-nostdin", "-y", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt",
+                                   "rgba", "-s", size, "-r", rate, "-i", "-"};
+  if (gif_) {  // lossless, so the palette and the GIF see exactly the rendered frames
+    frames_ = temporary();
+    palette_ = temporary();
+    args.insert(args.end(), {"-c:v", "ffv1", "-f", "nut", frames_.string()});
+  } else {
+    args.insert(args.end(), {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf",
+                             "18", "-movflags", "+faststart", "-f", "mp4", part_.string()});
+  }
+  int fds[2];
+  if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  try {
+    pid_ = spawn(args, fds[0]);
+  } catch (...) {
+    close(fds[0]);
+    close(fds[1]);
+    remove_temporaries();
+    throw;
+  }
+  set_child_process(pid_);
+  close(fds[0]);
+  fd_ = fds[1];
+  std::signal(SIGPIPE, SIG_IGN);  // a dying ffmpeg makes write() fail instead of killing us
+}
+
+Encoder::~Encoder() {
+  if (fd_ >= 0) close(fd_);
+  if (pid_ > 0) {  // unfinished (an error): stop it rather than let it complete a file
+    kill(pid_, SIGKILL);
+    waitpid(pid_, nullptr, 0);
+    set_child_process(0);
+  }
+  remove_temporaries();
+}
+
+fs::path Encoder::temporary() {
+  fs::path p = temporary_path_beside(dest_);
+  temporary_created(p, false);
+  temporaries_.push_back(p);
+  return p;
+}
+
+void Encoder::remove_temporaries() {
+  for (auto& p : temporaries_) {
+    std::error_code ec;
+    fs::remove(p, ec);
+    temporary_gone(p);
+  }
+  temporaries_.clear();
+}
+
+void Encoder::write(const Image& img) {
+  const std::uint8_t* p = img.rgba.data();
+  size_t left = img.rgba.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd_, p, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw std::runtime_error("ffmpeg stopped reading frames for " + shown_ + " (see its message above)");
+    p += n, left -= size_t(n);
+  }
+}
+
+void Encoder::wait_for_child(const char* what) {
+  int status = 0;
+  while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+  }
+  pid_ = -1;
+  set_child_process(0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("ffmpeg failed " + std::string(what) + " " + shown_ + " (see its message above)");
+}
+
+void Encoder::run_to_end(std::vector<std::string> args) {
+  args.insert(args.begin(), {ffmpeg_, "-nostdin", "-y", "-loglevel", "error"});
+  pid_ = spawn(args, -1);
+  set_child_process(pid_);
+  wait_for_child("writing");
+}
+
+void Encoder::finish() {
+  close(fd_);
+  fd_ = -1;
+  wait_for_child("writing");
+  if (gif_) {  // one palette for the whole clip keeps the colours of the drink
+    run_to_end({"-i", frames_.string(), "-vf", "palettegen=stats_mode=full", "-c:v", "rawvideo", "-f", "nut",
+                palette_.string()});
+    run_to_end({"-i", frames_.string(), "-i", palette_.string(), "-lavfi", "[0:v][1:v]paletteuse=dither=sierra2_4a",
+                "-loop", "0", "-f", "gif", part_.string()});
+  }
+  std::error_code ec;
+  fs::rename(part_, dest_, ec);
+  if (ec) throw InputError("-o " + shown_ + ": cannot write: " + ec.message());
+  remove_temporaries();  // the rest; part_ is gone already
+}
+
+}  // namespace draught::cli
