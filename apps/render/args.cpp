@@ -21,14 +21,14 @@ std::string fmt(double v) {
 
 std::string join_words(const std::vector<std::string>& words, const char* last_sep) {
   std::string s;
-  for (size_t i = 0; i < words.size(); ++i)
-    s += (i == 0 ? "" : i + 1 == words.size() ? last_sep : ", ") + words[i];
+  for (size_t i = 0; i < words.size(); ++i) s += (i == 0 ? "" : i + 1 == words.size() ? last_sep : ", ") + words[i];
   return s;
 }
 
 std::vector<std::string> verbs(const CLI::App& app) {
   std::vector<std::string> names;
-  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    names.push_back(sub->get_name());
   return names;
 }
 
@@ -89,8 +89,7 @@ std::string explain_parse_error(const CLI::App& app, const CLI::ParseError& e) {
   if (kind == "ExtrasError" || (kind == "RequiredError" && &cmd == &app && app.remaining_size(true) > 0))
     return explain_extras(app);
   if (kind == "RequiredError") {
-    if (&cmd == &app)
-      return "expected a command: " + join_words(verbs(app), " or ") + " (`draught --help` says more)";
+    if (&cmd == &app) return "expected a command: " + join_words(verbs(app), " or ") + " (`draught --help` says more)";
     if (cmd.get_name() == "validate")
       return "validate: expected one or more preset or timeline files, e.g. draught validate my-drink.json";
   }
@@ -154,8 +153,8 @@ void check_device_environment() {
   const std::string v = env;
   const std::vector<std::string> valid = {"software", "hardware", "auto"};
   if (std::find(valid.begin(), valid.end(), v) == valid.end())
-    throw InputError("DRAUGHT_DEVICE=" + shorten(v) + ": expected software, hardware or auto" +
-                     did_you_mean(v, valid) + " (or leave it unset)");
+    throw InputError("DRAUGHT_DEVICE=" + shorten(v) + ": expected software, hardware or auto" + did_you_mean(v, valid) +
+                     " (or leave it unset)");
 }
 
 }  // namespace draught::cli

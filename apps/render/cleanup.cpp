@@ -86,8 +86,10 @@ void on_signal(int sig) {
   }
   for (Slot& slot : g_slots) {
     const int s = slot.state.load(std::memory_order_acquire);
-    if (s == File) ::unlink(slot.path);
-    else if (s == Folder) remove_folder(slot.path);
+    if (s == File)
+      ::unlink(slot.path);
+    else if (s == Folder)
+      remove_folder(slot.path);
   }
   errno = saved;
   // Die of the signal (exit status 128 + sig, as the shell expects): the raised signal

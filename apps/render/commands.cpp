@@ -54,7 +54,8 @@ void check_camera(const SceneParams& p, bool camera_given) {
 
 int render(const RenderRequest& req) {
   std::filesystem::path out(req.output);
-  if (out.extension() != ".png") throw InputError("-o " + shorten(req.output, kEchoPathBytes) + ": expected a file name ending in .png");
+  if (out.extension() != ".png")
+    throw InputError("-o " + shorten(req.output, kEchoPathBytes) + ": expected a file name ending in .png");
   gpu::DebugView view = gpu::DebugView::None;
   if (req.debug == "depth") view = gpu::DebugView::Depth;
   else if (req.debug == "normal") view = gpu::DebugView::Normal;

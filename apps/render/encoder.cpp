@@ -88,7 +88,7 @@ Encoder::Encoder(const fs::path& dest, const std::string& shown, int w, int h, d
   std::snprintf(size, sizeof size, "%dx%d", w, h);
   std::snprintf(rate, sizeof rate, "%g", fps);
   std::vector<std::string> args = {ffmpeg_, "-nostdin", "-y", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt",
-                                   "rgba", "-s", size, "-r", rate, "-i", "-"};
+                                   "rgba",  "-s",       size, "-r",        rate,    "-i", "-"};
   if (gif_) {  // lossless, so the palette and the GIF see exactly the rendered frames
     frames_ = temporary();
     palette_ = temporary();

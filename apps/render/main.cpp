@@ -108,8 +108,8 @@ int main(int argc, char** argv) {
     if (*params) return cli::print_params(markdown);
     if (*bench) {
       cli::check_device_environment();
-      return cli::bench(cli::integer_flag("--frames", frames, 1, 10000), cli::integer_list_flag("--sizes", sizes, 1, 8192),
-                        verbose);
+      return cli::bench(cli::integer_flag("--frames", frames, 1, 10000),
+                        cli::integer_list_flag("--sizes", sizes, 1, 8192), verbose);
     }
   } catch (const std::exception& e) {
     // Capped: a message is never a flood, and never ends inside a UTF-8 character.

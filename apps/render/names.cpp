@@ -47,15 +47,16 @@ fs::path preset_file(const std::string& name, const std::string& kind, const std
     if (is_path(name)) throw InputError(what + " " + e.what());
     const char* sub = kind == "glass" ? "glasses" : "drinks";
     throw InputError(what + " " + shorten(name) + ": no " + kind + " preset named " + quote_input(name) +
-                     did_you_mean(name, names_in({sub, "scenes"})) + " (looked for " + looked_for(name, {sub, "scenes"}) +
-                     "); `draught presets` lists them");
+                     did_you_mean(name, names_in({sub, "scenes"})) + " (looked for " +
+                     looked_for(name, {sub, "scenes"}) + "); `draught presets` lists them");
   }
 }
 
 fs::path timeline_file(const std::string& name) {
   if (is_path(name)) {
     std::error_code ec;
-    if (!fs::exists(name, ec)) throw InputError("--timeline " + shorten(name, kEchoPathBytes) + ": no such timeline file");
+    if (!fs::exists(name, ec))
+      throw InputError("--timeline " + shorten(name, kEchoPathBytes) + ": no such timeline file");
     return name;
   }
   for (auto& dir : preset_dirs()) {
@@ -64,7 +65,8 @@ fs::path timeline_file(const std::string& name) {
     if (fs::exists(p, ec)) return p;
   }
   throw InputError("--timeline " + shorten(name) + ": no timeline named " + quote_input(name) +
-                   did_you_mean(name, names_in({"timelines"})) + " (looked for " + looked_for(name, {"timelines"}) + ")");
+                   did_you_mean(name, names_in({"timelines"})) + " (looked for " + looked_for(name, {"timelines"}) +
+                   ")");
 }
 
 }  // namespace draught::cli

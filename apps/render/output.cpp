@@ -79,9 +79,10 @@ SequenceFolder::SequenceFolder(const fs::path& dest, const std::string& shown, b
       ++count;
     }
     if (!foreign.empty())
-      throw InputError("-o " + shown + ": the folder is not empty (it holds " + foreign +
-                       (count > 1 ? " and " + std::to_string(count - 1) + " more" : std::string()) +
-                       "); add --overwrite to replace all of its contents with the new frames, or choose another folder");
+      throw InputError(
+          "-o " + shown + ": the folder is not empty (it holds " + foreign +
+          (count > 1 ? " and " + std::to_string(count - 1) + " more" : std::string()) +
+          "); add --overwrite to replace all of its contents with the new frames, or choose another folder");
   }
   fs::create_directories(dest_.parent_path(), ec);
   if (ec) throw InputError("-o " + shown + ": cannot create " + dest_.parent_path().string() + ": " + ec.message());
@@ -89,8 +90,8 @@ SequenceFolder::SequenceFolder(const fs::path& dest, const std::string& shown, b
   temporary_created(tmp_, true);
   if (!fs::create_directory(tmp_, ec) || ec) {
     temporary_gone(tmp_);
-    throw InputError("-o " + shown + ": cannot create a folder beside it: " +
-                     (ec ? ec.message() : std::string("it exists")));
+    throw InputError("-o " + shown +
+                     ": cannot create a folder beside it: " + (ec ? ec.message() : std::string("it exists")));
   }
 }
 

@@ -52,8 +52,9 @@ bool valid_utf8(const std::string& s) {
 TEST_F(Hostile, DeeplyNestedDescriptionIsRefusedNotACrash) {
   // 100,000 nested arrays crashed the CLI (stack overflow while echoing the value).
   const fs::path f = input("deep.json", drink_with("\"description\": " + nested(100000)));
-  for (auto args : {std::vector<std::string>{"validate", f.string()},
-                    std::vector<std::string>{"render", "--size", "16x16", "--preset", f.string(), "-o", png().string()}}) {
+  for (auto args :
+       {std::vector<std::string>{"validate", f.string()},
+        std::vector<std::string>{"render", "--size", "16x16", "--preset", f.string(), "-o", png().string()}}) {
     auto r = draught(args);
     expect_invalid(r, {f.string() + ": field 'description': nested more than 256 levels deep"});
     EXPECT_LT(r.err.size(), 400u) << "the message repeats the value";
@@ -62,9 +63,11 @@ TEST_F(Hostile, DeeplyNestedDescriptionIsRefusedNotACrash) {
 
 TEST_F(Hostile, DeeplyNestedParameterAndTimelineValues) {
   const fs::path p = input("fill.json", drink_with(R"("params": { "liquid": { "fill": )" + nested(60000) + " } }"));
-  expect_invalid(draught({"validate", p.string()}), {p.string() + ": field 'params.liquid.fill': nested more than 256"});
+  expect_invalid(draught({"validate", p.string()}),
+                 {p.string() + ": field 'params.liquid.fill': nested more than 256"});
   const fs::path t = input("t.json", R"({ "draught_timeline": 1, "actions": [
-      { "at": 0, "action": "set", "param": "liquid.srm", "value": )" + nested(60000) + " } ] }");
+      { "at": 0, "action": "set", "param": "liquid.srm", "value": )" +
+                                         nested(60000) + " } ] }");
   expect_error(draught({"render", "--timeline", t.string(), "--size", "16x16", "-o", (out() / "f").string() + "/"}),
                {t.string() + ": field 'actions[0].value': nested more than 256"});
 }
@@ -122,7 +125,8 @@ TEST_F(Hostile, UnknownVerbSuggestsTheNearest) {
   auto r = draught({"rendr", "--preset", "lager"});
   expect_error(r, {"draught: error: unknown command \"rendr\" (did you mean 'render'?)", "presets, validate"});
   EXPECT_FALSE(contains(r.err, "subcommand is required")) << r.describe();
-  expect_error(draught({"coffee"}), {"unknown command \"coffee\"; expected render, presets, validate, params or bench"});
+  expect_error(draught({"coffee"}),
+               {"unknown command \"coffee\"; expected render, presets, validate, params or bench"});
 }
 
 TEST_F(Hostile, UnknownFlagSuggestsTheNearest) {
@@ -195,7 +199,8 @@ TEST_F(Hostile, LimitsAreNamedInTheMessagesThatEnforceThem) {
   std::string points;
   for (int i = 0; i < 33; ++i) points += std::string(i ? "," : "") + "[0.03, " + std::to_string(i * 0.005) + "]";
   const fs::path g = input("g.json", R"({ "draught_preset": 1, "kind": "glass", "name": "g",
-      "params": { "glass": { "profile": [)" + points + "] } } }");
+      "params": { "glass": { "profile": [)" +
+                                         points + "] } } }");
   expect_invalid(draught({"validate", g.string()}), {g.string(), "glass.profile", "2 to 32 points"});
   const fs::path s = input("s.json", R"({ "draught_preset": 1, "kind": "glass", "name": "g",
       "params": { "glass": { "profile": [[0.03, 0], [0.03, 0.01]] } } })");

@@ -30,8 +30,8 @@ std::filesystem::path temporary_path_beside(const std::filesystem::path& target)
   static const unsigned token = std::random_device{}() & 0xFFFFFFu;
   static std::atomic<unsigned> counter{0};
   char name[64];
-  std::snprintf(name, sizeof name, "%.*s%ld-%u-%06x", int(kPrefix.size()), kPrefix.data(), long(::getpid()),
-                counter++, token);
+  std::snprintf(name, sizeof name, "%.*s%ld-%u-%06x", int(kPrefix.size()), kPrefix.data(), long(::getpid()), counter++,
+                token);
   return target.parent_path() / name;
 }
 

@@ -18,7 +18,8 @@ namespace {
 void dump_bounded(const json& j, std::string& out, std::size_t limit) {
   if (out.size() > limit) return;
   auto string_text = [&](const std::string& s) {  // only the part that can show
-    out += json(std::string(utf8_prefix(s, limit - out.size() + 1))).dump(-1, ' ', false, json::error_handler_t::replace);
+    const json part = std::string(utf8_prefix(s, limit - out.size() + 1));
+    out += part.dump(-1, ' ', false, json::error_handler_t::replace);
   };
   if (j.is_object()) {
     out += '{';

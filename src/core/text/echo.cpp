@@ -39,7 +39,8 @@ std::string make_valid_utf8(std::string_view s) {
     const auto c = static_cast<unsigned char>(s[i]);
     std::size_t n = sequence_length(c);
     bool ok = c < 0x80 || n > 1;
-    for (std::size_t k = 1; ok && k < n; ++k) ok = i + k < s.size() && is_continuation(static_cast<unsigned char>(s[i + k]));
+    for (std::size_t k = 1; ok && k < n; ++k)
+      ok = i + k < s.size() && is_continuation(static_cast<unsigned char>(s[i + k]));
     // Overlong forms, surrogates and code points past U+10FFFF are not UTF-8 either.
     if (ok && n == 3) {
       const auto c1 = static_cast<unsigned char>(s[i + 1]);

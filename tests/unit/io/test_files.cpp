@@ -76,9 +76,7 @@ TEST_F(Files, RefusesAFifoWithoutWaitingForAWriter) {
 
 TEST_F(Files, RefusesFilesOverTheSizeLimit) {
   const fs::path big = dir_ / "big.json";
-  {
-    std::ofstream(big) << "{}";
-  }
+  { std::ofstream(big) << "{}"; }
   fs::resize_file(big, kMaxTextFileBytes + 1);  // sparse: costs no disk
   const std::string e = error_of([&] { read_text_file(big); });
   EXPECT_TRUE(has(e, big.string() + ": 16.0 MiB, larger than the limit of 16 MiB")) << e;
@@ -97,7 +95,7 @@ TEST_F(Files, TemporaryNamesAreShortAndCarryThePid) {
 
 TEST_F(Files, TemporaryOwnerOfOldAndNewNames) {
   EXPECT_EQ(temporary_owner(".draught-tmp-4242-0-abcdef"), 4242);
-  EXPECT_EQ(temporary_owner("frame.png.tmp-977"), 977);     // as written by older versions
+  EXPECT_EQ(temporary_owner("frame.png.tmp-977"), 977);  // as written by older versions
   EXPECT_EQ(temporary_owner("drink.json.tmp-31"), 31);
   EXPECT_EQ(temporary_owner("notes.tmp-2024"), std::nullopt);  // a user's file, not ours
   EXPECT_EQ(temporary_owner("x.png"), std::nullopt);

@@ -41,7 +41,8 @@ TEST(JsonLimits, DeepArraysInADescriptionAreRefusedNamingTheField) {
 }
 
 TEST(JsonLimits, DeepValueOfAParameterNamesItsPath) {
-  const std::string e = preset_error(preset_with("\"params\"", R"({ "liquid": { "fill": )" + nested_arrays(5000) + " } }"));
+  const std::string e =
+      preset_error(preset_with("\"params\"", R"({ "liquid": { "fill": )" + nested_arrays(5000) + " } }"));
   EXPECT_TRUE(has(e, "deep.json: field 'params.liquid.fill': nested more than 256")) << e;
 }
 
@@ -59,7 +60,8 @@ TEST(JsonLimits, DeepObjectsAndTopLevelArrays) {
 
 TEST(JsonLimits, DeepValueInATimelineActionNamesTheAction) {
   const std::string text = R"({ "draught_timeline": 1, "actions": [ { "at": 0, "action": "pour" },
-      { "at": 1, "action": "set", "param": "liquid.srm", "value": )" + nested_arrays(10000) + " } ] }";
+      { "at": 1, "action": "set", "param": "liquid.srm", "value": )" +
+                           nested_arrays(10000) + " } ] }";
   try {
     parse_timeline(text, "t.json");
     FAIL() << "accepted";
@@ -86,7 +88,8 @@ TEST(JsonLimits, LongKeysAreRefusedBeforeTheyAreEchoed) {
   EXPECT_TRUE(has(e, "limit of 128 bytes")) << e.substr(0, 300);
   EXPECT_LT(e.size(), 400u);
   // A key at the limit is just an unknown key.
-  const std::string ok = preset_error(preset_with("\"params\"", R"({ "liquid": { ")" + std::string(128, 'k') + R"(": 1 } })"));
+  const std::string ok =
+      preset_error(preset_with("\"params\"", R"({ "liquid": { ")" + std::string(128, 'k') + R"(": 1 } })"));
   EXPECT_TRUE(has(ok, "unknown parameter")) << ok.substr(0, 300);
 }
 

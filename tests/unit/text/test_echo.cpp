@@ -23,7 +23,9 @@ bool valid_utf8(std::string_view s) {
 
 TEST(Echo, Utf8PrefixNeverSplitsACharacter) {
   // 1-, 2-, 3- and 4-byte characters in a row, cut at every length.
-  const std::string s = "a\xC3\xA9\xE2\x82\xAC\xF0\x9F\x8D\xBA" "b\xC3\xA9\xE2\x82\xAC\xF0\x9F\x8D\xBA";  // aé€🍺bé€🍺
+  const std::string s =
+      "a\xC3\xA9\xE2\x82\xAC\xF0\x9F\x8D\xBA"
+      "b\xC3\xA9\xE2\x82\xAC\xF0\x9F\x8D\xBA";  // aé€🍺bé€🍺
   ASSERT_TRUE(valid_utf8(s));
   for (size_t n = 0; n <= s.size() + 1; ++n) {
     const std::string_view p = utf8_prefix(s, n);
@@ -49,10 +51,10 @@ TEST(Echo, MakeValidUtf8ReplacesWhatIsNotUtf8) {
   EXPECT_EQ(make_valid_utf8(ok), ok);
   const std::string fffd = "\xEF\xBF\xBD";
   EXPECT_EQ(make_valid_utf8("x\xFFy"), "x" + fffd + "y");
-  EXPECT_EQ(make_valid_utf8("\x80"), fffd);                      // a stray continuation byte
-  EXPECT_EQ(make_valid_utf8("e\xE2\x82"), "e" + fffd + fffd);   // a truncated euro sign
-  EXPECT_EQ(make_valid_utf8("\xC0\xAF"), fffd + fffd);           // an overlong '/'
-  EXPECT_EQ(make_valid_utf8("\xED\xA0\x80"), fffd + fffd + fffd);  // a UTF-16 surrogate
+  EXPECT_EQ(make_valid_utf8("\x80"), fffd);                                   // a stray continuation byte
+  EXPECT_EQ(make_valid_utf8("e\xE2\x82"), "e" + fffd + fffd);                 // a truncated euro sign
+  EXPECT_EQ(make_valid_utf8("\xC0\xAF"), fffd + fffd);                        // an overlong '/'
+  EXPECT_EQ(make_valid_utf8("\xED\xA0\x80"), fffd + fffd + fffd);             // a UTF-16 surrogate
   EXPECT_EQ(make_valid_utf8("\xF4\x90\x80\x80"), fffd + fffd + fffd + fffd);  // past U+10FFFF
   for (int b = 0; b < 256; ++b) EXPECT_TRUE(valid_utf8(make_valid_utf8(std::string(1, char(b)) + "\xE2"))) << b;
 }
