@@ -89,6 +89,20 @@ void BM_ReferenceFirstHit(benchmark::State& state) {
 }
 BENCHMARK(BM_ReferenceFirstHit);
 
+// Loading a timeline of N tilts (parse, validate, chain the tilts): linear in N, so the
+// time per tilt stays flat from 1,000 to 100,000.
+void BM_ParseTimelineTilts(benchmark::State& state) {
+  const int n = int(state.range(0));
+  std::string text = R"({"draught_timeline": 1, "name": "many", "duration": 600, "actions": [)";
+  for (int i = 0; i < n; ++i)
+    text += (i ? "," : "") + std::string(R"({"at": )") + std::to_string(i * 0.005) +
+            R"(, "action": "tilt", "angle": )" + std::to_string(i % 30) + R"(, "duration": 0.002})";
+  text += "]}";
+  for (auto _ : state) benchmark::DoNotOptimize(parse_timeline(text, "many.json"));
+  state.SetItemsProcessed(state.iterations() * n);
+}
+BENCHMARK(BM_ParseTimelineTilts)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -167,16 +167,15 @@ TimelineAction parse_action(const Reader& r, const json& a, const std::string& a
 glm::dvec2 lean_target(const TimelineAction& a) { return a.angle * glm::dvec2(std::cos(a.toward), std::sin(a.toward)); }
 
 // The lean of `object` at time t, each tilt starting from from[i].
-glm::dvec2 lean_with(const std::vector<TimelineAction>& actions, const std::vector<glm::dvec2>& from, double t,
-                     int object) {
-  glm::dvec2 lean(0.0);
-  for (size_t i = 0; i < actions.size(); ++i) {
-    const TimelineAction& a = actions[i];
-    if (a.at > t) break;
-    if (a.kind == TimelineAction::Kind::Tilt && Timeline::drives(a, object))
-      lean = glm::mix(from[i], lean_target(a), progress(a, t));
-  }
-  return lean;
+// The lean at t: the latest tilt that has started sets it, blending from where the glass
+// leaned when that tilt began (`from`) to its target. `order`: the tilts in start order.
+glm::dvec2 lean_with(const std::vector<TimelineAction>& actions, const std::vector<glm::dvec2>& from,
+                     const std::vector<size_t>& order, double t) {
+  const auto started = std::upper_bound(order.begin(), order.end(), t,
+                                        [&](double time, size_t i) { return time < actions[i].at; });
+  if (started == order.begin()) return glm::dvec2(0.0);
+  const size_t k = *(started - 1);
+  return glm::mix(from[k], lean_target(actions[k]), progress(actions[k], t));
 }
 
 // A value of a set action at progress x from `from` (numbers and vectors blend).
@@ -241,12 +240,20 @@ void Timeline::prepare_tilts() {
   for (auto& a : actions)
     if (a.object >= 0 && std::find(views.begin(), views.end(), a.object) == views.end()) views.push_back(a.object);
   tilt_from.clear();
+  tilt_order.clear();
   for (int view : views) {
-    std::vector<glm::dvec2> from(actions.size(), glm::dvec2(0.0));
+    std::vector<size_t> order;
     for (size_t i = 0; i < actions.size(); ++i)
-      if (actions[i].kind == TimelineAction::Kind::Tilt && drives(actions[i], view))
-        from[i] = lean_with(actions, from, actions[i].at, view);
+      if (actions[i].kind == TimelineAction::Kind::Tilt && drives(actions[i], view)) order.push_back(i);
+    // By start time; a later line wins a tie, as it did in file order.
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return actions[a].at < actions[b].at; });
+    std::vector<glm::dvec2> from(actions.size(), glm::dvec2(0.0));
+    for (size_t j = 1; j < order.size(); ++j) {  // one step each: linear in the actions
+      const TimelineAction& prev = actions[order[j - 1]];
+      from[order[j]] = glm::mix(from[order[j - 1]], lean_target(prev), progress(prev, actions[order[j]].at));
+    }
     tilt_from[view] = std::move(from);
+    tilt_order[view] = std::move(order);
   }
 }
 
@@ -255,7 +262,7 @@ glm::dvec2 Timeline::lean_at(double t, int object) const {
   if (view == tilt_from.end()) view = tilt_from.find(-1);
   if (view == tilt_from.end() || view->second.size() != actions.size())
     throw std::logic_error("Timeline::lean_at: prepare_tilts() was not run after the actions changed");
-  return lean_with(actions, view->second, t, object);
+  return lean_with(actions, view->second, tilt_order.at(view->first), t);
 }
 
 double Timeline::spin_at(double t, int object) const {

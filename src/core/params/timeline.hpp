@@ -87,9 +87,11 @@ struct Timeline {
   // The same for a scene: set actions reach every object, or the one they address.
   Scene scene_at(double t, const Scene& base) const;
 
-  // Where each tilt starts, per object that actions address (and -1 for the others):
-  // computed by parse_timeline and bind_timeline.
+  // Where each tilt starts, per object that actions address (and -1 for the others), and
+  // the tilts that drive it in the order they start: computed by parse_timeline and
+  // bind_timeline, in linear time.
   std::map<int, std::vector<glm::dvec2>> tilt_from;
+  std::map<int, std::vector<size_t>> tilt_order;
   void prepare_tilts();
 };
 
