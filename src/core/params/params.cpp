@@ -170,6 +170,8 @@ size_t edit_distance(const std::string& a, const std::string& b) {
 
 }  // namespace
 
+double shortest_double(float v) { return std::strtod(fmt(v).c_str(), nullptr); }
+
 std::string nearest_choice(const std::string& text, const std::vector<std::string>& choices) {
   const std::string* best = nullptr;
   size_t best_d = 4;

@@ -200,6 +200,11 @@ std::string nearest_choice(const std::string& text, const std::vector<std::strin
 
 // Text forms used by --set and `draught params`: "0.8", "true", "1,0.5,0", "aces",
 // "0.03,0;0.035,0.15" for curves.
+// The double whose shortest text is the float's shortest text (0.65f -> 0.65, not
+// 0.6499999761581421): what JSON writers store, so saved files carry no float noise and
+// read back the same float.
+double shortest_double(float);
+
 ParamValue parse_param_text(const ParamDesc&, std::string_view text);
 std::string format_param(const ParamDesc&, const ParamValue&);
 

@@ -244,11 +244,12 @@ json value_json(const ParamValue& v) {
   std::visit(
       [&](auto&& x) {
         using T = std::decay_t<decltype(x)>;
-        if constexpr (std::is_same_v<T, glm::vec3>) val = {x.x, x.y, x.z};
+        if constexpr (std::is_same_v<T, glm::vec3>) val = {shortest_double(x.x), shortest_double(x.y), shortest_double(x.z)};
         else if constexpr (std::is_same_v<T, Curve>) {
           val = json::array();
-          for (auto& q : x) val.push_back({q.x, q.y});
-        } else val = x;
+          for (auto& q : x) val.push_back({shortest_double(q.x), shortest_double(q.y)});
+        } else if constexpr (std::is_same_v<T, float>) val = shortest_double(x);
+        else val = x;
       },
       v);
   return val;
@@ -298,8 +299,9 @@ std::string scene_preset_json(const Scene& scene, const std::string& name, const
     const SceneObject& o = scene.objects[i];
     const Placement& at = o.placement;
     objects.push_back({{"name", o.name},
-                       {"position", {at.position.x, at.position.y, at.position.z}},
-                       {"yaw", at.yaw},
+                       {"position", {shortest_double(at.position.x), shortest_double(at.position.y),
+                                     shortest_double(at.position.z)}},
+                       {"yaw", shortest_double(at.yaw)},
                        {"params", groups_json(vessel_document(scene, int(i)), ParamScope::Vessel)}});
   }
   j["objects"] = objects;

@@ -136,6 +136,25 @@ TEST(ScenePreset, WrittenSceneLoadsBackTheSame) {
   EXPECT_FALSE(back.params.env.floor);
 }
 
+// Saved files carry the shortest text of each value, not float noise (0.65, not
+// 0.6499999761581421), and it reads back as the same float.
+TEST(ScenePreset, SavedValuesAreShortestText) {
+  Params p = default_params();
+  p.liquid.fill = 0.65f;
+  p.light.direction = glm::vec3(-0.55f, 0.75f, 0.45f);
+  const std::string text = preset_json(p, "scene", "short", "", {});
+  EXPECT_NE(text.find("\"fill\": 0.65"), std::string::npos) << text;
+  EXPECT_EQ(text.find("0.6499999"), std::string::npos);
+  EXPECT_EQ(text.find("0.550000"), std::string::npos);
+  EXPECT_NE(text.find("-0.55"), std::string::npos);
+  Params back = default_params();
+  apply_preset(parse_preset(text, "short.json"), back);
+  EXPECT_EQ(back.liquid.fill, p.liquid.fill);
+  EXPECT_EQ(back.light.direction, p.light.direction);
+  EXPECT_EQ(shortest_double(0.1f), 0.1);
+  for (float v : {0.0f, 1e-7f, 0.3f, 1.52f, 1500.0f, 36000.0f, 3.4e38f}) EXPECT_EQ(float(shortest_double(v)), v) << v;
+}
+
 TEST(ScenePreset, ObjectParamsComeAfterGlassAndDrink) {
   const Scene s = scene_from_preset(parse_preset(
       scene_json(R"([{ "name": "x", "glass": "pint", "drink": "lager",
