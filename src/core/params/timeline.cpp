@@ -179,10 +179,16 @@ glm::dvec2 lean_with(const std::vector<TimelineAction>& actions, const std::vect
 }
 
 // A value of a set action at progress x from `from` (numbers and vectors blend).
+// A blend lands exactly on its end value, and rounding on the way never leaves the
+// parameter's range (0.05 + (0.005 - 0.05) * 1 would be 0.004999999, under the minimum).
 ParamValue blended(const TimelineAction& a, const ParamValue& from, double x) {
   ParamValue v = a.value;
-  if (auto* to = std::get_if<float>(&v)) *to = float(std::get<float>(from) + (*to - std::get<float>(from)) * x);
-  if (auto* to = std::get_if<glm::vec3>(&v)) *to = glm::mix(std::get<glm::vec3>(from), *to, float(x));
+  if (x >= 1) return v;
+  const float lo = a.param->min, hi = a.param->max;
+  if (auto* to = std::get_if<float>(&v))
+    *to = std::clamp(float(std::get<float>(from) + (*to - std::get<float>(from)) * x), lo, hi);
+  if (auto* to = std::get_if<glm::vec3>(&v))
+    *to = glm::clamp(glm::mix(std::get<glm::vec3>(from), *to, float(x)), glm::vec3(lo), glm::vec3(hi));
   return v;
 }
 
