@@ -5,6 +5,7 @@
 #include "output.hpp"
 
 #include "core/io/files.hpp"
+#include "core/params/json_input.hpp"
 #include "core/text/echo.hpp"
 #include "core/scene/frame.hpp"
 #include "core/params/preset.hpp"
@@ -101,13 +102,16 @@ int render(const RenderRequest& req) {
 int list_presets() {
   // objects: how many glasses a scene places (one for a scene without objects).
   std::printf("%-6s %-16s %-10s %-7s %s\n", "kind", "name", "glass", "objects", "description");
-  for (const Preset& p : draught::list_presets()) {
+  std::vector<std::string> broken;
+  for (const Preset& p : draught::list_presets(&broken)) {
     const std::string objects =
         p.kind != "scene" ? "-" : std::to_string(p.objects.empty() ? size_t(1) : p.objects.size());
     std::printf("%-6s %-16s %-10s %-7s %s\n", p.kind.c_str(), p.name.c_str(),
                 p.suggested_glass.empty() ? "-" : p.suggested_glass.c_str(), objects.c_str(), p.description.c_str());
   }
-  return 0;
+  // The others are listed; each broken file is named with its error, and the exit says so.
+  for (const std::string& e : broken) std::fprintf(stderr, "draught: error: %s\n", e.c_str());
+  return broken.empty() ? 0 : 1;
 }
 
 namespace {
@@ -138,8 +142,10 @@ int validate(const std::vector<std::string>& files) {
   for (const auto& f : files) {
     try {
       const std::string text = read_text_file(f);
-      // Timelines are told apart by their format key, or by their actions.
-      if (text.find("\"draught_timeline\"") != std::string::npos || text.find("\"actions\"") != std::string::npos) {
+      // Timelines are told apart by their top-level format key, or their actions (a
+      // preset may well be named "actions").
+      const nlohmann::json top = parse_json_file_text(text, f);
+      if (top.is_object() && (top.contains("draught_timeline") || top.contains("actions"))) {
         Timeline t = parse_timeline(text, f);
         check_timeline_scene(t, f);
         std::printf("%s: ok (timeline '%s', %zu actions, %g s)\n", f.c_str(), t.name.c_str(), t.actions.size(),
@@ -155,6 +161,8 @@ int validate(const std::vector<std::string>& files) {
                     scene.objects.size(), values);
         continue;
       }
+      if (!p.suggested_glass.empty())  // what a render would take as its glass must exist
+        preset_file(p.suggested_glass, "glass", f + ": field 'suggested_glass':");
       std::printf("%s: ok (%s '%s', %zu parameters)\n", f.c_str(), p.kind.c_str(), p.name.c_str(), p.values.size());
     } catch (const InputError& e) {
       std::fprintf(stderr, "%s\n", e.what());

@@ -222,7 +222,7 @@ std::filesystem::path find_preset(const std::string& name, const std::string& ki
                    "); `draught presets` lists them");
 }
 
-std::vector<Preset> list_presets() {
+std::vector<Preset> list_presets(std::vector<std::string>* broken) {
   std::vector<Preset> out;
   for (auto& dir : preset_dirs()) {
     for (const char* sub : {"glasses", "drinks", "scenes"}) {
@@ -231,9 +231,16 @@ std::vector<Preset> list_presets() {
       for (auto& e : std::filesystem::directory_iterator(dir / sub, ec))
         if (e.path().extension() == ".json") files.push_back(e.path());
       std::sort(files.begin(), files.end());
-      for (auto& f : files) out.push_back(load_preset(f));
+      for (auto& f : files) {
+        try {
+          out.push_back(load_preset(f));
+        } catch (const InputError& e) {
+          if (!broken) throw;
+          broken->push_back(e.what());
+        }
+      }
     }
-    if (!out.empty()) break;  // the first directory that has presets wins
+    if (!out.empty() || (broken && !broken->empty())) break;  // the first directory that has presets wins
   }
   return out;
 }

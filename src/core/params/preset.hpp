@@ -75,7 +75,10 @@ std::vector<std::filesystem::path> preset_dirs();
 // A name ("lager") is looked up in the preset directories under <kind>s/; anything with
 // a '/' or ending in .json is a path.
 std::filesystem::path find_preset(const std::string& name_or_path, const std::string& kind);
-std::vector<Preset> list_presets();
+// Every preset in the first preset directory that has any. A file that does not load is
+// left out of the list and its error appended to `broken` (when given), so one bad file
+// does not hide the others.
+std::vector<Preset> list_presets(std::vector<std::string>* broken = nullptr);
 
 // Serialises the given parameter groups ("glass", "liquid", ...; empty = all) of p.
 std::string preset_json(const Params& p, const std::string& kind, const std::string& name,
