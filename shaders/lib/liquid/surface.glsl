@@ -1,0 +1,84 @@
+// The drink's surface in the loaded vessel: a plane dot(n, p) = offset (volume-true and
+// rim-clamped, computed by core: VesselFrame::liquid) plus the slosh waves. Twin of
+// core/liquid/slosh.cpp (SurfaceWaves) and core/reference/intersect.cpp
+// (hit_liquid_surface, LiquidPlane::level).
+#ifndef LIB_LIQUID_SURFACE_GLSL
+#define LIB_LIQUID_SURFACE_GLSL
+#include "lib/scene/objects.glsl"
+#include "lib/vessel/intersect.glsl"
+
+// The renderer compiles the path pass twice: with SURFACE_WAVES 1 when some surface of
+// the frame moves and 0 otherwise, which then carries no wave code at all (software
+// rasterizers pay for code even where a branch skips it; still drinks are the common case).
+#ifndef SURFACE_WAVES
+#define SURFACE_WAVES 0
+#endif
+
+// Beyond 1.25 radii the shapes hold their value there (as core/liquid/slosh.cpp).
+float wave_height(ObjectLiquid lq, vec2 xz) {
+  vec2 q = xz / lq.wave_radius;
+  float u2 = dot(q, q);
+  if (u2 > 1.5625) {
+    q *= 1.25 / sqrt(u2);
+    u2 = 1.5625;
+  }
+  return lq.wave_ring * (1.0 - 3.0 * u2 + 1.5 * u2 * u2) + lq.wave_cross.x * (q.x * q.x - q.y * q.y) +
+         lq.wave_cross.y * 2.0 * q.x * q.y;
+}
+
+vec2 wave_gradient(vec2 xz) {
+  vec2 q = xz / g_liquid.wave_radius;
+  float len = length(q);
+  bool held = len > 1.25;  // chain rule through the pull-in (as core/liquid/slosh.cpp)
+  vec2 c = held ? q * (1.25 / len) : q;
+  float dr = g_liquid.wave_ring * (-6.0 + 6.0 * dot(c, c));
+  vec2 g = vec2(dr * c.x + 2.0 * g_liquid.wave_cross.x * c.x + 2.0 * g_liquid.wave_cross.y * c.y,
+                dr * c.y - 2.0 * g_liquid.wave_cross.x * c.y + 2.0 * g_liquid.wave_cross.y * c.x);
+  if (held) {
+    vec2 dir = q / len;
+    g = (1.25 / len) * (g - dir * dot(dir, g));
+  }
+  return g / g_liquid.wave_radius;
+}
+
+// Signed height of p (local) over the surface of `lq`: negative in the liquid.
+float level_over(ObjectLiquid lq, vec3 p) {
+  float level = dot(lq.plane_normal, p) - lq.plane_offset;
+#if SURFACE_WAVES
+  level -= wave_height(lq, p.xz);
+#endif
+  return level;
+}
+
+// The same for the loaded object.
+float liquid_level(vec3 p) { return level_over(g_liquid, p); }
+
+bool below_liquid(vec3 p) { return g_shape.has_liquid != 0 && liquid_level(p) < 0.0; }
+
+Hit hit_liquid_surface(vec3 o, vec3 d, float tmin) {
+  if (g_shape.has_liquid == 0) return no_hit();
+  vec3 n = g_liquid.plane_normal;
+  float dn = dot(n, d);
+  if (abs(dn) < 1e-12) return no_hit();
+  float t = (g_liquid.plane_offset - dot(n, o)) / dn;
+#if SURFACE_WAVES
+  for (int it = 0; it < 4; ++it) {  // Newton steps from the plane onto the waves
+    vec3 p = o + t * d;
+    vec2 g = wave_gradient(p.xz);
+    float slope = dn - dot(g, d.xz);
+    if (abs(slope) < 1e-12) break;
+    t -= liquid_level(p) / slope;
+  }
+#endif
+  vec3 p = o + t * d;
+  if (t <= tmin || p.y <= g_shape.base || p.y >= g_shape.height || length(p.xz) >= inner_radius(p.y) || clipped(p))
+    return no_hit();
+#if SURFACE_WAVES
+  vec2 g = wave_gradient(p.xz);
+  return Hit(t, normalize(n - vec3(g.x, 0.0, g.y)), M_LIQUID_SURFACE, g_row);
+#else
+  return Hit(t, n, M_LIQUID_SURFACE, g_row);
+#endif
+}
+
+#endif  // LIB_LIQUID_SURFACE_GLSL
