@@ -29,8 +29,8 @@ struct GoldenCase {
   FrameState (*scene)() = nullptr;  // a scene of several objects (request and timeline unused)
 };
 
-FrameState flight_front() { return make_frame(flight_scene(flight_straight_on())); }
-FrameState flight_angle() { return make_frame(flight_scene(flight_at_an_angle())); }
+FrameState flight_front() { return make_frame(flight_scene(FlightView::StraightOn)); }
+FrameState flight_angle() { return make_frame(flight_scene(FlightView::AtAnAngle)); }
 
 struct Comparison {
   int max_abs = 0;

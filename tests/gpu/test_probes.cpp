@@ -29,8 +29,9 @@ struct ProbeCase {
   FrameState (*scene)() = nullptr;  // a scene of several objects (request and timeline unused)
 };
 
-FrameState flight_front() { return make_frame(flight_scene(flight_straight_on())); }
-FrameState flight_angle() { return make_frame(flight_scene(flight_at_an_angle())); }
+FrameState flight_front() { return make_frame(flight_scene(FlightView::StraightOn)); }
+FrameState flight_angle() { return make_frame(flight_scene(FlightView::AtAnAngle)); }
+FrameState flight_along() { return make_frame(flight_scene(FlightView::AlongTheRow)); }
 
 struct Reference {
   int w, h;
@@ -138,7 +139,8 @@ INSTANTIATE_TEST_SUITE_P(
         ProbeCase{"wine-spilling", {}, 96, "tilt-until-spill", 3.0},
         // Four glasses: the nearest hit over every object, and which object it is.
         ProbeCase{"flight-front", {}, 128, nullptr, 0, flight_front},
-        ProbeCase{"flight-angle", {}, 128, nullptr, 0, flight_angle}),
+        ProbeCase{"flight-angle", {}, 128, nullptr, 0, flight_angle},
+        ProbeCase{"flight-along-the-row", {}, 128, nullptr, 0, flight_along}),
     [](const auto& info) {
       std::string s = info.param.name;
       for (char& ch : s)

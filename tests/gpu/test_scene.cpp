@@ -72,14 +72,14 @@ TEST(Contract, UniformBlockMismatchNamesTheMember) {
   }
 }
 
-// Events of refracted paths through the flight seen along the row: the GPU's PathEvent
+// Events of refracted paths through the flight seen along its row: the GPU's PathEvent
 // view against the CPU trace. Float on the GPU, double on the CPU: a path may fork where
 // an event grazes an edge, so an event is compared only where every earlier event
 // agrees, and materials may differ on a small share of those pixels (1 %, the pixels
 // whose path grazes an edge somewhere). Distances agree to max(0.1 mm, 1e-3 t).
 TEST(Flight, RefractedPathsThroughTwoGlassesMatchTheCpuTrace) {
   Gpu& g = gpu_instance();
-  const FrameState f = make_frame(flight_scene(flight_at_an_angle()));
+  const FrameState f = make_frame(flight_scene(FlightView::AlongTheRow));
   const int w = 96, h = 72, events = 6;
   const SceneGeometry geo = scene_geometry(f);
   const CameraBasis cam = camera_basis(f.camera, w, h);
@@ -114,14 +114,14 @@ TEST(Flight, RefractedPathsThroughTwoGlassesMatchTheCpuTrace) {
         if (dt > std::max(1e-4, 1e-3 * c.t)) ++distance_bad;
         if (c.object >= 0) met[i].insert(c.object);
       }
-    std::printf("[flight-angle event %d] %d paths compared, %d differ in material/object/medium, %d in distance; worst "
+    std::printf("[flight-along-the-row event %d] %d paths compared, %d differ in material/object/medium, %d in distance; worst "
                 "|dt| %.2e m\n",
                 e, compared, material_bad, distance_bad, worst);
     EXPECT_LE(material_bad, std::max(2, compared / 100)) << "event " << e;
     EXPECT_LE(distance_bad, std::max(1, compared / 200)) << "event " << e;
   }
   for (const auto& s : met) through_two += s.size() >= 2;
-  std::printf("[flight-angle] %d pixels' paths meet two glasses or more, every event agreeing\n", through_two);
+  std::printf("[flight-along-the-row] %d pixels' paths meet two glasses or more, every event agreeing\n", through_two);
   EXPECT_GT(through_two, w * h / 50) << "the view should see glasses through each other";
 }
 
