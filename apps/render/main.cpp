@@ -61,6 +61,8 @@ int main(int argc, char** argv) {
   auto* bench = app.add_subcommand("bench", "Render fixed scenes for N frames and print median frame times");
   bench->add_option("-n,--frames", frames, "Frames per scene and size")->check(CLI::Range(1, 10000))->capture_default_str();
   bench->add_option("--sizes", sizes, "Square image sizes")->delimiter(',')->capture_default_str();
+  std::vector<std::string> bench_scenes;
+  bench->add_option("--scenes", bench_scenes, "Only these scenes (names as printed)")->delimiter(',');
 
   CLI11_PARSE(app, argc, argv);
   try {
@@ -84,7 +86,7 @@ int main(int argc, char** argv) {
     if (*presets) return cli::list_presets();
     if (*validate) return cli::validate(files);
     if (*params) return cli::print_params(markdown);
-    if (*bench) return cli::bench(frames, sizes, verbose);
+    if (*bench) return cli::bench(frames, sizes, bench_scenes, verbose);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "draught: error: %s\n", e.what());
     return 1;

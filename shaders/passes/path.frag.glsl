@@ -50,13 +50,13 @@ struct Crossing {
   int next;
 };
 
-// Needs h's object loaded (scene_hit leaves it so).
-Crossing crossing_at(Path path, Hit h, bool below) {
+// v, g: the records of h's object.
+Crossing crossing_at(Path path, Hit h, Vessel v, ObjectGlass g, bool below) {
   Crossing c;
   c.next = medium_across(h.m, path.medium, below);
   c.n = dot(h.n, path.d) < 0.0 ? h.n : -h.n;
-  c.n1 = medium_ior(path.medium);
-  c.n2 = medium_ior(c.next);
+  c.n1 = medium_ior(v, g, path.medium);
+  c.n2 = medium_ior(v, g, c.next);
   c.F = fresnel_dielectric(-dot(c.n, path.d), c.n1, c.n2);
   return c;
 }
@@ -77,31 +77,33 @@ void go_on(inout Path path, Hit h, Crossing c, vec3 p) {
 // ---- stage: shade an interface ----
 
 // The light gathered at the surface h (the path's segment up to it, the key light's
-// highlight, the reflected surroundings) and the path onwards. False: the path ended
-// (it reached the floor).
-bool shade_interface(inout Path path, Hit h) {
+// highlight, the reflected surroundings) and the path onwards. v: the records of h's
+// object (inside a glass or drink that is also the path's). False: the path ended (it
+// reached the floor).
+bool shade_interface(inout Path path, Hit h, Vessel v) {
   vec3 p = path.o + h.t * path.d;
-  // The segment up to the surface, inside the path's medium (of the loaded object).
-  if (path.medium == MEDIUM_LIQUID) path.radiance += path.thr * haze_inscatter(h.t);
-  path.thr *= medium_transmittance(path.medium, h.t);
+  ObjectGlass g = fetch_object_glass(v.row);
+  // The segment up to the surface, inside the path's medium.
+  if (path.medium == MEDIUM_LIQUID) path.radiance += path.thr * haze_inscatter(v, h.t);
+  path.thr *= medium_transmittance(v, g, path.medium, h.t);
   if (h.m == M_FLOOR) {
     path.radiance += path.thr * shade_floor(p, length(p - frame.cam_eye));
     path.thr = vec3(0.0);
     return false;
   }
-  vec3 pl = to_local_point(p);
-  bool below = below_liquid(pl);
+  vec3 pl = to_local_point(v, p);
+  bool below = below_liquid(v, pl);
 #if FOAM_HEAD
   if (h.m == M_GLASS_INNER && !below) {  // lacing on the wall
-    use_foam(h.obj);
-    float cover = lacing_cover(pl);
-    path.radiance += path.thr * cover * foam_light(to_local_dir(path.d), to_local_dir(frame.light_dir), 0.001, 0.0);
+    ObjectFoam f = fetch_object_foam(v.row);
+    float cover = lacing_cover(v, f, pl);
+    path.radiance += path.thr * cover * foam_light(v, f, to_local_dir(v, path.d), to_local_dir(v, frame.light_dir), 0.001, 0.0);
     path.thr *= 1.0 - cover;
   }
 #endif
-  Crossing c = crossing_at(path, h, below);
+  Crossing c = crossing_at(path, h, v, g, below);
   // Key light highlight (GGX), on the side the path arrives from.
-  float rough = h.m == M_LIQUID_SURFACE || h.m == M_CLIP_LIQUID ? g_liquid.roughness : g_glass.glass_roughness;
+  float rough = h.m == M_LIQUID_SURFACE || h.m == M_CLIP_LIQUID ? v.liquid.roughness : g.glass_roughness;
   path.radiance += path.thr * frame.light_color * frame.light_intensity * c.F * ggx_specular(c.n, -path.d, frame.light_dir, rough);
   if (c.F < 1.0) {
     if (frame.transparent == 0 || path.medium != MEDIUM_AIR)
@@ -116,17 +118,23 @@ bool shade_interface(inout Path path, Hit h) {
 
 // Follows the path from the camera through at most frame.max_events interfaces; whatever
 // throughput is left then sees the surroundings. see_through: achromatic transmission
-// to the background (the alpha of transparent pictures).
+// to the background (the alpha of transparent pictures). One loop: each iteration tests
+// one object (lib/scene/trace.glsl search_step) and, once a segment's nearest surface is
+// known, marches the heads along it and shades the interface.
 vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
   Path path = Path(eye, dir, MEDIUM_AIR, -1, vec3(0.0), vec3(1.0));
   see_through = 0.0;
   bool escaped = false;
-  for (int e = 0; e < frame.max_events; ++e) {
-    Hit h = scene_hit(path.o, path.d, path.medium, path.obj, e == 0 ? 0.0 : 2e-6);
+  int events = 0;
+  Search s = start_search(0.0);
+  int steps = frame.max_events * (frame.object_count + 1);
+  for (int it = 0; it < steps; ++it) {
+    Vessel v;
+    if (!search_step(s, path.o, path.d, path.medium, path.obj, v)) continue;
+    Hit h = s.best;
 #if FOAM_HEAD
     if (path.medium == MEDIUM_AIR) {  // heads and their big bubbles sit in the air above the drinks
       foam_along(path.o, path.d, h.m == M_NONE ? 100.0 : h.t, path.radiance, path.thr);
-      if (h.obj >= 0) use_object(h.obj);
       if (max3(path.thr) < 1e-3) break;
     }
 #endif
@@ -134,7 +142,9 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
       escaped = true;
       break;
     }
-    if (!shade_interface(path, h) || max3(path.thr) < 1e-3) break;
+    if (!shade_interface(path, h, v) || max3(path.thr) < 1e-3) break;
+    if (++events == frame.max_events) break;
+    s = start_search(2e-6);
   }
   if (escaped || max3(path.thr) >= 1e-3) {
     if (frame.transparent != 0) {
@@ -149,11 +159,27 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
 }
 
 // ---- stage: debug outputs ----
+// Compiled only into the debug variant (DEBUG_VIEWS 1): llvmpipe pays for code behind a
+// uniform branch it does not take (this costs the picture a third of its time).
+#ifndef DEBUG_VIEWS
+#define DEBUG_VIEWS 0
+#endif
+#if DEBUG_VIEWS
+
+// The nearest surface along a world ray from a path in `medium` (of object `obj`), its
+// object's records in v: the search run to its end.
+Hit nearest_surface(vec3 o, vec3 d, int medium, int obj, float tmin, out Vessel v) {
+  Search s = start_search(tmin);
+  for (int it = 0; it <= frame.object_count; ++it)
+    if (search_step(s, o, d, medium, obj, v)) break;
+  return s.best;
+}
 
 // Depth / material: (t, material, object, 1) of the first surface; normal: (world
 // normal, material). Compared with core/reference first_hit by tests/gpu/test_probes.
 vec4 debug_first_surface(vec3 eye, vec3 dir, int view) {
-  Hit h = scene_hit(eye, dir, MEDIUM_AIR, -1, 0.0);
+  Vessel v;
+  Hit h = nearest_surface(eye, dir, MEDIUM_AIR, -1, 0.0, v);
   if (view == VIEW_NORMAL) return vec4(h.n, float(h.m));
   return vec4(h.m != M_NONE ? h.t : 0.0, float(h.m), float(h.obj), 1.0);
 }
@@ -164,11 +190,12 @@ vec4 debug_first_surface(vec3 eye, vec3 dir, int view) {
 vec4 debug_path_event(vec3 eye, vec3 dir, int n) {
   Path path = Path(eye, dir, MEDIUM_AIR, -1, vec3(0.0), vec3(1.0));
   for (int e = 0; e < frame.max_events; ++e) {
-    Hit h = scene_hit(path.o, path.d, path.medium, path.obj, e == 0 ? 0.0 : 2e-6);
+    Vessel v;
+    Hit h = nearest_surface(path.o, path.d, path.medium, path.obj, e == 0 ? 0.0 : 2e-6, v);
     if (e == n) return vec4(h.m != M_NONE ? h.t : 0.0, float(h.m), float(h.obj), float(path.medium));
     if (h.m == M_NONE || h.m == M_FLOOR) break;
     vec3 p = path.o + h.t * path.d;
-    go_on(path, h, crossing_at(path, h, below_liquid(to_local_point(p))), p);
+    go_on(path, h, crossing_at(path, h, v, fetch_object_glass(v.row), below_liquid(v, to_local_point(v, p))), p);
   }
   return vec4(0.0, float(M_NONE), -1.0, float(path.medium));
 }
@@ -179,11 +206,13 @@ vec4 debug_medium_rule() {
   int m = int(gl_FragCoord.x), y = int(gl_FragCoord.y);
   return vec4(float(medium_across(m, y % 3, y >= 3)), 0.0, 0.0, 1.0);
 }
+#endif  // DEBUG_VIEWS
 
 // ---- output ----
 
 void main() {
   vec3 dir = camera_dir(gl_FragCoord.xy);
+#if DEBUG_VIEWS
   int view = frame.debug_view;
   if (view == VIEW_MEDIUM_RULE) {
     frag_color = debug_medium_rule();
@@ -197,12 +226,15 @@ void main() {
     frag_color = debug_path_event(frame.cam_eye, dir, frame.debug_event);
     return;
   }
+#endif
   float see_through;
   vec3 radiance = trace_path(frame.cam_eye, dir, see_through);
+#if DEBUG_VIEWS
   if (view == VIEW_COST) {  // the work this pixel's path needed
     frag_color = vec4(float(g_cost), float(g_foam_steps), float(g_bounds_entered), 1.0);
     return;
   }
+#endif
   vec3 c = radiance * frame.exposure;
   c = frame.tonemap == 1 ? aces_filmic(c) : c;
   float alpha = frame.transparent != 0 ? clamp(1.0 - see_through, 0.0, 1.0) : 1.0;

@@ -63,6 +63,7 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   ShaderSource frag = assemble_shader("passes/path.frag.glsl", shader_dir_);
   if (variant & kWaves) frag = with_define(std::move(frag), "SURFACE_WAVES");
   if (variant & kFoam) frag = with_define(std::move(frag), "FOAM_HEAD");
+  if (variant & kDebug) frag = with_define(std::move(frag), "DEBUG_VIEWS");
   auto program = std::make_unique<Program>(vert, frag);
   bind_interface(*program, "passes/path.frag.glsl");
   return program;
@@ -95,14 +96,14 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   glViewport(0, 0, width, height);
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
-  // Only the code a frame needs: waves and foam are compiled in when some object has
-  // them (software rasterizers pay for code even where a uniform branch skips it).
+  // Only the code a frame needs: waves and foam when some object has them, the debug
+  // views when one is asked for.
   bool waves = false, foam = false;
   for (const VesselFrame& v : f.vessels) {
     waves = waves || (v.has_liquid && !v.liquid.waves.flat());
     foam = foam || (v.has_liquid && v.foam.thickness > 1e-4);
   }
-  const int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0);
+  const int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0) | (debug != DebugView::None ? kDebug : 0);
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
   glUseProgram(program->id());

@@ -66,11 +66,13 @@ class Renderer {
  private:
   void draw_bubbles(const FrameState&, int width, int height);
 
-  enum Variant { kWaves = 1, kFoam = 2 };  // bits: what the path pass is compiled with
+  // Bits: what the path pass is compiled with (software rasterizers pay for code even
+  // where a uniform branch skips it, so frames get only the code they use).
+  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4 };
   std::unique_ptr<Program> build_program(int variant) const;
 
   std::filesystem::path shader_dir_;
-  std::unique_ptr<Program> programs_[4];     // by variant, built when first needed
+  std::unique_ptr<Program> programs_[8];     // by variant, built when first needed
   std::unique_ptr<Program> bubble_program_;  // pass 2: rising bubbles, built when first needed
   std::unique_ptr<SceneTextures> textures_;  // u_objects, u_knots
   unsigned bubble_vao_ = 0, bubble_vbo_ = 0;

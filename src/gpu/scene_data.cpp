@@ -66,27 +66,33 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.bound_axis = glm::vec3(vf.pose.orientation * glm::dvec3(0, 1, 0));
   r.bound_radius = float(v.bound_radius);
   r.bound_length = float(v.height + v.rim_minor);
+  // body: what the floor needs (shadow, contact)
+  r.height = float(v.height);
+  r.foot_radius = float(v.r_outer.front());
+  r.mean_outer_radius = float(vf.mean_outer_radius);
+  // Where the surface (with its ring wave, the only shape that moves the axis point)
+  // crosses the axis; a glass tipped past level is shadowed as if dry.
+  const double ny = vf.liquid.n.y;
+  r.wet_height = vf.has_liquid && ny > 1e-6 ? float((vf.liquid.offset + vf.liquid.waves.ring) / ny) : -1.0f;
+  r.absorption = vf.liquid_absorption;
+  r.has_liquid = vf.has_liquid ? 1 : 0;
   // shape
   const glm::dmat3 rot = glm::mat3_cast(vf.pose.orientation);
   r.rot_x = glm::vec3(rot[0]);
   r.rot_y = glm::vec3(rot[1]);
   r.rot_z = glm::vec3(rot[2]);
   r.position = glm::vec3(vf.pose.position);
-  r.height = float(v.height);
   r.base = float(v.base);
   r.dy = float(v.dy);
   r.inv_dy = float(1.0 / v.dy);
   r.rim_major = float(v.rim_major);
   r.rim_minor = float(v.rim_minor);
-  r.foot_radius = float(v.r_outer.front());
   r.cavity_floor_radius = float(v.inner_radius(v.base));
   // The cross-section as the reference intersector has it (normalised; off: 0, 0, 0, 1).
   const glm::vec4 clip(scene_geometry(f).vessels[size_t(row)].clip);
   r.clip_normal = glm::vec3(clip);
   r.clip_offset = clip.w;
-  r.mean_outer_radius = float(vf.mean_outer_radius);
   r.knot_row = row;
-  r.has_liquid = vf.has_liquid ? 1 : 0;
   const bool head = has_head(vf);
   r.has_head = head ? 1 : 0;
   // liquid: the plane core solved (volume-true, never above the lowest rim point)
@@ -96,7 +102,6 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.wave_ring = float(w.ring);
   r.wave_cross = glm::vec2(w.cross);
   r.wave_radius = float(w.radius);
-  r.absorption = vf.liquid_absorption;
   r.ior = vp.liquid.ior;
   r.haze_color = vp.liquid.haze_color;
   r.haze = vp.liquid.haze;

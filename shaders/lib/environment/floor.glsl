@@ -7,8 +7,28 @@
 #define LIB_ENVIRONMENT_FLOOR_GLSL
 #include "generated/frame.glsl"
 #include "lib/scene/objects.glsl"
-#include "lib/liquid/surface.glsl"
 #include "lib/environment/studio.glsl"
+
+// Object `row` seen from floor point p (world), with only its bounds and body: the
+// point in the glass's frame as its height on the axis (y) and the vector across the
+// axis (xz), and the same for the light. A glass is round, so this is all the floor
+// needs (no rotation matrix: for an upright glass these are exactly the local x, y, z).
+struct FloorView {
+  vec3 across;        // p's offset across the axis
+  float along;        // p's height on the axis (local y)
+  vec3 l_across;      // the light direction across the axis
+  float l_along;      // and along it
+};
+
+FloorView floor_view(ObjectBounds b, vec3 p) {
+  FloorView v;
+  vec3 rel = p - b.bound_base;
+  v.along = dot(rel, b.bound_axis);
+  v.across = rel - v.along * b.bound_axis;
+  v.l_along = dot(frame.light_dir, b.bound_axis);
+  v.l_across = frame.light_dir - v.l_along * b.bound_axis;
+  return v;
+}
 
 // Where a path in the air meets the floor. Where a glass stands on it, its foot is the
 // surface (as core/reference/intersect.cpp first_hit).
@@ -21,65 +41,55 @@ Hit hit_floor(vec3 o, vec3 d, float tmin) {
     ObjectBounds b = fetch_object_bounds(i);
     vec3 rel = p - b.bound_base;
     if (dot(rel, rel) > b.bound_radius * b.bound_radius) continue;
-    use_object(i);
-    vec3 q = to_local_point(p);
-    if (abs(q.y) < 1e-5 && length(q.xz) <= g_shape.foot_radius) return no_hit();
+    FloorView v = floor_view(b, p);
+    if (abs(v.along) < 1e-5 && length(v.across) <= fetch_object_body(i).foot_radius) return no_hit();
   }
   return Hit(t, vec3(0.0, 1.0, 0.0), M_FLOOR, -1);
 }
 
-// One glass's shadow at floor point p (the glass's frame) for the light l (its frame).
-vec3 glass_shadow(ObjectShape s, ObjectLiquid lq, vec3 p, vec3 l) {
-  float rad = s.mean_outer_radius;
+// One glass's shadow at floor point v: a cylinder of the glass's mean radius, tinted by
+// the drink where the light crosses it below the surface, with a caustic in the middle.
+vec3 glass_shadow(ObjectBody body, FloorView v) {
+  float rad = body.mean_outer_radius;
   // Closest approach of the shadow ray p + t l to the axis.
-  vec2 dxz = l.xz;
-  float a = dot(dxz, dxz);
+  float a = dot(v.l_across, v.l_across);
   if (a < 1e-8) return vec3(1.0);
-  float t = -dot(p.xz, dxz) / a;
-  float dist = length(p.xz + t * dxz);
-  float y = p.y + t * l.y;
-  if (t <= 0.0 || y > s.height + 0.004) return vec3(1.0);
+  float t = -dot(v.across, v.l_across) / a;
+  float dist = length(v.across + t * v.l_across);
+  float y = v.along + t * v.l_along;
+  if (t <= 0.0 || y > body.height + 0.004) return vec3(1.0);
   float edge = smoothstep(rad * 1.05, rad * 0.9, dist);
   if (edge <= 0.0) return vec3(1.0);
   float chord = 2.0 * sqrt(max(rad * rad - dist * dist, 0.0));
-  bool wet = s.has_liquid != 0 && level_over(lq, vec3(0.0, y, 0.0)) < 0.0;
-  vec3 through = wet ? exp(-lq.absorption * chord) : vec3(0.85);
+  bool wet = body.has_liquid != 0 && y < body.wet_height;
+  vec3 through = wet ? exp(-body.absorption * chord) : vec3(0.85);
   float x = dist / rad;
   float caustic = wet ? 0.45 + 1.6 * pow(max(1.0 - x * x, 0.0), 6.0) : 0.75;
   return mix(vec3(1.0), through * caustic, edge);
 }
 
 // Direct light (shadows) and ambient occlusion (contact) at floor point p (world) from
-// every glass. The loaded object is not changed.
+// every glass: bounds first, then four texels per glass nearby. The loaded object is
+// not changed.
 void floor_occlusion(vec3 p, out vec3 direct, out float contact) {
   direct = vec3(1.0);
   contact = 1.0;
-  vec3 l = frame.light_dir;
   for (int i = 0; i < frame.object_count; ++i) {
     ObjectBounds b = fetch_object_bounds(i);
     vec3 rel = p - b.bound_base;
     // Contact: exp(-16) is invisible beyond five bound radii.
     bool near = dot(rel, rel) < 25.0 * b.bound_radius * b.bound_radius;
     // Shadow: the shadow ray's closest distance to the glass's axis.
-    vec3 n = cross(b.bound_axis, l);
+    vec3 n = cross(b.bound_axis, frame.light_dir);
     float nn = dot(n, n);
     bool shade = nn > 1e-10 && abs(dot(rel, n)) < 1.1 * b.bound_radius * sqrt(nn);
     if (!near && !shade) continue;
-    ObjectShape s;
-    ObjectLiquid lq;
-    if (i == g_row) {
-      s = g_shape;
-      lq = g_liquid;
-    } else {
-      s = fetch_object_shape(i);
-      lq = fetch_object_liquid(i);
-    }
-    mat3 rot = mat3(s.rot_x, s.rot_y, s.rot_z);
-    vec3 q = (p - s.position) * rot;
+    ObjectBody body = fetch_object_body(i);
+    FloorView v = floor_view(b, p);
     // Darker near the foot (which lifts off the floor when the glass tips).
-    float foot_dist = length(vec2(max(length(q.xz) - s.foot_radius, 0.0), q.y));
-    if (near) contact *= 1.0 - 0.55 * exp(-foot_dist / (0.25 * s.foot_radius));
-    if (shade) direct *= glass_shadow(s, lq, q, l * rot);
+    float foot_dist = length(vec2(max(length(v.across) - body.foot_radius, 0.0), v.along));
+    if (near) contact *= 1.0 - 0.55 * exp(-foot_dist / (0.25 * body.foot_radius));
+    if (shade) direct *= glass_shadow(body, v);
   }
 }
 

@@ -1,4 +1,4 @@
-// The drink's surface in the loaded vessel: a plane dot(n, p) = offset (volume-true and
+// The drink's surface in a vessel: a plane dot(n, p) = offset (volume-true and
 // rim-clamped, computed by core: VesselFrame::liquid) plus the slosh waves. Twin of
 // core/liquid/slosh.cpp (SurfaceWaves) and core/reference/intersect.cpp
 // (hit_liquid_surface, LiquidPlane::level).
@@ -26,19 +26,19 @@ float wave_height(ObjectLiquid lq, vec2 xz) {
          lq.wave_cross.y * 2.0 * q.x * q.y;
 }
 
-vec2 wave_gradient(vec2 xz) {
-  vec2 q = xz / g_liquid.wave_radius;
+vec2 wave_gradient(ObjectLiquid lq, vec2 xz) {
+  vec2 q = xz / lq.wave_radius;
   float len = length(q);
   bool held = len > 1.25;  // chain rule through the pull-in (as core/liquid/slosh.cpp)
   vec2 c = held ? q * (1.25 / len) : q;
-  float dr = g_liquid.wave_ring * (-6.0 + 6.0 * dot(c, c));
-  vec2 g = vec2(dr * c.x + 2.0 * g_liquid.wave_cross.x * c.x + 2.0 * g_liquid.wave_cross.y * c.y,
-                dr * c.y - 2.0 * g_liquid.wave_cross.x * c.y + 2.0 * g_liquid.wave_cross.y * c.x);
+  float dr = lq.wave_ring * (-6.0 + 6.0 * dot(c, c));
+  vec2 g = vec2(dr * c.x + 2.0 * lq.wave_cross.x * c.x + 2.0 * lq.wave_cross.y * c.y,
+                dr * c.y - 2.0 * lq.wave_cross.x * c.y + 2.0 * lq.wave_cross.y * c.x);
   if (held) {
     vec2 dir = q / len;
     g = (1.25 / len) * (g - dir * dot(dir, g));
   }
-  return g / g_liquid.wave_radius;
+  return g / lq.wave_radius;
 }
 
 // Signed height of p (local) over the surface of `lq`: negative in the liquid.
@@ -50,34 +50,31 @@ float level_over(ObjectLiquid lq, vec3 p) {
   return level;
 }
 
-// The same for the loaded object.
-float liquid_level(vec3 p) { return level_over(g_liquid, p); }
+bool below_liquid(Vessel v, vec3 p) { return v.body.has_liquid != 0 && level_over(v.liquid, p) < 0.0; }
 
-bool below_liquid(vec3 p) { return g_shape.has_liquid != 0 && liquid_level(p) < 0.0; }
-
-Hit hit_liquid_surface(vec3 o, vec3 d, float tmin) {
-  if (g_shape.has_liquid == 0) return no_hit();
-  vec3 n = g_liquid.plane_normal;
+Hit hit_liquid_surface(Vessel v, vec3 o, vec3 d, float tmin) {
+  if (v.body.has_liquid == 0) return no_hit();
+  vec3 n = v.liquid.plane_normal;
   float dn = dot(n, d);
   if (abs(dn) < 1e-12) return no_hit();
-  float t = (g_liquid.plane_offset - dot(n, o)) / dn;
+  float t = (v.liquid.plane_offset - dot(n, o)) / dn;
 #if SURFACE_WAVES
   for (int it = 0; it < 4; ++it) {  // Newton steps from the plane onto the waves
     vec3 p = o + t * d;
-    vec2 g = wave_gradient(p.xz);
+    vec2 g = wave_gradient(v.liquid, p.xz);
     float slope = dn - dot(g, d.xz);
     if (abs(slope) < 1e-12) break;
-    t -= liquid_level(p) / slope;
+    t -= level_over(v.liquid, p) / slope;
   }
 #endif
   vec3 p = o + t * d;
-  if (t <= tmin || p.y <= g_shape.base || p.y >= g_shape.height || length(p.xz) >= inner_radius(p.y) || clipped(p))
+  if (t <= tmin || p.y <= v.shape.base || p.y >= v.body.height || length(p.xz) >= inner_radius(v, p.y) || clipped(v, p))
     return no_hit();
 #if SURFACE_WAVES
-  vec2 g = wave_gradient(p.xz);
-  return Hit(t, normalize(n - vec3(g.x, 0.0, g.y)), M_LIQUID_SURFACE, g_row);
+  vec2 g = wave_gradient(v.liquid, p.xz);
+  return Hit(t, normalize(n - vec3(g.x, 0.0, g.y)), M_LIQUID_SURFACE, v.row);
 #else
-  return Hit(t, n, M_LIQUID_SURFACE, g_row);
+  return Hit(t, n, M_LIQUID_SURFACE, v.row);
 #endif
 }
 

@@ -1,8 +1,9 @@
 // The scene's objects on the GPU: one record per object in u_objects (layout generated
-// from src/interface/objects.def, filled by gpu/scene_data.cpp), and "the loaded
-// object": the one whose records the intersection and shading code reads through the
-// globals below, in its own local frame (glass axis = +y, foot at the origin). Paths
-// run in the world; each object test moves the ray into the object's frame.
+// from src/interface/objects.def, filled by gpu/scene_data.cpp). A vessel's records are
+// loaded into a Vessel value where they are needed and passed down explicitly: no
+// global "current object" (loops that carry such state cost llvmpipe twice the frame
+// time; re-fetching a few texels per test is cheap). Paths run in the world; each
+// object test moves the ray into the object's frame (glass axis = +y, foot at origin).
 #ifndef LIB_SCENE_OBJECTS_GLSL
 #define LIB_SCENE_OBJECTS_GLSL
 #include "generated/frame.glsl"
@@ -10,8 +11,8 @@
 #include "lib/common/math.glsl"
 
 // A surface along a ray. n: glass surfaces point out of the glass, the liquid surface
-// and the floor up; in the loaded object's frame inside lib/vessel, in the world after
-// scene_hit. obj: the object (row), -1 for the floor and for no hit.
+// and the floor up; in the vessel's frame inside lib/vessel, in the world after
+// object_hit. obj: the object (row), -1 for the floor and for no hit.
 struct Hit {
   float t;
   vec3 n;
@@ -29,32 +30,27 @@ void keep_nearest(inout Hit best, Hit h) {
 int g_cost = 0;            // segment and torus intersections solved
 int g_bounds_entered = 0;  // object bounds the path entered
 
-// The loaded object. use_object() fetches only when the row changes: a pixel that sees
-// one glass fetches its records once.
-int g_row = -1;
-ObjectBounds g_bounds;
-ObjectShape g_shape;
-ObjectLiquid g_liquid;
-ObjectGlass g_glass;
+// A vessel's records as the intersection and shading code reads them.
+struct Vessel {
+  int row;
+  ObjectBounds bounds;
+  ObjectBody body;
+  ObjectShape shape;
+  ObjectLiquid liquid;
+};
 
-void use_object(int row) {
-  if (row == g_row) return;
-  g_row = row;
-  g_bounds = fetch_object_bounds(row);
-  g_shape = fetch_object_shape(row);
-  g_liquid = fetch_object_liquid(row);
-  g_glass = fetch_object_glass(row);
+Vessel load_vessel(int row) {
+  return Vessel(row, fetch_object_bounds(row), fetch_object_body(row), fetch_object_shape(row), fetch_object_liquid(row));
 }
 
-// Between the loaded object's frame and the world. The rotation's inverse is its transpose.
-mat3 object_rotation() { return mat3(g_shape.rot_x, g_shape.rot_y, g_shape.rot_z); }
-vec3 to_world_dir(vec3 v) { return object_rotation() * v; }
-vec3 to_local_dir(vec3 v) { return v * object_rotation(); }
-vec3 to_world_point(vec3 p) { return object_rotation() * p + g_shape.position; }
-vec3 to_local_point(vec3 p) { return (p - g_shape.position) * object_rotation(); }
+// Between the vessel's frame and the world. The rotation's inverse is its transpose.
+mat3 rotation(Vessel v) { return mat3(v.shape.rot_x, v.shape.rot_y, v.shape.rot_z); }
+vec3 to_world_dir(Vessel v, vec3 d) { return rotation(v) * d; }
+vec3 to_local_dir(Vessel v, vec3 d) { return d * rotation(v); }
+vec3 to_local_point(Vessel v, vec3 p) { return (p - v.shape.position) * rotation(v); }
 
-// The loaded object's cross-section: what lies beyond the clip plane is cut away.
-bool clipped(vec3 p) { return dot(g_shape.clip_normal, p) > g_shape.clip_offset; }
+// The vessel's cross-section: what lies beyond the clip plane is cut away.
+bool clipped(Vessel v, vec3 p) { return dot(v.shape.clip_normal, p) > v.shape.clip_offset; }
 
 // The part [t0, t1] of o + t d (world) inside the cylinder of radius R around the axis
 // segment from b along unit a for length L. False when the ray misses it.
@@ -82,15 +78,19 @@ bool cylinder_span(vec3 o, vec3 d, vec3 b, vec3 a, float R, float L, out vec2 tr
   return tr.x <= tr.y;
 }
 
-// Whether the world ray can meet object `row` between tmin and tmax: its bounding
-// cylinder (slightly enlarged against float round-off; it only culls).
-bool object_in_reach(int row, vec3 o, vec3 d, float tmin, float tmax) {
+// Where the world ray o + t d is inside object `row`'s bounding cylinder (slightly
+// enlarged against float round-off; it only culls): [t0, t1], false when it misses.
+bool object_span(int row, vec3 o, vec3 d, out vec2 tr) {
   ObjectBounds b = fetch_object_bounds(row);
-  vec2 tr;
   float pad = 1e-3 * b.bound_radius + 1e-5;
   return cylinder_span(o, d, b.bound_base - pad * b.bound_axis, b.bound_axis, b.bound_radius + pad,
-                       b.bound_length + 2.0 * pad, tr) &&
-         tr.y >= tmin && tr.x <= tmax;
+                       b.bound_length + 2.0 * pad, tr);
+}
+
+// Whether the world ray can meet object `row` between tmin and tmax.
+bool object_in_reach(int row, vec3 o, vec3 d, float tmin, float tmax) {
+  vec2 tr;
+  return object_span(row, o, d, tr) && tr.y >= tmin && tr.x <= tmax;
 }
 
 #endif  // LIB_SCENE_OBJECTS_GLSL

@@ -17,9 +17,9 @@ int medium_across(int m, int from, bool below) {
   return MEDIUM_AIR;
 }
 
-// Index of refraction of a medium of the loaded object (air 1).
-float medium_ior(int medium) {
-  return medium == MEDIUM_GLASS ? g_glass.glass_ior : (medium == MEDIUM_LIQUID ? g_liquid.ior : 1.0);
+// Index of refraction of a medium of vessel v with glass g (air 1).
+float medium_ior(Vessel v, ObjectGlass g, int medium) {
+  return medium == MEDIUM_GLASS ? g.glass_ior : (medium == MEDIUM_LIQUID ? v.liquid.ior : 1.0);
 }
 
 #endif  // LIB_VESSEL_MEDIA_GLSL
