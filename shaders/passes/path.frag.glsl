@@ -86,30 +86,49 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
   // The segment up to the surface, inside the path's medium.
   if (path.medium == MEDIUM_LIQUID) path.radiance += path.thr * haze_inscatter(v, h.t);
   path.thr *= medium_transmittance(v, g, path.medium, h.t);
-  if (h.m == M_FLOOR) {
-    path.radiance += path.thr * shade_floor(p, length(p - frame.cam_eye));
+  // The floor is shaded at most once per interface, from one place (its shading loops
+  // over every glass): where the path ends on it, or where the reflection meets it.
+  vec3 floor_at = p, floor_weight = vec3(0.0);
+  float floor_dist = length(p - frame.cam_eye);
+  bool on_floor = h.m == M_FLOOR;
+  Crossing c;
+  if (on_floor) {
+    floor_weight = path.thr;
     path.thr = vec3(0.0);
-    return false;
-  }
-  vec3 pl = to_local_point(v, p);
-  bool below = below_liquid(v, pl);
+  } else {
+    vec3 pl = to_local_point(v, p);
+    bool below = below_liquid(v, pl);
 #if FOAM_HEAD
-  if (h.m == M_GLASS_INNER && !below) {  // lacing on the wall
-    ObjectFoam f = fetch_object_foam(v.row);
-    float cover = lacing_cover(v, f, pl);
-    path.radiance += path.thr * cover * foam_light(v, f, to_local_dir(v, path.d), to_local_dir(v, frame.light_dir), 0.001, 0.0);
-    path.thr *= 1.0 - cover;
-  }
+    if (h.m == M_GLASS_INNER && !below) {  // lacing on the wall
+      ObjectFoam f = fetch_object_foam(v.row);
+      float cover = lacing_cover(v, f, pl);
+      path.radiance += path.thr * cover * foam_light(v, f, to_local_dir(v, path.d), to_local_dir(v, frame.light_dir), 0.001, 0.0);
+      path.thr *= 1.0 - cover;
+    }
 #endif
-  Crossing c = crossing_at(path, h, v, g, below);
-  // Key light highlight (GGX), on the side the path arrives from.
-  float rough = h.m == M_LIQUID_SURFACE || h.m == M_CLIP_LIQUID ? v.liquid.roughness : g.glass_roughness;
-  path.radiance += path.thr * frame.light_color * frame.light_intensity * c.F * ggx_specular(c.n, -path.d, frame.light_dir, rough);
-  if (c.F < 1.0) {
-    if (frame.transparent == 0 || path.medium != MEDIUM_AIR)
-      path.radiance += path.thr * c.F * surroundings(p, reflect(path.d, c.n), path.medium);
-    path.thr *= 1.0 - c.F;
+    c = crossing_at(path, h, v, g, below);
+    // Key light highlight (GGX), on the side the path arrives from.
+    float rough = h.m == M_LIQUID_SURFACE || h.m == M_CLIP_LIQUID ? v.liquid.roughness : g.glass_roughness;
+    path.radiance += path.thr * frame.light_color * frame.light_intensity * c.F * ggx_specular(c.n, -path.d, frame.light_dir, rough);
+    if (c.F < 1.0) {
+      // The reflection sees the surroundings: the floor or the studio from the air, the
+      // studio from inside a glass.
+      if (frame.transparent == 0 || path.medium != MEDIUM_AIR) {
+        vec3 r = reflect(path.d, c.n);
+        float t;
+        if (path.medium == MEDIUM_AIR && floor_along(p, r, t)) {
+          floor_at = p + t * r;
+          floor_dist = t;
+          floor_weight = path.thr * c.F;
+        } else {
+          path.radiance += path.thr * c.F * studio_sky(r);
+        }
+      }
+      path.thr *= 1.0 - c.F;
+    }
   }
+  if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_dist);
+  if (on_floor) return false;
   go_on(path, h, c, p);
   return true;
 }

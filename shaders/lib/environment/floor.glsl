@@ -47,49 +47,60 @@ Hit hit_floor(vec3 o, vec3 d, float tmin) {
   return Hit(t, vec3(0.0, 1.0, 0.0), M_FLOOR, -1);
 }
 
-// One glass's shadow at floor point v: a cylinder of the glass's mean radius, tinted by
-// the drink where the light crosses it below the surface, with a caustic in the middle.
-vec3 glass_shadow(ObjectBody body, FloorView v) {
-  float rad = body.mean_outer_radius;
-  // Closest approach of the shadow ray p + t l to the axis.
+// Where the shadow ray from floor point v passes the glass's axis most closely: its
+// parameter t along the light, its distance from the axis and its height on the axis.
+struct ShadowRay {
+  bool across;  // false: the light runs along the axis (no shadow from a cylinder)
+  float t, dist, y;
+};
+
+ShadowRay shadow_ray(FloorView v) {
+  ShadowRay r;
   float a = dot(v.l_across, v.l_across);
-  if (a < 1e-8) return vec3(1.0);
-  float t = -dot(v.across, v.l_across) / a;
-  float dist = length(v.across + t * v.l_across);
-  float y = v.along + t * v.l_along;
-  if (t <= 0.0 || y > body.height + 0.004) return vec3(1.0);
-  float edge = smoothstep(rad * 1.05, rad * 0.9, dist);
+  r.across = a >= 1e-8;
+  r.t = -dot(v.across, v.l_across) / a;
+  r.dist = length(v.across + r.t * v.l_across);
+  r.y = v.along + r.t * v.l_along;
+  return r;
+}
+
+// One glass's shadow: a cylinder of the glass's mean radius, tinted by the drink where
+// the light crosses it below the surface, with a caustic in the middle.
+vec3 glass_shadow(ObjectBody body, ShadowRay r) {
+  float rad = body.mean_outer_radius;
+  if (!r.across || r.t <= 0.0 || r.y > body.height + 0.004) return vec3(1.0);
+  float edge = smoothstep(rad * 1.05, rad * 0.9, r.dist);
   if (edge <= 0.0) return vec3(1.0);
-  float chord = 2.0 * sqrt(max(rad * rad - dist * dist, 0.0));
-  bool wet = body.has_liquid != 0 && y < body.wet_height;
+  float chord = 2.0 * sqrt(max(rad * rad - r.dist * r.dist, 0.0));
+  bool wet = body.has_liquid != 0 && r.y < body.wet_height;
   vec3 through = wet ? exp(-body.absorption * chord) : vec3(0.85);
-  float x = dist / rad;
+  float x = r.dist / rad;
   float caustic = wet ? 0.45 + 1.6 * pow(max(1.0 - x * x, 0.0), 6.0) : 0.75;
   return mix(vec3(1.0), through * caustic, edge);
 }
 
 // Direct light (shadows) and ambient occlusion (contact) at floor point p (world) from
-// every glass: bounds first, then four texels per glass nearby. The loaded object is
-// not changed.
+// every glass. Each glass's bounds decide first whether it can shade p at all (the
+// mean radius and the height are within the bounds); only then are its body's two
+// texels fetched.
 void floor_occlusion(vec3 p, out vec3 direct, out float contact) {
   direct = vec3(1.0);
   contact = 1.0;
   for (int i = 0; i < frame.object_count; ++i) {
     ObjectBounds b = fetch_object_bounds(i);
+    FloorView v = floor_view(b, p);
+    ShadowRay r = shadow_ray(v);
+    // Contact: beyond three bound radii (at least two foot radii from the foot) it
+    // darkens by less than 2e-4 of the ambient light, nothing an 8-bit pixel shows.
     vec3 rel = p - b.bound_base;
-    // Contact: exp(-16) is invisible beyond five bound radii.
-    bool near = dot(rel, rel) < 25.0 * b.bound_radius * b.bound_radius;
-    // Shadow: the shadow ray's closest distance to the glass's axis.
-    vec3 n = cross(b.bound_axis, frame.light_dir);
-    float nn = dot(n, n);
-    bool shade = nn > 1e-10 && abs(dot(rel, n)) < 1.1 * b.bound_radius * sqrt(nn);
+    bool near = dot(rel, rel) < 9.0 * b.bound_radius * b.bound_radius;
+    bool shade = r.across && r.t > 0.0 && r.y <= b.bound_length + 0.004 && r.dist < 1.05 * b.bound_radius;
     if (!near && !shade) continue;
     ObjectBody body = fetch_object_body(i);
-    FloorView v = floor_view(b, p);
     // Darker near the foot (which lifts off the floor when the glass tips).
     float foot_dist = length(vec2(max(length(v.across) - body.foot_radius, 0.0), v.along));
     if (near) contact *= 1.0 - 0.55 * exp(-foot_dist / (0.25 * body.foot_radius));
-    if (shade) direct *= glass_shadow(body, v);
+    if (shade) direct *= glass_shadow(body, r);
   }
 }
 
@@ -107,13 +118,17 @@ vec3 shade_floor(vec3 p, float dist) {
   return mix(frame.ground, c, exp(-dist / 2.0));
 }
 
+// Where a world ray from o meets the floor (t along it); false when it does not.
+bool floor_along(vec3 o, vec3 d, out float t) {
+  t = d.y < 0.0 ? -o.y / d.y : -1.0;
+  return frame.floor_on != 0 && t > 0.0;
+}
+
 // Everything that is not a glass, along a world ray: the floor where the ray meets it,
 // else the sky.
 vec3 background(vec3 o, vec3 d) {
-  if (frame.floor_on != 0 && d.y < 0.0) {
-    float t = -o.y / d.y;
-    if (t > 0.0) return shade_floor(o + t * d, t);
-  }
+  float t;
+  if (floor_along(o, d, t)) return shade_floor(o + t * d, t);
   return studio_sky(d);
 }
 

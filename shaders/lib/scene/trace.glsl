@@ -65,7 +65,8 @@ bool search_step(inout Search s, vec3 o, vec3 d, int medium, int obj, out Vessel
     keep_nearest(s.best, object_hit(v, o, d, medium, s.tmin));
     s.after_t0 = entry;
     s.after_row = cand;
-    if (medium == MEDIUM_AIR && next_candidate(s, o, d, medium, obj, entry) >= 0) return false;
+    // (With one object there is never a second candidate: no second bounds pass.)
+    if (medium == MEDIUM_AIR && frame.object_count > 1 && next_candidate(s, o, d, medium, obj, entry) >= 0) return false;
   }
   if (medium == MEDIUM_AIR) keep_nearest(s.best, hit_floor(o, d, s.tmin));
   if (s.best.obj >= 0 && s.best.obj != cand) v = load_vessel(s.best.obj);
