@@ -22,6 +22,7 @@ struct BenchScene {
   const char* timeline = nullptr;  // a glass in motion: this timeline's frame at `at` seconds
   double at = 0;
   bool flight = false;  // the tasting flight (four glasses) seen with request.camera
+  bool general = false;  // drawn with the general (several-object) shader path
 };
 
 // The tasting flight of tests/gpu (pilsner, amber ale in a tulip, stout in a nonic,
@@ -51,7 +52,39 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-double median_ms(gpu::Renderer& renderer, const FrameState& f, int w, int h, int frames, std::vector<double>* all = nullptr) {
+// One scene at one size: frame times, work per pixel, covered pixels (the first surface is
+// a glass) and what the glasses cost per thousand covered pixels (the frame less the
+// empty view, med_empty).
+struct Measured {
+  double median = 0, min = 0, max = 0, tests = 0, tests_max = 0, foam = 0, per_kpx = 0;
+  long covered = 0;
+};
+
+double median_ms(gpu::Renderer& renderer, const FrameState& f, int w, int h, int frames, std::vector<double>* all = nullptr);
+
+Measured measure(gpu::Renderer& renderer, const FrameState& f, int size, int frames, double med_empty) {
+  Measured m;
+  std::vector<double> ms;
+  m.median = median_ms(renderer, f, size, size, frames, &ms);
+  m.min = *std::min_element(ms.begin(), ms.end());
+  m.max = *std::max_element(ms.begin(), ms.end());
+  const gpu::DebugImage first = renderer.render_debug(f, size, size, gpu::DebugView::Depth);
+  for (size_t i = 0; i < first.rgba.size(); i += 4) m.covered += first.rgba[i + 1] >= float(int(Material::GlassOuter));
+  // Work per pixel: intersection tests over the whole path (analytic bound, no marching).
+  const gpu::DebugImage cost = renderer.render_debug(f, size, size, gpu::DebugView::Cost);
+  for (size_t i = 0; i < cost.rgba.size(); i += 4) {
+    m.tests += cost.rgba[i];
+    m.tests_max = std::max(m.tests_max, double(cost.rgba[i]));
+    m.foam += cost.rgba[i + 1];  // foam march steps
+  }
+  const double px = double(size) * size;
+  m.tests /= px;
+  m.foam /= px;
+  m.per_kpx = m.covered ? 1000.0 * (m.median - med_empty) / double(m.covered) : 0.0;
+  return m;
+}
+
+double median_ms(gpu::Renderer& renderer, const FrameState& f, int w, int h, int frames, std::vector<double>* all) {
   gpu::RenderTarget target(w, h, false);
   std::vector<double> ms;
   for (int i = 0; i < frames + 2; ++i) {
@@ -79,6 +112,7 @@ int bench(int frames, const std::vector<int>& sizes, const std::vector<std::stri
       {"wine-red-spilling", {"red-wine", "", {}, {}}, "tilt-until-spill", 3.0},
       // Scenes of several objects. The pint with the flight's camera distance and angle,
       // so that a covered pixel costs the same in both if objects cost nothing extra.
+      {"pint-lager-general-path", {"lager", "pint", {}, {}}, nullptr, 0, false, true},
       {"pint-lager-flight-camera", {"lager", "pint", {"camera.auto_frame=false"}, {"eye=0,0.17,0.8", "target=0,0.1,0", "vfov=26"}}},
       {"flight", {"", "", {}, {"eye=0,0.17,0.8", "target=0,0.1,0", "vfov=26"}}, nullptr, 0, true},
       {"flight-angle", {"", "", {}, {"eye=0.62,0.26,0.5", "target=-0.01,0.09,0", "vfov=30"}}, nullptr, 0, true},
@@ -106,30 +140,30 @@ int bench(int frames, const std::vector<int>& sizes, const std::vector<std::stri
     // The same view with no objects: what the floor and the sky cost.
     FrameState empty = f;
     empty.vessels.clear();
+    renderer.set_one_object_variant(!s.general);
     for (int size : sizes) {
-      std::vector<double> ms;
-      const double med = median_ms(renderer, f, size, size, frames, &ms);
       const double med_empty = median_ms(renderer, empty, size, size, frames);
-      // Covered pixels: the first surface is a glass (the cost of the glasses is what the
-      // frame costs more than the empty view, per covered pixel).
-      gpu::DebugImage first = renderer.render_debug(f, size, size, gpu::DebugView::Depth);
-      long covered = 0;
-      for (size_t i = 0; i < first.rgba.size(); i += 4) covered += first.rgba[i + 1] >= float(int(Material::GlassOuter));
-      // Work per pixel: intersection tests over the whole path (analytic bound, no marching).
-      gpu::DebugImage cost = renderer.render_debug(f, size, size, gpu::DebugView::Cost);
-      double cost_sum = 0, cost_max = 0, foam_sum = 0;
-      for (size_t i = 0; i < cost.rgba.size(); i += 4) {
-        cost_sum += cost.rgba[i];
-        cost_max = std::max(cost_max, double(cost.rgba[i]));
-        foam_sum += cost.rgba[i + 1];  // foam march steps
-      }
-      const double cost_mean = cost_sum / (double(size) * size);
+      const Measured m = measure(renderer, f, size, frames, med_empty);
       char sz[32];
       std::snprintf(sz, sizeof sz, "%dx%d", size, size);
-      std::printf("%-26s %-9s %10.2f %10.2f %10.2f %8.1f %9.1f %7.0f %9.1f %9ld %11.4f\n", s.name, sz, med,
-                  *std::min_element(ms.begin(), ms.end()), *std::max_element(ms.begin(), ms.end()), 1000.0 / med,
-                  cost_mean, cost_max, foam_sum / (double(size) * size), covered,
-                  covered ? 1000.0 * (med - med_empty) / double(covered) : 0.0);
+      std::printf("%-26s %-9s %10.2f %10.2f %10.2f %8.1f %9.1f %7.0f %9.1f %9ld %11.4f\n", s.name, sz, m.median,
+                  m.min, m.max, 1000.0 / m.median, m.tests, m.tests_max, m.foam, m.covered, m.per_kpx);
+      if (s.flight) {
+        // Each glass of the flight alone in the same view: what the same glasses cost
+        // without each other (the one-object shader variant, as a single glass renders).
+        double extra = 0;
+        long covered = 0;
+        for (size_t k = 0; k < f.vessels.size(); ++k) {
+          FrameState solo = f;
+          solo.vessels = {f.vessels[k]};
+          const Measured a = measure(renderer, solo, size, frames, med_empty);
+          extra += a.median - med_empty;
+          covered += a.covered;
+        }
+        const double solo_kpx = 1000.0 * extra / double(std::max(covered, 1L));
+        std::printf("%-26s %-9s %10s %10s %10s %8s %9s %7s %9s %9ld %11.4f  (flight / alone: %.2fx)\n",
+                    "  each glass alone", sz, "", "", "", "", "", "", "", covered, solo_kpx, m.per_kpx / solo_kpx);
+      }
       std::fflush(stdout);
     }
   }

@@ -146,7 +146,7 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
   bool escaped = false;
   int events = 0;
   Search s = start_search(0.0);
-  int steps = frame.max_events * (frame.object_count + 1);
+  int steps = frame.max_events * (OBJECT_COUNT + 1);
   for (int it = 0; it < steps; ++it) {
     Vessel v;
     if (!search_step(s, path.o, path.d, path.medium, path.obj, v)) continue;
@@ -189,7 +189,7 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
 // object's records in v: the search run to its end.
 Hit nearest_surface(vec3 o, vec3 d, int medium, int obj, float tmin, out Vessel v) {
   Search s = start_search(tmin);
-  for (int it = 0; it <= frame.object_count; ++it)
+  for (int it = 0; it <= OBJECT_COUNT; ++it)
     if (search_step(s, o, d, medium, obj, v)) break;
   return s.best;
 }

@@ -64,6 +64,7 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kWaves) frag = with_define(std::move(frag), "SURFACE_WAVES");
   if (variant & kFoam) frag = with_define(std::move(frag), "FOAM_HEAD");
   if (variant & kDebug) frag = with_define(std::move(frag), "DEBUG_VIEWS");
+  if (variant & kOneObject) frag = with_define(std::move(frag), "ONE_OBJECT");
   auto program = std::make_unique<Program>(vert, frag);
   bind_interface(*program, "passes/path.frag.glsl");
   return program;
@@ -97,13 +98,14 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
   // Only the code a frame needs: waves and foam when some object has them, the debug
-  // views when one is asked for.
+  // views when one is asked for, object loops of one iteration for a single object.
   bool waves = false, foam = false;
   for (const VesselFrame& v : f.vessels) {
     waves = waves || (v.has_liquid && !v.liquid.waves.flat());
     foam = foam || (v.has_liquid && v.foam.thickness > 1e-4);
   }
-  const int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0) | (debug != DebugView::None ? kDebug : 0);
+  const int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0) | (debug != DebugView::None ? kDebug : 0) |
+                      (one_object_variant_ && f.vessels.size() == 1 ? kOneObject : 0);
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
   glUseProgram(program->id());

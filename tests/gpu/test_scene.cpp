@@ -206,3 +206,29 @@ TEST(SceneData, RecordsCarryCoresPhysics) {
 
 }  // namespace
 }  // namespace draught::test
+
+namespace draught::test {
+namespace {
+
+// A single glass is drawn with the one-object shader variant; the general path (several
+// objects) must give the same picture for it: waves, a head and a cross-section included.
+TEST(Variants, OneObjectVariantDrawsWhatTheGeneralPathDraws) {
+  Gpu& g = gpu_instance();
+  const FrameState frames[] = {
+      scene_frame({"lager", "pint", {"render.supersample=1"}, {}}),
+      scene_frame({"stout", "nonic", {"render.supersample=1", "clip.enabled=true"}, {"eye=0,0.2,0.3", "target=0,0.14,0"}}),
+      timeline_frame("shake-and-settle", 1.3),
+  };
+  for (const FrameState& f : frames) {
+    const Image fast = g.renderer->render(f, 96, 96);
+    g.renderer->set_one_object_variant(false);
+    const Image general = g.renderer->render(f, 96, 96);
+    g.renderer->set_one_object_variant(true);
+    int worst = 0;
+    for (size_t i = 0; i < fast.rgba.size(); ++i) worst = std::max(worst, std::abs(int(fast.rgba[i]) - int(general.rgba[i])));
+    EXPECT_LE(worst, 1) << "the one-object variant differs from the general path";
+  }
+}
+
+}  // namespace
+}  // namespace draught::test

@@ -37,7 +37,7 @@ Hit hit_floor(vec3 o, vec3 d, float tmin) {
   float t = -o.y / d.y;
   if (t <= tmin) return no_hit();
   vec3 p = o + t * d;
-  for (int i = 0; i < frame.object_count; ++i) {
+  for (int i = 0; i < OBJECT_COUNT; ++i) {
     ObjectBounds b = fetch_object_bounds(i);
     vec3 rel = p - b.bound_base;
     if (dot(rel, rel) > b.bound_radius * b.bound_radius) continue;
@@ -86,7 +86,7 @@ vec3 glass_shadow(ObjectBody body, ShadowRay r) {
 void floor_occlusion(vec3 p, out vec3 direct, out float contact) {
   direct = vec3(1.0);
   contact = 1.0;
-  for (int i = 0; i < frame.object_count; ++i) {
+  for (int i = 0; i < OBJECT_COUNT; ++i) {
     ObjectBounds b = fetch_object_bounds(i);
     FloorView v = floor_view(b, p);
     ShadowRay r = shadow_ray(v);

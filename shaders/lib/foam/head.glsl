@@ -166,11 +166,11 @@ float lacing_cover(Vessel v, ObjectFoam f, vec3 p) {
 // `radiance` and attenuates `thr`.
 void foam_along(vec3 o, vec3 d, float t_end, inout vec3 radiance, inout vec3 thr) {
   float done = 0.0;  // heads before this distance are marched
-  for (int pass = 0; pass < frame.object_count; ++pass) {
+  for (int pass = 0; pass < OBJECT_COUNT; ++pass) {
     // The nearest head that starts after the ones done.
     int next = -1;
     float next_t0 = INF, next_t1 = INF;
-    for (int i = 0; i < frame.object_count; ++i) {
+    for (int i = 0; i < OBJECT_COUNT; ++i) {
       if (!object_in_reach(i, o, d, done, t_end) || fetch_object_shape(i).has_head == 0) continue;
       Vessel v = load_vessel(i);
       float t0 = done, t1 = t_end;
@@ -182,11 +182,12 @@ void foam_along(vec3 o, vec3 d, float t_end, inout vec3 radiance, inout vec3 thr
     }
     if (next < 0) return;
     Vessel v = load_vessel(next);
-    ObjectFoam f = fetch_object_foam(next);
+    ObjectFoam f = fetch_object_foam(v.row);
     vec3 lo = to_local_point(v, o), ld = to_local_dir(v, d), l = to_local_dir(v, frame.light_dir);
     bubble_caps(v, f, lo, ld, next_t0, next_t1, l, radiance, thr);
     march_foam(v, f, lo, ld, next_t0, next_t1, l, radiance, thr);
-    if (max(thr.r, max(thr.g, thr.b)) < 1e-3) return;
+    // (With one object there is one head: no second pass.)
+    if (max(thr.r, max(thr.g, thr.b)) < 1e-3 || OBJECT_COUNT == 1) return;
     done = next_t1;
   }
 }

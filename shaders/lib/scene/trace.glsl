@@ -39,7 +39,7 @@ int next_candidate(Search s, vec3 o, vec3 d, int medium, int obj, out float entr
   if (medium != MEDIUM_AIR) return s.after_row < 0 ? obj : -1;
   int row = -1;
   float first = INF;
-  for (int i = 0; i < frame.object_count; ++i) {
+  for (int i = 0; i < OBJECT_COUNT; ++i) {
     vec2 tr;
     if (!object_span(i, o, d, tr) || tr.y < s.tmin) continue;
     float e = max(tr.x, s.tmin);
@@ -66,7 +66,7 @@ bool search_step(inout Search s, vec3 o, vec3 d, int medium, int obj, out Vessel
     s.after_t0 = entry;
     s.after_row = cand;
     // (With one object there is never a second candidate: no second bounds pass.)
-    if (medium == MEDIUM_AIR && frame.object_count > 1 && next_candidate(s, o, d, medium, obj, entry) >= 0) return false;
+    if (medium == MEDIUM_AIR && OBJECT_COUNT > 1 && next_candidate(s, o, d, medium, obj, entry) >= 0) return false;
   }
   if (medium == MEDIUM_AIR) keep_nearest(s.best, hit_floor(o, d, s.tmin));
   if (s.best.obj >= 0 && s.best.obj != cand) v = load_vessel(s.best.obj);
