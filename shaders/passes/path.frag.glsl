@@ -38,7 +38,9 @@ float max3(vec3 v) { return max(v.r, max(v.g, v.b)); }
 
 // What a ray sees past every object: the floor or the studio from the air; from inside
 // a glass or a drink (a path that ran out of events) the studio.
-vec3 surroundings(vec3 o, vec3 d, int medium) { return medium == MEDIUM_AIR ? background(o, d) : studio_sky(d); }
+vec3 surroundings(vec3 o, vec3 d, int medium, Vessel known) {
+  return medium == MEDIUM_AIR ? background(o, d, known) : studio_sky(d);
+}
 
 // ---- the geometry of an interface (shared by the picture and the path-event view) ----
 
@@ -127,7 +129,7 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
       path.thr *= 1.0 - c.F;
     }
   }
-  if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_dist);
+  if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_dist, v);
   if (on_floor) return false;
   go_on(path, h, c, p);
   return true;
@@ -171,7 +173,12 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
       see_through = m;
       path.radiance += (path.thr - vec3(m)) * ambient_light();
     } else {
-      path.radiance += path.thr * surroundings(path.o, path.d, path.medium);
+#if ONE_OBJECT
+      Vessel known = load_vessel(0);  // with one object its records are at hand
+#else
+      Vessel known = no_vessel();
+#endif
+      path.radiance += path.thr * surroundings(path.o, path.d, path.medium, known);
     }
   }
   return path.radiance;
@@ -230,6 +237,7 @@ vec4 debug_medium_rule() {
 // ---- output ----
 
 void main() {
+  init_objects();
   vec3 dir = camera_dir(gl_FragCoord.xy);
 #if DEBUG_VIEWS
   int view = frame.debug_view;

@@ -12,8 +12,8 @@
 
 // The number of objects. The renderer compiles scenes of one object with ONE_OBJECT 1:
 // then every object loop has one iteration known at compile time (it disappears) and
-// every record fetch reads the constant row 0, which llvmpipe fetches more cheaply than
-// a row that varies per pixel. Same source, same results; only faster.
+// the object's records are fetched once per pixel (load_vessel). Same source, same
+// results (tests/gpu checks), only faster.
 #ifndef ONE_OBJECT
 #define ONE_OBJECT 0
 #endif
@@ -52,11 +52,33 @@ struct Vessel {
   ObjectLiquid liquid;
 };
 
+// No vessel (row -1): for code that takes records the caller may hold.
+Vessel no_vessel() { return Vessel(-1, no_object_bounds(), no_object_body(), no_object_shape(), no_object_liquid()); }
+
+Vessel fetch_vessel(int row) {
+  return Vessel(row, fetch_object_bounds(row), fetch_object_body(row), fetch_object_shape(row), fetch_object_liquid(row));
+}
+
+#if ONE_OBJECT
+// The one object's records, fetched once when the pixel starts (init_objects) and never
+// changed after: loops see a constant, not state they carry.
+Vessel g_the_object;
+#endif
+
+// Call first in main().
+void init_objects() {
+#if ONE_OBJECT
+  g_the_object = fetch_vessel(0);
+#endif
+}
+
+// Object `row`'s records.
 Vessel load_vessel(int row) {
 #if ONE_OBJECT
-  row = 0;
+  return g_the_object;
+#else
+  return fetch_vessel(row);
 #endif
-  return Vessel(row, fetch_object_bounds(row), fetch_object_body(row), fetch_object_shape(row), fetch_object_liquid(row));
 }
 
 // Between the vessel's frame and the world. The rotation's inverse is its transpose.
