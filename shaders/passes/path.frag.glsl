@@ -38,9 +38,7 @@ float max3(vec3 v) { return max(v.r, max(v.g, v.b)); }
 
 // What a ray sees past every object: the floor or the studio from the air; from inside
 // a glass or a drink (a path that ran out of events) the studio.
-vec3 surroundings(vec3 o, vec3 d, int medium, Vessel known) {
-  return medium == MEDIUM_AIR ? background(o, d, known) : studio_sky(d);
-}
+vec3 surroundings(vec3 o, vec3 d, int medium) { return medium == MEDIUM_AIR ? background(o, d) : studio_sky(d); }
 
 // ---- the geometry of an interface (shared by the picture and the path-event view) ----
 
@@ -84,7 +82,7 @@ void go_on(inout Path path, Hit h, Crossing c, vec3 p) {
 // reached the floor).
 bool shade_interface(inout Path path, Hit h, Vessel v) {
   vec3 p = path.o + h.t * path.d;
-  ObjectGlass g = fetch_object_glass(v.row);
+  ObjectGlass g = glass_of(v.row);
   // The segment up to the surface, inside the path's medium.
   if (path.medium == MEDIUM_LIQUID) path.radiance += path.thr * haze_inscatter(v, h.t);
   path.thr *= medium_transmittance(v, g, path.medium, h.t);
@@ -129,7 +127,7 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
       path.thr *= 1.0 - c.F;
     }
   }
-  if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_dist, v);
+  if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_dist);
   if (on_floor) return false;
   go_on(path, h, c, p);
   return true;
@@ -173,12 +171,7 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
       see_through = m;
       path.radiance += (path.thr - vec3(m)) * ambient_light();
     } else {
-#if ONE_OBJECT
-      Vessel known = load_vessel(0);  // with one object its records are at hand
-#else
-      Vessel known = no_vessel();
-#endif
-      path.radiance += path.thr * surroundings(path.o, path.d, path.medium, known);
+      path.radiance += path.thr * surroundings(path.o, path.d, path.medium);
     }
   }
   return path.radiance;
@@ -221,7 +214,7 @@ vec4 debug_path_event(vec3 eye, vec3 dir, int n) {
     if (e == n) return vec4(h.m != M_NONE ? h.t : 0.0, float(h.m), float(h.obj), float(path.medium));
     if (h.m == M_NONE || h.m == M_FLOOR) break;
     vec3 p = path.o + h.t * path.d;
-    go_on(path, h, crossing_at(path, h, v, fetch_object_glass(v.row), below_liquid(v, to_local_point(v, p))), p);
+    go_on(path, h, crossing_at(path, h, v, glass_of(v.row), below_liquid(v, to_local_point(v, p))), p);
   }
   return vec4(0.0, float(M_NONE), -1.0, float(path.medium));
 }

@@ -38,11 +38,11 @@ Hit hit_floor(vec3 o, vec3 d, float tmin) {
   if (t <= tmin) return no_hit();
   vec3 p = o + t * d;
   for (int i = 0; i < OBJECT_COUNT; ++i) {
-    ObjectBounds b = fetch_object_bounds(i);
+    ObjectBounds b = bounds_of(i);
     vec3 rel = p - b.bound_base;
     if (dot(rel, rel) > b.bound_radius * b.bound_radius) continue;
     FloorView v = floor_view(b, p);
-    if (abs(v.along) < 1e-5 && length(v.across) <= fetch_object_body(i).foot_radius) return no_hit();
+    if (abs(v.along) < 1e-5 && length(v.across) <= body_of(i).foot_radius) return no_hit();
   }
   return Hit(t, vec3(0.0, 1.0, 0.0), M_FLOOR, -1);
 }
@@ -82,15 +82,12 @@ vec3 glass_shadow(ObjectBody body, ShadowRay r) {
 // Direct light (shadows) and ambient occlusion (contact) at floor point p (world) from
 // every glass. Each glass's bounds decide first whether it can shade p at all (the
 // mean radius and the height are within the bounds); only then are its body's two
-// texels fetched. `known`: a vessel whose records the caller holds (the one the path
-// just met; row -1 for none), not fetched again.
-void floor_occlusion(vec3 p, Vessel known, out vec3 direct, out float contact) {
+// texels fetched.
+void floor_occlusion(vec3 p, out vec3 direct, out float contact) {
   direct = vec3(1.0);
   contact = 1.0;
   for (int i = 0; i < OBJECT_COUNT; ++i) {
-    bool held = i == known.row;
-    ObjectBounds b = known.bounds;
-    if (!held) b = fetch_object_bounds(i);
+    ObjectBounds b = bounds_of(i);
     FloorView v = floor_view(b, p);
     ShadowRay r = shadow_ray(v);
     // Contact: beyond three bound radii (at least two foot radii from the foot) it
@@ -99,8 +96,7 @@ void floor_occlusion(vec3 p, Vessel known, out vec3 direct, out float contact) {
     bool near = dot(rel, rel) < 9.0 * b.bound_radius * b.bound_radius;
     bool shade = r.across && r.t > 0.0 && r.y <= b.bound_length + 0.004 && r.dist < 1.05 * b.bound_radius;
     if (near || shade) {  // (a block, not a continue: llvmpipe runs it faster)
-      ObjectBody body = known.body;
-      if (!held) body = fetch_object_body(i);
+      ObjectBody body = body_of(i);
       // Darker near the foot (which lifts off the floor when the glass tips).
       float foot_dist = length(vec2(max(length(v.across) - body.foot_radius, 0.0), v.along));
       if (near) contact *= 1.0 - 0.55 * exp(-foot_dist / (0.25 * body.foot_radius));
@@ -109,14 +105,14 @@ void floor_occlusion(vec3 p, Vessel known, out vec3 direct, out float contact) {
   }
 }
 
-// The floor at p (world), seen from `dist` away; `known` as for floor_occlusion.
-vec3 shade_floor(vec3 p, float dist, Vessel known) {
+// The floor at p (world), seen from `dist` away.
+vec3 shade_floor(vec3 p, float dist) {
   vec2 cell = floor(p.xz / frame.checker_size);
   bool light_square = mod(cell.x + cell.y, 2.0) < 0.5;
   vec3 albedo = light_square ? frame.floor_a : frame.floor_b;
   vec3 direct;
   float contact;
-  floor_occlusion(p, known, direct, contact);
+  floor_occlusion(p, direct, contact);
   vec3 light = ambient_light() * contact + frame.light_color * frame.light_intensity * max(frame.light_dir.y, 0.0) * direct;
   vec3 c = albedo * light / PI * 1.6;
   // Far floor fades into the studio backdrop, so the checker never aliases at the horizon.
@@ -130,10 +126,10 @@ bool floor_along(vec3 o, vec3 d, out float t) {
 }
 
 // Everything that is not a glass, along a world ray: the floor where the ray meets it,
-// else the sky. `known` as for floor_occlusion.
-vec3 background(vec3 o, vec3 d, Vessel known) {
+// else the sky.
+vec3 background(vec3 o, vec3 d) {
   float t;
-  if (floor_along(o, d, t)) return shade_floor(o + t * d, t, known);
+  if (floor_along(o, d, t)) return shade_floor(o + t * d, t);
   return studio_sky(d);
 }
 

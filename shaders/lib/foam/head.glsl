@@ -171,7 +171,7 @@ void foam_along(vec3 o, vec3 d, float t_end, inout vec3 radiance, inout vec3 thr
     int next = -1;
     float next_t0 = INF, next_t1 = INF;
     for (int i = 0; i < OBJECT_COUNT; ++i) {
-      if (!object_in_reach(i, o, d, done, t_end) || fetch_object_shape(i).has_head == 0) continue;
+      if (!object_in_reach(i, o, d, done, t_end) || load_vessel(i).shape.has_head == 0) continue;
       Vessel v = load_vessel(i);
       float t0 = done, t1 = t_end;
       if (foam_interval(v, fetch_object_foam(i), to_local_point(v, o), to_local_dir(v, d), t0, t1) && t0 < next_t0) {

@@ -52,9 +52,6 @@ struct Vessel {
   ObjectLiquid liquid;
 };
 
-// No vessel (row -1): for code that takes records the caller may hold.
-Vessel no_vessel() { return Vessel(-1, no_object_bounds(), no_object_body(), no_object_shape(), no_object_liquid()); }
-
 Vessel fetch_vessel(int row) {
   return Vessel(row, fetch_object_bounds(row), fetch_object_body(row), fetch_object_shape(row), fetch_object_liquid(row));
 }
@@ -63,21 +60,44 @@ Vessel fetch_vessel(int row) {
 // The one object's records, fetched once when the pixel starts (init_objects) and never
 // changed after: loops see a constant, not state they carry.
 Vessel g_the_object;
+ObjectGlass g_the_glass;
 #endif
 
 // Call first in main().
 void init_objects() {
 #if ONE_OBJECT
   g_the_object = fetch_vessel(0);
+  g_the_glass = fetch_object_glass(0);
 #endif
 }
 
-// Object `row`'s records.
+// Object `row`'s records (with one object: those fetched when the pixel started).
 Vessel load_vessel(int row) {
 #if ONE_OBJECT
   return g_the_object;
 #else
   return fetch_vessel(row);
+#endif
+}
+ObjectBounds bounds_of(int row) {
+#if ONE_OBJECT
+  return g_the_object.bounds;
+#else
+  return fetch_object_bounds(row);
+#endif
+}
+ObjectBody body_of(int row) {
+#if ONE_OBJECT
+  return g_the_object.body;
+#else
+  return fetch_object_body(row);
+#endif
+}
+ObjectGlass glass_of(int row) {
+#if ONE_OBJECT
+  return g_the_glass;
+#else
+  return fetch_object_glass(row);
 #endif
 }
 
@@ -119,7 +139,7 @@ bool cylinder_span(vec3 o, vec3 d, vec3 b, vec3 a, float R, float L, out vec2 tr
 // Where the world ray o + t d is inside object `row`'s bounding cylinder (slightly
 // enlarged against float round-off; it only culls): [t0, t1], false when it misses.
 bool object_span(int row, vec3 o, vec3 d, out vec2 tr) {
-  ObjectBounds b = fetch_object_bounds(row);
+  ObjectBounds b = bounds_of(row);
   float pad = 1e-3 * b.bound_radius + 1e-5;
   return cylinder_span(o, d, b.bound_base - pad * b.bound_axis, b.bound_axis, b.bound_radius + pad,
                        b.bound_length + 2.0 * pad, tr);
