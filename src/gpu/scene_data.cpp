@@ -100,7 +100,8 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.plane_offset = float(vf.liquid.offset);
   const SurfaceWaves& w = vf.liquid.waves;
   r.wave_ring = float(w.ring);
-  r.wave_cross = glm::vec2(w.cross);
+  r.wave_cos2a = float(w.cross.x);
+  r.wave_sin2a = float(w.cross.y);
   r.wave_radius = float(w.radius);
   r.ior = vp.liquid.ior;
   r.haze_color = vp.liquid.haze_color;
@@ -136,7 +137,7 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
 }
 
 std::vector<glm::vec4> pack_knots(const Vessel& v) {
-  std::vector<glm::vec4> row(size_t(contract::kSegments));
+  std::vector<glm::vec4> row(static_cast<size_t>(contract::kSegments));
   for (size_t k = 0; k < row.size(); ++k)
     row[k] = glm::vec4(glm::dvec4(v.r_outer[k], v.r_inner[k], v.r_outer[k + 1], v.r_inner[k + 1]));
   return row;

@@ -22,6 +22,19 @@
 
 int g_foam_steps = 0;  // march steps this pixel took (cost view)
 
+// Big bubble i of vessel v (placed by core): centre (local frame) and radius; a popped
+// one (its record's radius < 0) is a void that heals.
+struct BigBubble {
+  vec3 centre;
+  float radius;
+  bool popped;
+};
+
+BigBubble big_bubble(Vessel v, int i) {
+  vec4 b = object_big_bubbles(v.row, i);  // the record's layout: centre xyz, signed radius
+  return BigBubble(b.xyz, abs(b.w), b.w < 0.0);
+}
+
 // The head's thickness above the liquid at (x, z): domed or concave (as core/foam
 // FoamFrame::thickness_at).
 float foam_thickness_at(Vessel v, ObjectFoam f, vec2 xz) {
@@ -38,11 +51,11 @@ float foam_density(Vessel v, ObjectFoam f, vec3 p, float height, float top) {
   float d = f.density * max(1.0 + 1.6 * f.detail * (value_noise(p / scale) - 0.5), 0.0);
   d *= clamp((top - height) / (0.12 * top), 0.0, 1.0);  // a soft top, a crisp underside
   for (int i = 0; i < f.big_bubble_count; ++i) {
-    vec4 b = object_big_bubbles(v.row, i);
-    float r = abs(b.w), dist = length(p - b.xyz);
+    BigBubble b = big_bubble(v, i);
+    float r = b.radius, dist = length(p - b.centre);
     if (dist < r) return 0.0;  // inside a big bubble, or the void a popped one left
     float ring = (dist - r) / (0.45 * r);
-    d *= 1.0 + (b.w < 0.0 ? 0.6 : 1.8) * exp(-ring * ring);
+    d *= 1.0 + (b.popped ? 0.6 : 1.8) * exp(-ring * ring);
   }
   return d;
 }
@@ -75,7 +88,7 @@ vec3 foam_light(Vessel v, ObjectFoam f, vec3 d, vec3 l, float depth, float side)
 // cylinder.
 bool foam_interval(Vessel v, ObjectFoam f, vec3 o, vec3 d, inout float t0, inout float t1) {
   vec3 n = v.liquid.plane_normal;
-  float waves = abs(v.liquid.wave_ring) + abs(v.liquid.wave_cross.x) + abs(v.liquid.wave_cross.y);
+  float waves = abs(v.liquid.wave_ring) + abs(v.liquid.wave_cos2a) + abs(v.liquid.wave_sin2a);
   float top_max = f.thickness * (1.0 + abs(f.dome)) + waves + 0.006;
   float h0 = dot(n, o) - v.liquid.plane_offset, dh = dot(n, d);
   float lo = -waves;
@@ -128,10 +141,10 @@ void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec3
 void bubble_caps(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec3 l, inout vec3 radiance,
                  inout vec3 thr) {
   for (int i = 0; i < f.big_bubble_count; ++i) {
-    vec4 b = object_big_bubbles(v.row, i);
-    if (b.w < 0.0) continue;  // popped
-    vec3 c = b.xyz;
-    float r = b.w;
+    BigBubble b = big_bubble(v, i);
+    if (b.popped) continue;
+    vec3 c = b.centre;
+    float r = b.radius;
     vec3 oc = o - c;
     float bb = dot(oc, d), disc = bb * bb - (dot(oc, oc) - r * r);
     if (disc <= 0.0) continue;

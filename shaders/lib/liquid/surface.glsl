@@ -22,8 +22,8 @@ float wave_height(ObjectLiquid lq, vec2 xz) {
     q *= 1.25 / sqrt(u2);
     u2 = 1.5625;
   }
-  return lq.wave_ring * (1.0 - 3.0 * u2 + 1.5 * u2 * u2) + lq.wave_cross.x * (q.x * q.x - q.y * q.y) +
-         lq.wave_cross.y * 2.0 * q.x * q.y;
+  return lq.wave_ring * (1.0 - 3.0 * u2 + 1.5 * u2 * u2) + lq.wave_cos2a * (q.x * q.x - q.y * q.y) +
+         lq.wave_sin2a * 2.0 * q.x * q.y;
 }
 
 vec2 wave_gradient(ObjectLiquid lq, vec2 xz) {
@@ -32,8 +32,8 @@ vec2 wave_gradient(ObjectLiquid lq, vec2 xz) {
   bool held = len > 1.25;  // chain rule through the pull-in (as core/liquid/slosh.cpp)
   vec2 c = held ? q * (1.25 / len) : q;
   float dr = lq.wave_ring * (-6.0 + 6.0 * dot(c, c));
-  vec2 g = vec2(dr * c.x + 2.0 * lq.wave_cross.x * c.x + 2.0 * lq.wave_cross.y * c.y,
-                dr * c.y - 2.0 * lq.wave_cross.x * c.y + 2.0 * lq.wave_cross.y * c.x);
+  vec2 g = vec2(dr * c.x + 2.0 * lq.wave_cos2a * c.x + 2.0 * lq.wave_sin2a * c.y,
+                dr * c.y - 2.0 * lq.wave_cos2a * c.y + 2.0 * lq.wave_sin2a * c.x);
   if (held) {
     vec2 dir = q / len;
     g = (1.25 / len) * (g - dir * dot(dir, g));
