@@ -60,7 +60,7 @@ Program::Program(const ShaderSource& vertex, const ShaderSource& fragment) {
 }
 
 void check_uniform_block(GLuint program, const char* block, std::span<const contract::UniformMember> members,
-                         std::size_t size, unsigned binding, const std::string& what) {
+                         std::size_t used, std::size_t size, unsigned binding, const std::string& what) {
   const std::string where = what + ": uniform block '" + block + "'";
   const std::string twin = " (generated from src/interface/*.def; was the shader's block edited by hand?)";
   const GLuint index = glGetUniformBlockIndex(program, block);
@@ -83,9 +83,9 @@ void check_uniform_block(GLuint program, const char* block, std::span<const cont
   if (size_t(active) != members.size())
     throw ShaderError(where + " has " + std::to_string(active) + " members but C++ knows " +
                       std::to_string(members.size()) + twin);
-  if (size_t(data_size) != size)
-    throw ShaderError(where + " is " + std::to_string(data_size) + " bytes but its C++ struct is " +
-                      std::to_string(size) + twin);
+  if (size_t(data_size) < used || size_t(data_size) > size)
+    throw ShaderError(where + " is " + std::to_string(data_size) + " bytes but its C++ struct holds " +
+                      std::to_string(used) + " (" + std::to_string(size) + " with padding)" + twin);
   glUniformBlockBinding(program, index, binding);
 }
 

@@ -51,7 +51,7 @@ namespace {
 // the Frame block (and, for the path pass, the scene's data textures).
 void bind_interface(const Program& program, const std::string& what) {
   check_uniform_block(program.id(), contract::kFrameBlockName, contract::kFrameBlockMembers,
-                      sizeof(contract::FrameBlock), contract::kFrameBlockBinding, what);
+                      contract::kFrameBlockUsedBytes, sizeof(contract::FrameBlock), contract::kFrameBlockBinding, what);
   glUseProgram(program.id());
   for (const contract::Sampler& s : {contract::kObjectSampler, contract::kKnotsSampler})
     if (GLint at = glGetUniformLocation(program.id(), s.name); at >= 0) glUniform1i(at, s.unit);

@@ -62,7 +62,8 @@ TEST(Contract, UniformBlockMismatchNamesTheMember) {
   gpu::Program program(vert, frag);
   try {
     gpu::check_uniform_block(program.id(), contract::kFrameBlockName, contract::kFrameBlockMembers,
-                             sizeof(contract::FrameBlock), contract::kFrameBlockBinding, "test.frag");
+                             contract::kFrameBlockUsedBytes, sizeof(contract::FrameBlock), contract::kFrameBlockBinding,
+                             "test.frag");
     ADD_FAILURE() << "a block with moved members was accepted";
   } catch (const gpu::ShaderError& e) {
     const std::string what = e.what();
