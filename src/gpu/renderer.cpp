@@ -44,9 +44,7 @@ ShaderSource with_define(ShaderSource src, const std::string& name) {
   src.text.insert(eol + 1, "#define " + name + " 1\n#line 2 0\n");
   return src;
 }
-}  // namespace
 
-namespace {
 // Uniform-block binding, block layout check and texture units for a program that reads
 // the Frame block (and, for the path pass, the scene's data textures).
 void bind_interface(const Program& program, const std::string& what) {
