@@ -15,6 +15,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/liquid/beverage.cpp
   src/core/liquid/slosh.cpp
   src/core/foam/foam.cpp
+  src/core/environment/reflection.cpp
   src/core/bubbles/bubbles.cpp
   src/core/bubbles/bubble_view.cpp
   src/core/reference/intersect.cpp

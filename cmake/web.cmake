@@ -46,13 +46,15 @@ set(web_core ${DRAUGHT_CORE_SOURCES_ABS})
 set(web_gpu
   "${DRAUGHT_ROOT}/src/gpu/shader_source.cpp"
   "${DRAUGHT_ROOT}/src/gpu/program.cpp"
+  "${DRAUGHT_ROOT}/src/gpu/scene_data.cpp"
   "${DRAUGHT_ROOT}/src/gpu/renderer.cpp")
 include("${CMAKE_CURRENT_LIST_DIR}/shaders.cmake")
 draught_embed_shaders(web_embedded)
 
 set(web_flags -fexceptions)  # the core reports bad input by throwing
 add_library(draught_web_core STATIC ${web_core} ${web_gpu} "${web_embedded}")
-target_include_directories(draught_web_core PUBLIC "${DRAUGHT_ROOT}/src")
+target_include_directories(draught_web_core PUBLIC "${DRAUGHT_ROOT}/src" "${DRAUGHT_GENERATED_INCLUDE_DIR}")
+add_dependencies(draught_web_core draught_contract)  # generated/*.hpp before any compile
 target_include_directories(draught_web_core SYSTEM PUBLIC "${web_inc}")
 target_compile_options(draught_web_core PUBLIC ${web_flags})
 target_compile_definitions(draught_web_core PRIVATE

@@ -21,7 +21,30 @@ struct BenchScene {
   SceneRequest request;
   const char* timeline = nullptr;  // a glass in motion: this timeline's frame at `at` seconds
   double at = 0;
+  bool flight = false;  // the tasting flight (four glasses) seen with request.camera
+  bool general = false;  // drawn with the general (several-object) shader path
 };
+
+// The tasting flight of tests/gpu (pilsner, amber ale in a tulip, stout in a nonic,
+// hefeweizen in a weizen, 0.12 m apart on x), built from presets until
+// presets/scenes/flight.json ships; `camera` as --camera, auto-framing off.
+Scene flight(const std::vector<std::string>& camera) {
+  struct Pour {
+    const char *name, *drink, *glass;
+    float x;
+  };
+  static const Pour pours[] = {{"pilsner", "pilsner", "pilsner", -0.18f},
+                               {"amber-ale", "amber-ale", "tulip", -0.06f},
+                               {"stout", "stout", "nonic", 0.06f},
+                               {"hefeweizen", "hefeweizen", "weizen", 0.18f}};
+  Scene s;
+  for (const Pour& p : pours) {
+    const Params params = resolve_scene({p.drink, p.glass, {"camera.auto_frame=false"}, camera});
+    if (s.objects.empty()) s.params = params;
+    s.objects.push_back(SceneObject{p.name, Placement{{p.x, 0.0f, 0.0f}, 0.0f}, VesselObject{params}});
+  }
+  return s;
+}
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -29,9 +52,55 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// One scene at one size: frame times, work per pixel, covered pixels (the first surface is
+// a glass) and what the glasses cost per thousand covered pixels (the frame less the
+// empty view, med_empty).
+struct Measured {
+  double median = 0, min = 0, max = 0, tests = 0, tests_max = 0, foam = 0, per_kpx = 0;
+  long covered = 0;
+};
+
+double median_ms(gpu::Renderer& renderer, const FrameState& f, int w, int h, int frames, std::vector<double>* all = nullptr);
+
+Measured measure(gpu::Renderer& renderer, const FrameState& f, int size, int frames, double med_empty) {
+  Measured m;
+  std::vector<double> ms;
+  m.median = median_ms(renderer, f, size, size, frames, &ms);
+  m.min = *std::min_element(ms.begin(), ms.end());
+  m.max = *std::max_element(ms.begin(), ms.end());
+  const gpu::DebugImage first = renderer.render_debug(f, size, size, gpu::DebugView::Depth);
+  for (size_t i = 0; i < first.rgba.size(); i += 4) m.covered += first.rgba[i + 1] >= float(int(Material::GlassOuter));
+  // Work per pixel: intersection tests over the whole path (analytic bound, no marching).
+  const gpu::DebugImage cost = renderer.render_debug(f, size, size, gpu::DebugView::Cost);
+  for (size_t i = 0; i < cost.rgba.size(); i += 4) {
+    m.tests += cost.rgba[i];
+    m.tests_max = std::max(m.tests_max, double(cost.rgba[i]));
+    m.foam += cost.rgba[i + 1];  // foam march steps
+  }
+  const double px = double(size) * size;
+  m.tests /= px;
+  m.foam /= px;
+  m.per_kpx = m.covered ? 1000.0 * (m.median - med_empty) / double(m.covered) : 0.0;
+  return m;
+}
+
+double median_ms(gpu::Renderer& renderer, const FrameState& f, int w, int h, int frames, std::vector<double>* all) {
+  gpu::RenderTarget target(w, h, false);
+  std::vector<double> ms;
+  for (int i = 0; i < frames + 2; ++i) {
+    auto t0 = std::chrono::steady_clock::now();
+    renderer.draw(f, w, h);
+    renderer.finish();
+    double dt = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (i >= 2) ms.push_back(dt);  // the first draws compile
+  }
+  if (all) *all = ms;
+  return median(ms);
+}
+
 }  // namespace
 
-int bench(int frames, const std::vector<int>& sizes, bool verbose) {
+int bench(int frames, const std::vector<int>& sizes, const std::vector<std::string>& only, bool verbose) {
   const std::vector<BenchScene> scenes = {
       {"pint-lager", {"lager", "pint", {}, {}}},
       {"nonic-stout", {"stout", "nonic", {}, {}}},
@@ -41,6 +110,12 @@ int bench(int frames, const std::vector<int>& sizes, bool verbose) {
       {"nonic-stout-head-closeup", {"stout", "nonic", {}, {"eye=0,0.2,0.3", "target=0,0.14,0", "vfov=22"}}},
       {"pint-lager-sloshing", {"lager", "", {}, {}}, "shake-and-settle", 1.3},
       {"wine-red-spilling", {"red-wine", "", {}, {}}, "tilt-until-spill", 3.0},
+      // Scenes of several objects. The pint with the flight's camera distance and angle,
+      // so that a covered pixel costs the same in both if objects cost nothing extra.
+      {"pint-lager-general-path", {"lager", "pint", {}, {}}, nullptr, 0, false, true},
+      {"pint-lager-flight-camera", {"lager", "pint", {"camera.auto_frame=false"}, {"eye=0,0.17,0.8", "target=0,0.1,0", "vfov=26"}}},
+      {"flight", {"", "", {}, {"eye=0,0.17,0.8", "target=0,0.1,0", "vfov=26"}}, nullptr, 0, true},
+      {"flight-angle", {"", "", {}, {"eye=0.62,0.26,0.5", "target=-0.01,0.09,0", "vfov=30"}}, nullptr, 0, true},
   };
   auto ctx = gpu::HeadlessContext::create();
   gpu::Renderer renderer;
@@ -48,39 +123,47 @@ int bench(int frames, const std::vector<int>& sizes, bool verbose) {
   std::printf("renderer: %s (%s)%s%s; %d frames per row after 2 warm-up frames; %u hardware threads\n",
               ctx->renderer().c_str(), ctx->platform().c_str(), threads ? "; LP_NUM_THREADS=" : "",
               threads ? threads : "", frames, std::thread::hardware_concurrency());
-  std::printf("%-26s %-9s %10s %10s %10s %8s %9s %7s %9s\n", "scene", "size", "median ms", "min ms", "max ms", "fps",
-              "tests/px", "max/px", "foam/px");
+  std::printf("%-26s %-9s %10s %10s %10s %8s %9s %7s %9s %9s %11s\n", "scene", "size", "median ms", "min ms", "max ms",
+              "fps", "tests/px", "max/px", "foam/px", "covered", "ms/kpx");
   for (const auto& s : scenes) {
+    if (!only.empty() && std::find(only.begin(), only.end(), s.name) == only.end()) continue;
     std::string log;
-    Params p = resolve_scene(s.request, &log);
-    if (verbose) std::fprintf(stderr, "%s", log.c_str());
-    p.render.supersample = 1;
-    FrameState f = s.timeline ? timeline_frame(load_timeline(s.timeline), p, s.at) : make_frame(p);
+    FrameState f;
+    if (s.flight) {
+      f = make_frame(flight(s.request.camera));
+    } else {
+      Params p = resolve_scene(s.request, &log);
+      if (verbose) std::fprintf(stderr, "%s", log.c_str());
+      f = s.timeline ? timeline_frame(load_timeline(s.timeline), p, s.at) : make_frame(p);
+    }
+    f.params.render.supersample = 1;
+    // The same view with no objects: what the floor and the sky cost.
+    FrameState empty = f;
+    empty.vessels.clear();
+    renderer.set_one_object_variant(!s.general);
     for (int size : sizes) {
-      gpu::RenderTarget target(size, size, false);
-      std::vector<double> ms;
-      for (int i = 0; i < frames + 2; ++i) {
-        auto t0 = std::chrono::steady_clock::now();
-        renderer.draw(f, size, size);
-        renderer.finish();
-        double dt = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-        if (i >= 2) ms.push_back(dt);
-      }
-      // Work per pixel: intersection tests over the whole path (analytic bound, no marching).
-      gpu::DebugImage cost = renderer.render_debug(f, size, size, gpu::DebugView::Cost);
-      double cost_sum = 0, cost_max = 0, foam_sum = 0;
-      for (size_t i = 0; i < cost.rgba.size(); i += 4) {
-        cost_sum += cost.rgba[i];
-        cost_max = std::max(cost_max, double(cost.rgba[i]));
-        foam_sum += cost.rgba[i + 1];  // foam march steps
-      }
-      const double cost_mean = cost_sum / (double(size) * size);
-      double med = median(ms);
+      const double med_empty = median_ms(renderer, empty, size, size, frames);
+      const Measured m = measure(renderer, f, size, frames, med_empty);
       char sz[32];
       std::snprintf(sz, sizeof sz, "%dx%d", size, size);
-      std::printf("%-26s %-9s %10.2f %10.2f %10.2f %8.1f %9.1f %7.0f %9.1f\n", s.name, sz, med,
-                  *std::min_element(ms.begin(), ms.end()), *std::max_element(ms.begin(), ms.end()), 1000.0 / med,
-                  cost_mean, cost_max, foam_sum / (double(size) * size));
+      std::printf("%-26s %-9s %10.2f %10.2f %10.2f %8.1f %9.1f %7.0f %9.1f %9ld %11.4f\n", s.name, sz, m.median,
+                  m.min, m.max, 1000.0 / m.median, m.tests, m.tests_max, m.foam, m.covered, m.per_kpx);
+      if (s.flight) {
+        // Each glass of the flight alone in the same view: what the same glasses cost
+        // without each other (the one-object shader variant, as a single glass renders).
+        double extra = 0;
+        long covered = 0;
+        for (size_t k = 0; k < f.vessels.size(); ++k) {
+          FrameState solo = f;
+          solo.vessels = {f.vessels[k]};
+          const Measured a = measure(renderer, solo, size, frames, med_empty);
+          extra += a.median - med_empty;
+          covered += a.covered;
+        }
+        const double solo_kpx = 1000.0 * extra / double(std::max(covered, 1L));
+        std::printf("%-26s %-9s %10s %10s %10s %8s %9s %7s %9s %9ld %11.4f  (flight / alone: %.2fx)\n",
+                    "  each glass alone", sz, "", "", "", "", "", "", "", covered, solo_kpx, m.per_kpx / solo_kpx);
+      }
       std::fflush(stdout);
     }
   }

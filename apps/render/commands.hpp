@@ -35,7 +35,8 @@ int animate(const RenderRequest&, const AnimateRequest&);
 int list_presets();
 int validate(const std::vector<std::string>& files);
 int print_params(bool markdown);
-int bench(int frames, const std::vector<int>& sizes, bool verbose);
+// `only`: scene names to run (empty: all).
+int bench(int frames, const std::vector<int>& sizes, const std::vector<std::string>& only, bool verbose);
 
 // "512x256" -> 512, 256; throws InputError.
 void parse_size(const std::string& text, int& w, int& h);

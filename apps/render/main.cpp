@@ -65,6 +65,8 @@ int main(int argc, char** argv) {
   auto* bench = app.add_subcommand("bench", "Render fixed scenes for N frames and print median frame times");
   bench->add_option("-n,--frames", frames, "Frames per scene and size (1-10000)")->capture_default_str();
   bench->add_option("--sizes", sizes, "Square image sizes, comma-separated")->capture_default_str();
+  std::vector<std::string> bench_scenes;
+  bench->add_option("--scenes", bench_scenes, "Only these scenes (names as printed)")->delimiter(',');
 
   try {
     cli::check_verb(app, argc, argv);
@@ -109,7 +111,7 @@ int main(int argc, char** argv) {
     if (*bench) {
       cli::check_device_environment();
       return cli::bench(cli::integer_flag("--frames", frames, 1, 10000),
-                        cli::integer_list_flag("--sizes", sizes, 1, 8192), verbose);
+                        cli::integer_list_flag("--sizes", sizes, 1, 8192), bench_scenes, verbose);
     }
   } catch (const std::exception& e) {
     // Capped: a message is never a flood, and never ends inside a UTF-8 character.

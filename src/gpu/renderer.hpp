@@ -1,10 +1,12 @@
-// gpu::Renderer draws a FrameState. It packs the uniform block, runs the vessel pass
-// into an offscreen framebuffer and reads back images. It does no physics.
+// gpu::Renderer draws a FrameState: it packs the generated Frame uniform block and the
+// scene's data textures (gpu/scene_data), runs the path pass (one path per pixel
+// through every object) into an offscreen framebuffer, draws the rising bubbles over it
+// and reads back images. It does no physics.
 #pragma once
 
 #include "core/scene/frame.hpp"
 #include "core/io/image.hpp"
-#include "gpu/uniforms.hpp"
+#include "generated/constants.hpp"
 
 #include <filesystem>
 #include <memory>
@@ -13,19 +15,21 @@
 namespace draught::gpu {
 
 class Program;
+class SceneTextures;
 
-enum class DebugView { None = 0, Depth = 1, Normal = 2, Material = 3, Cost = 4 };
+// Debug views, declared in src/interface/constants.def (shared with the shaders).
+using contract::DebugView;
 
-// Raw debug channels per pixel, rows top-down: Depth/Material: (t, material, 0, 1);
+// Raw debug channels per pixel, rows top-down: Depth/Material: (t, material, object, 1);
 // Normal: (nx, ny, nz, material); Cost: (segment and torus intersections solved for
-// the whole path, foam march steps, 0, 1). t is the distance to the first surface, 0 for none.
+// the whole path, foam march steps, object bounds entered, 1); PathEvent: (distance from
+// the previous event, material, object, medium before it); MediumRule: (medium, 0, 0, 1).
+// t is the distance to the first surface, 0 for none.
 struct DebugImage {
   int width = 0, height = 0;
   std::vector<float> rgba;
   const float* px(int x, int y) const { return &rgba[(size_t(y) * size_t(width) + size_t(x)) * 4]; }
 };
-
-FrameUniforms pack_uniforms(const FrameState&, int width, int height, DebugView);
 
 // An offscreen colour target, bound on creation: RGBA8 for pictures, RGBA32F for debug
 // channels. Unbinds and frees itself when it goes out of scope.
@@ -44,29 +48,40 @@ class RenderTarget {
 class Renderer {
  public:
   // Needs a current GLES 3.0 context. Compiles the shaders (embedded, or from
-  // shader_dir when given); throws ShaderError naming file and line.
+  // shader_dir when given) and checks every uniform-block member's offset against the
+  // driver; throws ShaderError naming file and line, or the member.
   explicit Renderer(const std::filesystem::path& shader_dir = {});
   ~Renderer();
 
   // The final picture at width x height (supersampled by params.render.supersample).
   Image render(const FrameState&, int width, int height);
-  DebugImage render_debug(const FrameState&, int width, int height, DebugView);
+  // Debug channels; `event` is the event the PathEvent view reports (0 = first surface).
+  DebugImage render_debug(const FrameState&, int width, int height, DebugView, int event = 0);
   // Draws into the currently bound framebuffer (windows, the web page, benchmarks).
-  void draw(const FrameState&, int width, int height, DebugView = DebugView::None);
+  void draw(const FrameState&, int width, int height, DebugView = DebugView::None, int event = 0);
   void finish();
+  // The scene's data textures (tests check what a frame uploads).
+  const SceneTextures& scene_textures() const { return *textures_; }
+  // Scenes of one object are drawn with the one-object shader variant (object loops
+  // resolved at compile time; the same pictures, faster on llvmpipe). Off: every scene
+  // takes the general path (tests and benchmarks compare the two).
+  void set_one_object_variant(bool on) { one_object_variant_ = on; }
 
  private:
   void draw_bubbles(const FrameState&, int width, int height);
 
-  enum Variant { kWaves = 1, kFoam = 2 };  // bits: what the vessel shader is compiled with
+  // Bits: what the path pass is compiled with (software rasterizers pay for code even
+  // where a uniform branch skips it, so frames get only the code they use).
+  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kOneObject = 8 };
   std::unique_ptr<Program> build_program(int variant) const;
 
   std::filesystem::path shader_dir_;
-  std::unique_ptr<Program> programs_[4];  // by variant, built when first needed
+  std::unique_ptr<Program> programs_[16];    // by variant, built when first needed
   std::unique_ptr<Program> bubble_program_;  // pass 2: rising bubbles, built when first needed
+  std::unique_ptr<SceneTextures> textures_;  // u_objects, u_knots
   unsigned bubble_vao_ = 0, bubble_vbo_ = 0;
-  unsigned vao_ = 0, ubo_ = 0, fill_tex_ = 0;
-  std::shared_ptr<const FillTable> uploaded_table_;  // what fill_tex_ holds
+  unsigned vao_ = 0, ubo_ = 0;
+  bool one_object_variant_ = true;
 };
 
 // Turns a debug image into a picture a person can read (grey depth, RGB normals,

@@ -10,7 +10,9 @@ namespace draught::gpu {
 namespace {
 
 std::string load(const std::string& name, const std::filesystem::path& dir) {
-  if (!dir.empty()) {
+  // Generated files ("generated/frame.glsl") always come from this binary: they must
+  // match its C++ side, and a shader folder has none.
+  if (!dir.empty() && name.rfind("generated/", 0) != 0) {
     try {
       return read_text_file(dir / name);
     } catch (const InputError& e) {

@@ -1,7 +1,8 @@
 // Shader sources: small GLSL files joined by `#include "file.glsl"`. Each file gets a
 // source-string number through `#line`, so a compile log's "3:42" maps back to
-// "vessel.glsl:42". Files come embedded in the binary, or from a folder (for shader
-// work without rebuilding: --shader-dir / DRAUGHT_SHADER_DIR).
+// "lib/vessel/intersect.glsl:42". Files come embedded in the binary, or from a folder
+// (for shader work without rebuilding: --shader-dir / DRAUGHT_SHADER_DIR). Files under generated/
+// (the GLSL side of src/interface/*.def) are always the embedded ones.
 #pragma once
 
 #include <filesystem>

@@ -1,5 +1,5 @@
 // End-to-end tests of `draught render --shader-dir`: shaders loaded from a folder, and
-// compile errors reported as "file.glsl:LINE".
+// compile errors reported as "file.glsl:LINE" (paths under shaders/, as included).
 #include "cli_helpers.hpp"
 
 #include <regex>
@@ -20,15 +20,18 @@ void write_lines(const fs::path& p, const std::vector<std::string>& lines) {
   write_file(p, text);
 }
 
+// A library file included by the path pass, and the pass's entry file.
+const std::string kLibFile = "lib/vessel/intersect.glsl";
+const std::string kEntryFile = "passes/path.frag.glsl";
+
 class Shaders : public CliTest {
  protected:
   void SetUp() override {
     CliTest::SetUp();
     fs::create_directories(shaders());
-    for (auto& e : fs::directory_iterator(kSourceDir / "shaders"))
-      if (e.path().extension() == ".glsl") fs::copy_file(e.path(), shaders() / e.path().filename());
-    ASSERT_TRUE(fs::exists(shaders() / "vessel.glsl"));
-    ASSERT_TRUE(fs::exists(shaders() / "vessel.frag.glsl"));
+    fs::copy(kSourceDir / "shaders", shaders(), fs::copy_options::recursive);
+    ASSERT_TRUE(fs::exists(shaders() / kLibFile));
+    ASSERT_TRUE(fs::exists(shaders() / kEntryFile));
   }
   fs::path shaders() const { return in() / "shaders"; }
   fs::path png() const { return out() / "x.png"; }
@@ -65,7 +68,7 @@ TEST_F(Shaders, CopiedShadersRenderLikeTheBuiltInOnes) {
       << "shaders/ differs from the copies embedded in the binary (rebuild?)";
 }
 
-// The first blank line at or after line 10 of vessel.glsl: a top-level spot in the file.
+// The first blank line at or after line 10 of a library file: a top-level spot in it.
 size_t spot_in(const std::vector<std::string>& lines) {
   for (size_t i = 9; i < lines.size(); ++i)
     if (lines[i].find_first_not_of(" \t") == std::string::npos) return i + 1;
@@ -73,28 +76,28 @@ size_t spot_in(const std::vector<std::string>& lines) {
 }
 
 TEST_F(Shaders, SyntaxErrorInIncludedFileGivesItsLine) {
-  const size_t line = spot_in(read_lines(shaders() / "vessel.glsl"));
+  const size_t line = spot_in(read_lines(shaders() / kLibFile));
   ASSERT_GT(line, 1u);
-  break_line("vessel.glsl", line);
-  expect_blames(render_with_shaders(), "vessel.glsl", line);
+  break_line(kLibFile, line);
+  expect_blames(render_with_shaders(), kLibFile, line);
 }
 
 TEST_F(Shaders, SyntaxErrorAfterIncludesGivesTheEntryFileLine) {
-  // Just after the last #include of vessel.frag.glsl: the line numbers must have been
+  // Just after the last #include of the entry file: the line numbers must have been
   // restored after the included files.
-  auto lines = read_lines(shaders() / "vessel.frag.glsl");
+  auto lines = read_lines(shaders() / kEntryFile);
   size_t last_include = 0;
   for (size_t i = 0; i < lines.size(); ++i)
     if (std::regex_search(lines[i], std::regex(R"(^\s*#\s*include\s)"))) last_include = i + 1;
-  ASSERT_GT(last_include, 0u) << "vessel.frag.glsl includes nothing?";
-  break_line("vessel.frag.glsl", last_include + 1);
+  ASSERT_GT(last_include, 0u) << kEntryFile << " includes nothing?";
+  break_line(kEntryFile, last_include + 1);
   auto r = render_with_shaders();
-  expect_blames(r, "vessel.frag.glsl", last_include + 1);
+  expect_blames(r, kEntryFile, last_include + 1);
 }
 
 TEST_F(Shaders, MissingShaderFileIsNamed) {
-  fs::remove(shaders() / "common.glsl");
-  expect_failure(render_with_shaders(), {"common.glsl"});
+  fs::remove(shaders() / "lib/common/math.glsl");
+  expect_failure(render_with_shaders(), {"lib/common/math.glsl"});
 }
 
 TEST_F(Shaders, MissingShaderDirIsNamed) {
@@ -104,7 +107,7 @@ TEST_F(Shaders, MissingShaderDirIsNamed) {
 
 TEST_F(Shaders, FailedCompileKeepsExistingImage) {
   write_file(png(), "previous image");
-  break_line("vessel.glsl", spot_in(read_lines(shaders() / "vessel.glsl")));
+  break_line(kLibFile, spot_in(read_lines(shaders() / kLibFile)));
   auto r = render_with_shaders();
   EXPECT_NE(r.exit_code, 0) << r.describe();
   EXPECT_EQ(read_file(png()), "previous image");

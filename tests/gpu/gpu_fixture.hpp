@@ -45,6 +45,38 @@ inline FrameState case_frame(const SceneRequest& req, const char* timeline, doub
   return timeline ? timeline_frame(timeline, t, req.camera) : scene_frame(req);
 }
 
+// How the flight is photographed (a fixed camera: auto-framing off): straight on; from
+// an angle, where glasses stand in front of each other; nearly along the row, where most
+// paths through one glass go on through the next.
+enum class FlightView { StraightOn, AtAnAngle, AlongTheRow };
+
+// A tasting flight: four drinks side by side on x, each in its own glass, 0.12 m apart
+// (the content of presets/scenes/flight.json). `sets`: --set overrides for every glass.
+inline Scene flight_scene(FlightView view = FlightView::StraightOn, std::vector<std::string> sets = {}) {
+  struct Pour {
+    const char* name;
+    const char* drink;
+    const char* glass;
+    float x;
+  };
+  static const Pour pours[] = {{"pilsner", "pilsner", "pilsner", -0.18f},
+                               {"amber-ale", "amber-ale", "tulip", -0.06f},
+                               {"stout", "stout", "nonic", 0.06f},
+                               {"hefeweizen", "hefeweizen", "weizen", 0.18f}};
+  const std::vector<std::string> camera =
+      view == FlightView::StraightOn  ? std::vector<std::string>{"eye=0,0.17,0.8", "target=0,0.1,0", "vfov=26"}
+      : view == FlightView::AtAnAngle ? std::vector<std::string>{"eye=0.62,0.26,0.5", "target=-0.01,0.09,0", "vfov=30"}
+                                      : std::vector<std::string>{"eye=0.75,0.13,0.1", "target=-0.1,0.1,0", "vfov=24"};
+  sets.insert(sets.begin(), "camera.auto_frame=false");
+  Scene s;
+  for (const Pour& p : pours) {
+    const Params params = resolve_scene({p.drink, p.glass, sets, camera});
+    if (s.objects.empty()) s.params = params;  // the surroundings, light, camera and output
+    s.objects.push_back(SceneObject{p.name, Placement{{p.x, 0.0f, 0.0f}, 0.0f}, VesselObject{params}});
+  }
+  return s;
+}
+
 // Set by gpu_tests --bless: golden tests write their renders as the new goldens.
 extern bool g_bless;
 

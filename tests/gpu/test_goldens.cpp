@@ -26,7 +26,11 @@ struct GoldenCase {
   int max_abs_diff;
   const char* timeline = nullptr;  // a glass in motion: this timeline's frame at `at` seconds
   double at = 0;
+  FrameState (*scene)() = nullptr;  // a scene of several objects (request and timeline unused)
 };
+
+FrameState flight_front() { return make_frame(flight_scene(FlightView::StraightOn)); }
+FrameState flight_angle() { return make_frame(flight_scene(FlightView::AtAnAngle)); }
 
 struct Comparison {
   int max_abs = 0;
@@ -58,7 +62,7 @@ class Golden : public ::testing::TestWithParam<GoldenCase> {};
 TEST_P(Golden, MatchesBlessedImage) {
   const GoldenCase& c = GetParam();
   Gpu& g = gpu_instance();
-  Image img = g.renderer->render(case_frame(c.request, c.timeline, c.at), c.width, c.height);
+  Image img = g.renderer->render(c.scene ? c.scene() : case_frame(c.request, c.timeline, c.at), c.width, c.height);
   const std::filesystem::path golden = std::filesystem::path(DRAUGHT_GOLDEN_DIR) / (std::string(c.name) + ".png");
   const std::filesystem::path diff_dir = DRAUGHT_DIFF_DIR;
   std::filesystem::create_directories(diff_dir);
@@ -112,7 +116,12 @@ INSTANTIATE_TEST_SUITE_P(
         GoldenCase{"flute_champagne", {"champagne", "flute", {}, {"eye=0,0.17,0.3", "target=0,0.17,0", "vfov=16"}}, 128,
                    192, 3, 0.002, 64},
         GoldenCase{"nonic_stout_head", {"stout", "nonic", {}, {"eye=0,0.2,0.3", "target=0,0.14,0", "vfov=22"}}, 160,
-                   160, 3, 0.002, 64}),
+                   160, 3, 0.002, 64},
+        // A tasting flight of four glasses (one path per pixel through every object):
+        // straight on, and from an angle along the row, where glasses are seen through
+        // each other and the heads of several glasses lie along one ray.
+        GoldenCase{"flight", {}, 256, 128, 3, 0.002, 64, nullptr, 0, flight_front},
+        GoldenCase{"flight_angle", {}, 192, 144, 3, 0.002, 64, nullptr, 0, flight_angle}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -26,7 +26,12 @@ struct ProbeCase {
   int size;
   const char* timeline = nullptr;  // a glass in motion: this timeline's frame at `at` seconds
   double at = 0;
+  FrameState (*scene)() = nullptr;  // a scene of several objects (request and timeline unused)
 };
+
+FrameState flight_front() { return make_frame(flight_scene(FlightView::StraightOn)); }
+FrameState flight_angle() { return make_frame(flight_scene(FlightView::AtAnAngle)); }
+FrameState flight_along() { return make_frame(flight_scene(FlightView::AlongTheRow)); }
 
 struct Reference {
   int w, h;
@@ -43,12 +48,14 @@ Reference reference_hits(const FrameState& f, int w, int h) {
   return r;
 }
 
+// Where the reference changes material (or object) within a pixel's neighbourhood.
 bool on_material_edge(const Reference& r, int x, int y) {
-  Material m = r.at(x, y).m;
+  const Hit& h = r.at(x, y);
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {
       int xx = x + dx, yy = y + dy;
-      if (xx >= 0 && yy >= 0 && xx < r.w && yy < r.h && r.at(xx, yy).m != m) return true;
+      if (xx >= 0 && yy >= 0 && xx < r.w && yy < r.h && (r.at(xx, yy).m != h.m || r.at(xx, yy).object != h.object))
+        return true;
     }
   return false;
 }
@@ -60,29 +67,36 @@ class Probe : public ::testing::TestWithParam<ProbeCase> {};
 TEST_P(Probe, DebugChannelsMatchReferenceIntersector) {
   const ProbeCase& c = GetParam();
   Gpu& g = gpu_instance();
-  FrameState f = case_frame(c.request, c.timeline, c.at);
+  FrameState f = c.scene ? c.scene() : case_frame(c.request, c.timeline, c.at);
   const int n = c.size;
   Reference ref = reference_hits(f, n, n);
   gpu::DebugImage depth = g.renderer->render_debug(f, n, n, gpu::DebugView::Depth);
   gpu::DebugImage normal = g.renderer->render_debug(f, n, n, gpu::DebugView::Normal);
 
-  int interior_mismatch = 0, edge_mismatch = 0, agree_hits = 0, depth_bad = 0, normal_bad = 0;
+  int interior_mismatch = 0, edge_mismatch = 0, agree_hits = 0, depth_bad = 0, normal_bad = 0, object_bad = 0;
   double worst_depth = 0, worst_angle = 0;
+  glm::ivec2 worst_at{-1};
   std::vector<int> per_material(10, 0);
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
       const Hit& h = ref.at(x, y);
       const int gm = int(std::lround(depth.px(x, y)[1]));
       ASSERT_EQ(gm, int(std::lround(normal.px(x, y)[3]))) << "depth and normal passes disagree at " << x << "," << y;
-      if (gm != int(h.m)) {
-        (on_material_edge(ref, x, y) ? edge_mismatch : interior_mismatch)++;
+      const int gobj = int(std::lround(depth.px(x, y)[2]));  // which glass (-1: the floor, none)
+      if (gm != int(h.m) || gobj != h.object) {
+        const bool edge = on_material_edge(ref, x, y);
+        (edge ? edge_mismatch : interior_mismatch)++;
+        object_bad += !edge && gm == int(h.m);
         continue;
       }
       if (!h.valid()) continue;
       ++agree_hits;
       per_material[size_t(gm)]++;
       double dt = std::fabs(double(depth.px(x, y)[0]) - h.t);
-      if (h.m != Material::Floor) worst_depth = std::max(worst_depth, dt);
+      if (h.m != Material::Floor && dt > worst_depth) {
+        worst_depth = dt;
+        worst_at = {x, y};
+      }
       if (dt > std::max(5e-5, 1e-4 * h.t)) ++depth_bad;
       glm::dvec3 gn(normal.px(x, y)[0], normal.px(x, y)[1], normal.px(x, y)[2]);
       double angle = glm::degrees(std::acos(std::clamp(glm::dot(glm::normalize(gn), h.n), -1.0, 1.0)));
@@ -92,8 +106,8 @@ TEST_P(Probe, DebugChannelsMatchReferenceIntersector) {
   std::printf("[%s] %dx%d: %d agreeing hits; materials:", c.name, n, n, agree_hits);
   for (int m = 1; m < 10; ++m)
     if (per_material[size_t(m)]) std::printf(" %s=%d", material_name(Material(m)), per_material[size_t(m)]);
-  std::printf("; mismatches edge=%d interior=%d; worst glass |dt|=%.2e m, worst normal %.3f deg\n", edge_mismatch,
-              interior_mismatch, worst_depth, worst_angle);
+  std::printf("; mismatches edge=%d interior=%d; worst glass |dt|=%.2e m (pixel %d,%d), worst normal %.3f deg\n",
+              edge_mismatch, interior_mismatch, worst_depth, worst_at.x, worst_at.y, worst_angle);
 
   EXPECT_GT(agree_hits, n * n / 10) << "the probe should see the glass";
   EXPECT_LE(interior_mismatch, n * n / 1000) << "material ids disagree away from silhouettes";
@@ -101,6 +115,7 @@ TEST_P(Probe, DebugChannelsMatchReferenceIntersector) {
   EXPECT_LE(depth_bad, agree_hits / 200) << "hit distance off by more than 0.05 mm";
   EXPECT_LT(worst_depth, 1e-3) << "a glass hit distance is off by 1 mm or more";
   EXPECT_LE(normal_bad, agree_hits / 200) << "normals off by more than 0.25 degrees";
+  EXPECT_EQ(object_bad, 0) << "the GPU names another object than the reference intersector";
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -121,7 +136,11 @@ INSTANTIATE_TEST_SUITE_P(
         ProbeCase{"pint-sloshing", {}, 96, "shake-and-settle", 1.3},
         ProbeCase{"pint-sloshing-above", {"", "", {}, {"eye=0.06,0.34,0.16", "target=0,0.08,0"}}, 96, "shake-and-settle", 1.3},
         ProbeCase{"wine-spilling-above", {"", "", {}, {"eye=-0.1,0.4,0.2", "target=-0.05,0.1,0"}}, 96, "tilt-until-spill", 3.0},
-        ProbeCase{"wine-spilling", {}, 96, "tilt-until-spill", 3.0}),
+        ProbeCase{"wine-spilling", {}, 96, "tilt-until-spill", 3.0},
+        // Four glasses: the nearest hit over every object, and which object it is.
+        ProbeCase{"flight-front", {}, 128, nullptr, 0, flight_front},
+        ProbeCase{"flight-angle", {}, 128, nullptr, 0, flight_angle},
+        ProbeCase{"flight-along-the-row", {}, 128, nullptr, 0, flight_along}),
     [](const auto& info) {
       std::string s = info.param.name;
       for (char& ch : s)

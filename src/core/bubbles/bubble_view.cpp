@@ -129,6 +129,7 @@ void add_sprites(const FrameState& f, const SceneGeometry& geo, int target, cons
     s.radius = float(b.radius / std::sqrt(std::abs(det)));  // metres over metres-per-pixel
     s.tint = glm::vec3(leg.thr * glm::exp(-sigma * t));
     s.distance = float(leg.before + t);
+    s.object = target;
     if (s.radius > 0.05f) out.push_back(s);
   }
 }

@@ -19,6 +19,7 @@ struct BubbleSprite {
   float radius = 0;        // pixels (the lens of glass and liquid magnifies)
   glm::vec3 tint{1.0f};    // transmittance from the camera to the bubble
   float distance = 0;      // along the path, metres (for back-to-front drawing)
+  int object = -1;         // the vessel (index into FrameState::vessels) whose drink holds it
 };
 
 // Sprites for the frame's bubbles at width x height, farthest first.

@@ -77,6 +77,19 @@ double FoamFrame::thickness_at(double x, double z, double radius) const {
   return thickness * std::max(1.0 + dome * (1.0 - 2.0 * u2), 0.1);
 }
 
+std::vector<PlacedBubble> place_big_bubbles(const FoamFrame& fo, const glm::dvec3& n, double offset,
+                                            double surface_radius) {
+  std::vector<PlacedBubble> out;
+  for (const BigBubble& b : fo.bubbles) {
+    // The surface's height over (x, z), then up the normal to the head's top, less 30 %
+    // of the radius (the cap stands out by 70 %).
+    const double y = (offset - n.x * b.xz.x - n.z * b.xz.y) / std::max(n.y, 1e-3);
+    const glm::dvec3 c = glm::dvec3(b.xz.x, y, b.xz.y) + n * (fo.thickness_at(b.xz.x, b.xz.y, surface_radius) - 0.3 * b.radius);
+    out.push_back({c, b.radius, b.popped});
+  }
+  return out;
+}
+
 FoamFrame FoamState::frame(double radius) const {
   FoamFrame f;
   f.thickness = thickness();

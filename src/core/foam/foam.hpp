@@ -2,10 +2,11 @@
 // drink's half-life; it rides on the (sloshing) liquid surface; as the level drops it
 // turns concave and leaves lacing rings on the glass; big bubbles on top grow, pop and
 // leave voids that heal. Deterministic for a seed. The renderer marches the head as a
-// volume (shaders/foam.glsl); this module only says where it is.
+// volume (shaders/lib/foam/head.glsl); this module only says where it is.
 #pragma once
 
 #include "core/params/params.hpp"
+#include "generated/constants.hpp"
 
 #include <glm/glm.hpp>
 
@@ -26,14 +27,27 @@ struct FoamFrame {
   std::vector<double> lacing;  // heights (glass frame y) of the rings left on the inner wall
   std::vector<BigBubble> bubbles;
   // The thickness at (x, z) in the glass frame, for a surface of this radius (as
-  // shaders/foam.glsl foam_thickness_at).
+  // shaders/lib/foam/head.glsl foam_thickness_at).
   double thickness_at(double x, double z, double radius) const;
 };
 
+// A big bubble where it sits in the picture: on the head's top over the liquid surface
+// (glass frame), its cap standing out by 70 % of its radius. What the renderer draws.
+struct PlacedBubble {
+  glm::dvec3 centre{0.0};
+  double radius = 0;
+  bool popped = false;  // a void in the foam instead of a shiny cap
+};
+
+// Places the head's big bubbles on the surface dot(n, p) = offset (glass frame), whose
+// radius at the axis is `surface_radius` (the head's dome is measured against it).
+std::vector<PlacedBubble> place_big_bubbles(const FoamFrame&, const glm::dvec3& n, double offset,
+                                            double surface_radius);
+
 class FoamState {
  public:
-  static constexpr int kMaxLacing = 8;
-  static constexpr int kMaxBubbles = 12;
+  static constexpr int kMaxLacing = contract::kMaxLacing;  // src/interface/constants.def
+  static constexpr int kMaxBubbles = contract::kMaxBigBubbles;
 
   explicit FoamState(const FoamParams&);
   void set_params(const FoamParams& p) { params_ = p; }

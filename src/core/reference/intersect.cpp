@@ -6,22 +6,6 @@
 
 namespace draught {
 
-const char* material_name(Material m) {
-  switch (m) {
-    case Material::None: return "none";
-    case Material::Floor: return "floor";
-    case Material::GlassOuter: return "glass-outer";
-    case Material::GlassInner: return "glass-inner";
-    case Material::Rim: return "rim";
-    case Material::GlassBottom: return "glass-bottom";
-    case Material::CavityFloor: return "cavity-floor";
-    case Material::LiquidSurface: return "liquid-surface";
-    case Material::ClipGlass: return "clip-glass";
-    case Material::ClipLiquid: return "clip-liquid";
-  }
-  return "?";
-}
-
 int solve_cubic(double a, double b, double c, double roots[3]) {
   const double Q = (a * a - 3 * b) / 9, R = (2 * a * a * a - 9 * a * b + 27 * c) / 54;
   const double Q3 = Q * Q * Q;

@@ -1,10 +1,12 @@
-// The C++ reference intersector: the same analytic math as shaders/vessel.glsl, in
-// double precision. Tests compare the GPU's debug outputs against it pixel by pixel.
+// The C++ reference intersector: the same analytic math as shaders/lib/vessel/ (GLSL twins
+// intersect.glsl, vessel.glsl) and shaders/lib/scene/trace.glsl, in double precision.
+// Tests compare the GPU's debug outputs against it pixel by pixel.
 #pragma once
 
 #include "core/scene/motion.hpp"
 #include "core/liquid/slosh.hpp"
 #include "core/vessel/vessel.hpp"
+#include "generated/constants.hpp"
 
 #include <glm/glm.hpp>
 
@@ -18,20 +20,10 @@ struct Ray {
   glm::dvec3 at(double t) const { return o + t * d; }
 };
 
-// Material ids: the same numbers are written by the shader's material debug output.
-enum class Material : int {
-  None = 0,
-  Floor = 1,
-  GlassOuter = 2,
-  GlassInner = 3,
-  Rim = 4,
-  GlassBottom = 5,
-  CavityFloor = 6,
-  LiquidSurface = 7,
-  ClipGlass = 8,   // the cross-section's cut face through the glass
-  ClipLiquid = 9,  // and through the liquid
-};
-const char* material_name(Material);
+// Material ids, declared once for C++ and GLSL in src/interface/constants.def: the
+// shader's material debug output writes the same numbers.
+using Material = contract::Material;
+inline const char* material_name(Material m) { return contract::name_of(m); }
 
 struct Hit {
   double t = std::numeric_limits<double>::infinity();

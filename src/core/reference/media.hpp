@@ -6,8 +6,9 @@
 
 namespace draught {
 
-// The media a path can be in (the numbers are the shader's AIR, GLASS, LIQUID).
-enum class MediumKind : int { Air = 0, Glass = 1, Liquid = 2 };
+// The media a path can be in (src/interface/constants.def: the shader's MEDIUM_AIR,
+// MEDIUM_GLASS, MEDIUM_LIQUID).
+using MediumKind = contract::MediumKind;
 
 // The medium on the far side of surface `m` for a path now in `from`. `below_liquid`:
 // whether the point lies under the liquid's surface (it decides what is behind the

@@ -1,4 +1,4 @@
-// Optics shared by the reference code and tests; shaders/optics.glsl mirrors it.
+// Optics shared by the reference code and tests; its GLSL twin is shaders/lib/optics/fresnel.glsl.
 #pragma once
 
 #include <glm/glm.hpp>

@@ -1,5 +1,5 @@
 // Pinhole camera. Pixel (x, y) counts from the top-left; pixel centres are at +0.5.
-// shaders/common.glsl builds the same rays.
+// Its GLSL twin, camera_dir() in shaders/lib/scene/camera.glsl, builds the same rays.
 #pragma once
 
 #include "core/reference/intersect.hpp"

@@ -64,6 +64,7 @@ FrameState assemble_frame(const SceneParams& p, std::vector<VesselFrame> vessels
   f.vessels = std::move(vessels);
   f.selected = std::clamp(selected, 0, std::max(0, int(f.vessels.size()) - 1));
   f.camera = frame_camera(p.camera, f.vessels);
+  f.environment = environment_frame(p.env);
   return f;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/bubbles/bubbles.hpp"
+#include "core/environment/reflection.hpp"
 #include "core/foam/foam.hpp"
 #include "core/params/params.hpp"
 #include "core/reference/intersect.hpp"
@@ -29,6 +30,7 @@ struct VesselFrame {
   double liquid_fraction = 0;                   // of the cavity volume
   bool has_liquid = false;
   FoamFrame foam;               // the head on the liquid, lacing, big bubbles
+  std::vector<PlacedBubble> big_bubbles;  // the head's big bubbles placed on its top (glass frame)
   std::vector<Bubble> bubbles;  // rising in the liquid, glass frame
   glm::vec3 liquid_absorption{0};
   double mean_outer_radius = 0;
@@ -39,6 +41,7 @@ struct FrameState {
   CameraParams camera;  // the camera in effect (auto-framed or as given)
   std::vector<VesselFrame> vessels;
   int selected = 0;  // index into vessels of the object input drives
+  EnvironmentFrame environment;  // what the surroundings give the renderer (core/environment)
 };
 
 // The frame of these vessels in a scene with these parameters (the camera framed).

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/params/params.hpp"
+#include "generated/constants.hpp"
 
 #include <glm/glm.hpp>
 
@@ -37,10 +38,11 @@ struct SceneObject {
   ObjectKind kind;
 };
 
-// The most objects one scene may hold. Object data reaches the GPU in data textures (one
-// row per object), so this is not the 16 KB uniform-block limit of GLES 3.0; it bounds
-// the per-pixel object loop and the simulation's cost. Tested at the limit.
-inline constexpr int kMaxSceneObjects = 64;
+// The most objects one scene may hold (src/interface/constants.def). Object data reaches
+// the GPU in data textures (one row per object), so this is not the 16 KB uniform-block
+// limit of GLES 3.0; it bounds the per-pixel object loop and the simulation's cost.
+// Tested at the limit (tests/gpu).
+inline constexpr int kMaxSceneObjects = contract::kMaxSceneObjects;
 
 struct Scene {
   SceneParams params;

@@ -181,6 +181,7 @@ VesselFrame Simulation::frame() const {
   f.has_liquid = fraction_ > kEmpty;
   f.liquid_absorption = liquid_absorption(params_.liquid);
   f.foam = foam_.frame(surface_.waves.radius);
+  f.big_bubbles = place_big_bubbles(f.foam, surface_.n, surface_.offset, surface_.waves.radius);
   f.bubbles = bubbles_->bubbles();
   double sum = 0;
   for (double r : vessel_.r_outer) sum += r;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "core/vessel/vessel.hpp"
+#include "generated/constants.hpp"
 
 #include <vector>
 
@@ -25,8 +26,9 @@ double rim_offset(const Vessel&, double tilt);
 void offset_range(const Vessel&, double tilt, double& lo, double& hi);
 
 struct FillTable {
-  static constexpr int kTilts = 64, kVolumes = 64;
-  static constexpr double kMaxTilt = 0.75 * 3.141592653589793;  // tilts 0..135 deg, uniform; beyond, clamped (every glass has spilled)
+  // Sizes from src/interface/constants.def.
+  static constexpr int kTilts = contract::kFillTilts, kVolumes = contract::kFillVolumes;
+  static constexpr double kMaxTilt = contract::kFillMaxTilt;  // tilts 0..135 deg, uniform; beyond, clamped (every glass has spilled)
   double cavity_volume = 0;
   // offset[i * kVolumes + j]: tilt i * kMaxTilt / (kTilts - 1), volume fraction
   // u^2 (3 - 2u) with u = j / (kVolumes - 1): columns crowd at the nearly empty and

@@ -4,13 +4,14 @@
 #pragma once
 
 #include "core/params/params.hpp"
+#include "generated/constants.hpp"
 
 #include <vector>
 
 namespace draught {
 
 struct Vessel {
-  static constexpr int kSegments = 96;
+  static constexpr int kSegments = contract::kSegments;  // src/interface/constants.def
   double height = 0;   // top of the walls (rim torus centre height)
   double base = 0;     // cavity floor height
   double dy = 0;       // segment height

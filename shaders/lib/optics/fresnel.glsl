@@ -1,4 +1,7 @@
-// Fresnel, GGX. Mirrors core/optics.cpp.
+// Fresnel and GGX. Twin of core/reference/optics.cpp (fresnel_dielectric, ggx terms).
+#ifndef LIB_OPTICS_FRESNEL_GLSL
+#define LIB_OPTICS_FRESNEL_GLSL
+#include "lib/common/math.glsl"
 
 // Unpolarised dielectric Fresnel; 1 under total internal reflection.
 float fresnel_dielectric(float cos_i, float n1, float n2) {
@@ -25,3 +28,5 @@ float ggx_specular(vec3 n, vec3 v, vec3 l, float roughness) {
   float gl = NoV * sqrt(NoL * NoL * (1.0 - a2) + a2);
   return D * 0.5 / max(gv + gl, 1e-6) * NoL;
 }
+
+#endif  // LIB_OPTICS_FRESNEL_GLSL

@@ -1,4 +1,8 @@
 // Output transforms: linear -> (ACES filmic | clamp) -> sRGB.
+#ifndef LIB_OUTPUT_TONEMAP_GLSL
+#define LIB_OUTPUT_TONEMAP_GLSL
+precision highp float;
+
 vec3 aces_filmic(vec3 x) {  // Narkowicz's fit of the ACES reference rendering transform
   return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
 }
@@ -7,3 +11,5 @@ vec3 linear_to_srgb(vec3 c) {
   c = clamp(c, 0.0, 1.0);
   return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
 }
+
+#endif  // LIB_OUTPUT_TONEMAP_GLSL

@@ -1,0 +1,208 @@
+// The foam head of a vessel: a volume on the liquid surface up to the head's top (where
+// core/foam puts it), marched only along the stretch of a ray inside it. Beer's-law
+// opacity per step, Henyey-Greenstein single scattering of the key light plus
+// multi-scatter terms at halved optical depth, self-shadowing from the distance light
+// travels through the head (no shadow rays), micro-bubble detail from value noise, big
+// bubbles (placed by core: VesselFrame::big_bubbles) as voids with a denser ring around
+// them, and lacing rings left on the glass. All in the vessel's frame.
+#ifndef LIB_FOAM_HEAD_GLSL
+#define LIB_FOAM_HEAD_GLSL
+#include "generated/frame.glsl"
+#include "lib/common/noise.glsl"
+#include "lib/optics/fresnel.glsl"
+#include "lib/scene/objects.glsl"
+#include "lib/vessel/intersect.glsl"
+#include "lib/liquid/surface.glsl"
+#include "lib/environment/studio.glsl"
+
+// Compiled in only for frames with a head (gpu/renderer.cpp builds the variants).
+#ifndef FOAM_HEAD
+#define FOAM_HEAD 0
+#endif
+
+int g_foam_steps = 0;  // march steps this pixel took (cost view)
+
+// Big bubble i of vessel v (placed by core): centre (local frame) and radius; a popped
+// one (its record's radius < 0) is a void that heals.
+struct BigBubble {
+  vec3 centre;
+  float radius;
+  bool popped;
+};
+
+BigBubble big_bubble(Vessel v, int i) {
+  vec4 b = object_big_bubbles(v.row, i);  // the record's layout: centre xyz, signed radius
+  return BigBubble(b.xyz, abs(b.w), b.w < 0.0);
+}
+
+// The head's thickness above the liquid at (x, z): domed or concave (as core/foam
+// FoamFrame::thickness_at).
+float foam_thickness_at(Vessel v, ObjectFoam f, vec2 xz) {
+  float u2 = min(dot(xz, xz) / (v.liquid.wave_radius * v.liquid.wave_radius), 1.5);
+  return f.thickness * max(1.0 + f.dome * (1.0 - 2.0 * u2), 0.1);
+}
+
+// Extinction at p; `height` is p's height above the liquid, `top` the head's thickness there.
+float foam_density(Vessel v, ObjectFoam f, vec3 p, float height, float top) {
+  if (height < 0.0 || height > top || p.y > v.body.height || length(p.xz) > inner_radius(v, p.y) || clipped(v, p))
+    return 0.0;
+  // Bubbles are bigger low in the head (they coarsen as liquid drains out of it).
+  float scale = f.bubble_size * (1.0 + 1.5 * (1.0 - height / top));
+  float d = f.density * max(1.0 + 1.6 * f.detail * (value_noise(p / scale) - 0.5), 0.0);
+  d *= clamp((top - height) / (0.12 * top), 0.0, 1.0);  // a soft top, a crisp underside
+  for (int i = 0; i < f.big_bubble_count; ++i) {
+    BigBubble b = big_bubble(v, i);
+    float r = b.radius, dist = length(p - b.centre);
+    if (dist < r) return 0.0;  // inside a big bubble, or the void a popped one left
+    float ring = (dist - r) / (0.45 * r);
+    d *= 1.0 + (b.popped ? 0.6 : 1.8) * exp(-ring * ring);
+  }
+  return d;
+}
+
+float hg_phase(float c, float g) {
+  float g2 = g * g;
+  return (1.0 - g2) / (4.0 * PI * pow(max(1.0 + g2 - 2.0 * g * c, 1e-4), 1.5));
+}
+
+// Light scattered towards -d at p (per unit scattering), self-shadowed analytically by
+// the foam between p and the outside: through the head's top (depth below it) or
+// through the glass wall beside it (side), whichever is shorter. d, l local.
+vec3 foam_light(Vessel v, ObjectFoam f, vec3 d, vec3 l, float depth, float side) {
+  vec3 n = v.liquid.plane_normal;
+  float sin_l = length(l - n * dot(n, l));
+  float tau_l = f.density * min(depth / max(dot(n, l), 0.15), side / max(sin_l, 0.15));
+  float tau_a = f.density * min(depth, side);
+  float c = dot(l, d), g = f.anisotropy, w = f.multiscatter;
+  // Multiple scattering: two more terms, each with half the weight and anisotropy and a
+  // much smaller optical depth. Foam's bubble films barely absorb, so light diffuses
+  // centimetres into a head that is opaque to a straight ray (tau ~ 20).
+  float key = hg_phase(c, g) * exp(-tau_l);
+  key += w * (0.5 * hg_phase(c, 0.5 * g) * exp(-0.08 * tau_l) + 0.25 * hg_phase(c, 0.25 * g) * exp(-0.02 * tau_l)) * 4.0;
+  float sky = exp(-tau_a) + w * (0.5 * exp(-0.08 * tau_a) + 0.25 * exp(-0.02 * tau_a)) * 2.0;
+  return f.foam_color * (frame.light_color * frame.light_intensity * key + ambient_light() * sky) * 1.25;
+}
+
+// The part of [t0, t1] along o + t d (local) where the head (or a big bubble's cap) can
+// be: the slab from the lowest wave to the highest top, inside the cavity's bounding
+// cylinder.
+bool foam_interval(Vessel v, ObjectFoam f, vec3 o, vec3 d, inout float t0, inout float t1) {
+  vec3 n = v.liquid.plane_normal;
+  float waves = abs(v.liquid.wave_ring) + abs(v.liquid.wave_cos2a) + abs(v.liquid.wave_sin2a);
+  float top_max = f.thickness * (1.0 + abs(f.dome)) + waves + 0.006;
+  float h0 = dot(n, o) - v.liquid.plane_offset, dh = dot(n, d);
+  float lo = -waves;
+  if (abs(dh) > 1e-9) {
+    float ta = (lo - h0) / dh, tb = (top_max - h0) / dh;
+    t0 = max(t0, min(ta, tb));
+    t1 = min(t1, max(ta, tb));
+  } else if (h0 < lo || h0 > top_max) {
+    return false;
+  }
+  vec2 tr;
+  if (!clip_to_bounds(o, d, v.shape.base, v.body.height, v.bounds.bound_radius, t0, tr)) return false;
+  t0 = tr.x;
+  t1 = min(t1, tr.y);
+  return t1 > t0;
+}
+
+// Marches the head along o + t d for t in [t0, t1] (a stretch through air, already cut to
+// foam_interval). Adds the light it scatters to `radiance` and attenuates `thr`.
+void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec3 l, inout vec3 radiance,
+                inout vec3 thr) {
+  float len = t1 - t0;
+  int steps = int(clamp(len * f.density * 0.5, 6.0, 40.0));
+  float dt = len / float(steps);
+  float t = t0 + dt * march_jitter();
+  for (int i = 0; i < 40; ++i) {
+    if (i >= steps) break;
+    ++g_foam_steps;
+    vec3 p = o + t * d;
+    float height = level_over(v.liquid, p), top = foam_thickness_at(v, f, p.xz);
+    float sigma = foam_density(v, f, p, height, top);
+    if (sigma > 0.0) {
+      float trans = exp(-sigma * dt);
+      float side = max(inner_radius(v, p.y) - length(p.xz), 0.0);
+      // Wetter, creamier foam low in the head: a little darker than its top.
+      float wet = mix(0.72, 1.0, clamp(height / top, 0.0, 1.0));
+      radiance += thr * wet * foam_light(v, f, d, l, max(top - height, 0.0), side) * (1.0 - trans);
+      thr *= trans;
+      if (max(thr.r, max(thr.g, thr.b)) < 1e-3) {
+        thr = vec3(0.0);
+        return;
+      }
+    }
+    t += dt;
+  }
+}
+
+// A big bubble's cap is a thin film of the drink: it mirrors the surroundings at grazing
+// angles (Fresnel from air into the liquid's index, both faces).
+void bubble_caps(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec3 l, inout vec3 radiance,
+                 inout vec3 thr) {
+  for (int i = 0; i < f.big_bubble_count; ++i) {
+    BigBubble b = big_bubble(v, i);
+    if (b.popped) continue;
+    vec3 c = b.centre;
+    float r = b.radius;
+    vec3 oc = o - c;
+    float bb = dot(oc, d), disc = bb * bb - (dot(oc, oc) - r * r);
+    if (disc <= 0.0) continue;
+    float t = -bb - sqrt(disc);
+    if (t <= t0 || t >= t1) continue;
+    vec3 p = o + t * d;
+    if (level_over(v.liquid, p) < foam_thickness_at(v, f, p.xz) || clipped(v, p)) continue;  // only the cap above the foam
+    vec3 nn = normalize(p - c);
+    float F = fresnel_dielectric(abs(dot(nn, d)), 1.0, v.liquid.ior);
+    float film = 2.0 * F / (1.0 + F);  // two faces of the film
+    vec3 refl = reflect(d, nn);
+    radiance += thr * (film * studio_sky(to_world_dir(v, refl)) +
+                       frame.light_color * frame.light_intensity * 2.0 * ggx_specular(nn, -d, l, 0.04));
+    thr *= 1.0 - film;
+  }
+}
+
+// Lacing: thin foam left on the inner wall where the head's top used to be (p local).
+float lacing_cover(Vessel v, ObjectFoam f, vec3 p) {
+  float cover = 0.0;
+  for (int i = 0; i < f.lacing_count; ++i) {
+    float y = object_lacing(v.row, i);
+    float band = (p.y - y) / 0.0012;
+    float lace = value_noise(vec3(atan(p.z, p.x) * 9.0, p.y * 900.0, float(i) * 3.7));
+    cover = max(cover, exp(-band * band) * smoothstep(0.35, 0.75, lace));
+  }
+  return cover * f.lacing_strength;
+}
+
+// The heads of every glass along a stretch [0, t_end] of a world path in the air, front
+// to back (heads do not overlap: each is inside its own glass). Adds their light to
+// `radiance` and attenuates `thr`.
+void foam_along(vec3 o, vec3 d, float t_end, inout vec3 radiance, inout vec3 thr) {
+  float done = 0.0;  // heads before this distance are marched
+  for (int pass = 0; pass < OBJECT_COUNT; ++pass) {
+    // The nearest head that starts after the ones done.
+    int next = -1;
+    float next_t0 = INF, next_t1 = INF;
+    for (int i = 0; i < OBJECT_COUNT; ++i) {
+      if (!object_in_reach(i, o, d, done, t_end) || load_vessel(i).shape.has_head == 0) continue;
+      Vessel v = load_vessel(i);
+      float t0 = done, t1 = t_end;
+      if (foam_interval(v, fetch_object_foam(i), to_local_point(v, o), to_local_dir(v, d), t0, t1) && t0 < next_t0) {
+        next = i;
+        next_t0 = t0;
+        next_t1 = t1;
+      }
+    }
+    if (next < 0) return;
+    Vessel v = load_vessel(next);
+    ObjectFoam f = fetch_object_foam(v.row);
+    vec3 lo = to_local_point(v, o), ld = to_local_dir(v, d), l = to_local_dir(v, frame.light_dir);
+    bubble_caps(v, f, lo, ld, next_t0, next_t1, l, radiance, thr);
+    march_foam(v, f, lo, ld, next_t0, next_t1, l, radiance, thr);
+    // (With one object there is one head: no second pass.)
+    if (max(thr.r, max(thr.g, thr.b)) < 1e-3 || OBJECT_COUNT == 1) return;
+    done = next_t1;
+  }
+}
+
+#endif  // LIB_FOAM_HEAD_GLSL

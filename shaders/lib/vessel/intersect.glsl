@@ -1,0 +1,135 @@
+// Analytic intersections with a vessel (lib/scene/objects.glsl), in its local
+// frame: frustum segments of the outer and inner wall, the rim torus, the base disks.
+// Twin of core/reference/intersect.cpp (hit_wall, hit_rim, hit_disk), which the GPU
+// probes compare with pixel by pixel.
+#ifndef LIB_VESSEL_INTERSECT_GLSL
+#define LIB_VESSEL_INTERSECT_GLSL
+#include "lib/common/math.glsl"
+#include "lib/scene/objects.glsl"
+
+// Texel k of the vessel's knot row: (r_outer[k], r_inner[k], r_outer[k + 1], r_inner[k + 1]).
+vec4 segment_knots(Vessel v, int k) { return texelFetch(u_knots, ivec2(k, v.shape.knot_row), 0); }
+
+float outer_radius(Vessel v, float y) {
+  float s = clamp(y * v.shape.inv_dy, 0.0, float(SEGMENTS));
+  int k = min(int(s), SEGMENTS - 1);
+  vec4 kn = segment_knots(v, k);
+  return mix(kn.x, kn.z, s - float(k));
+}
+
+float inner_radius(Vessel v, float y) {
+  float s = clamp(y * v.shape.inv_dy, 0.0, float(SEGMENTS));
+  int k = min(int(s), SEGMENTS - 1);
+  vec4 kn = segment_knots(v, k);
+  return mix(kn.y, kn.w, s - float(k));
+}
+
+bool inside_torus(Vessel v, float r, float y) {
+  vec2 q = vec2(r - v.shape.rim_major, y - v.body.height);
+  return dot(q, q) < v.shape.rim_minor * v.shape.rim_minor;
+}
+
+bool inside_body(Vessel v, float r, float y) {
+  if (y < 0.0 || y > v.body.height || r > outer_radius(v, y)) return false;
+  return y < v.shape.base || r >= inner_radius(v, y);
+}
+
+// Slab ylo..yhi and cylinder r <= rad along the ray, as [t0, t1].
+bool clip_to_bounds(vec3 o, vec3 d, float ylo, float yhi, float rad, float tmin, out vec2 tr) {
+  tr = vec2(tmin, INF);
+  if (abs(d.y) < 1e-9) {
+    if (o.y < ylo || o.y > yhi) return false;
+  } else {
+    float a = (ylo - o.y) / d.y, b = (yhi - o.y) / d.y;
+    tr.x = max(tr.x, min(a, b));
+    tr.y = min(tr.y, max(a, b));
+  }
+  float A = dot(d.xz, d.xz), B = dot(o.xz, d.xz), C = dot(o.xz, o.xz) - rad * rad;
+  if (A < 1e-12) {
+    if (C > 0.0) return false;
+  } else {
+    float disc = B * B - A * C;
+    if (disc < 0.0) return false;
+    float s = sqrt(disc);
+    tr.x = max(tr.x, (-B - s) / A);
+    tr.y = min(tr.y, (-B + s) / A);
+  }
+  return tr.x <= tr.y;
+}
+
+// Walks the frustum segments the ray crosses, in the order it crosses them, and
+// returns the first valid hit (segments partition y and y(t) is monotonic).
+Hit hit_wall(Vessel v, vec3 o, vec3 d, bool inner, float tmin) {
+  float ylo = inner ? v.shape.base : 0.0, yhi = v.body.height;
+  vec2 tr;
+  if (!clip_to_bounds(o, d, ylo, yhi, v.bounds.bound_radius, tmin, tr)) return no_hit();
+  int k0 = clamp(int(floor((o.y + tr.x * d.y) * v.shape.inv_dy)), 0, SEGMENTS - 1);
+  int k1 = clamp(int(floor((o.y + tr.y * d.y) * v.shape.inv_dy)), 0, SEGMENTS - 1);
+  int stp = k1 >= k0 ? 1 : -1;
+  int count = abs(k1 - k0) + 1;
+  float A0 = dot(d.xz, d.xz), B0 = dot(o.xz, d.xz), C0 = dot(o.xz, o.xz);
+  // A hit on the boundary between two segments must not slip through the crack that
+  // float round-off opens there: each segment reaches a hair (1e-4 of its height) into
+  // its neighbours; adjacent cones meet at the shared knot, so the surface is the same.
+  float crack = 1e-4 * v.shape.dy;
+  int k = k0;
+  for (int i = 0; i < count; ++i, k += stp) {
+    ++g_cost;
+    vec4 kn = segment_knots(v, k);
+    float r0 = inner ? kn.y : kn.x;
+    float r1 = inner ? kn.w : kn.z;
+    float y0 = float(k) * v.shape.dy, y1 = y0 + v.shape.dy;
+    float s = (r1 - r0) * v.shape.inv_dy;
+    float c0 = r0 + s * (o.y - y0), c1 = s * d.y;
+    vec2 ts;
+    int n = solve_quadratic(A0 - c1 * c1, 2.0 * (B0 - c0 * c1), C0 - c0 * c0, ts);
+    for (int j = 0; j < 2; ++j) {
+      if (j >= n) break;
+      float t = ts[j];
+      vec3 p = o + t * d;
+      if (t <= tmin || p.y < y0 - crack || p.y > y1 + crack || c0 + c1 * t < 0.0) continue;
+      if (p.y < ylo || p.y > yhi) continue;
+      float r = length(p.xz);
+      if (inside_torus(v, r, p.y) || clipped(v, p)) continue;
+      vec3 nrm = r > 0.0 ? normalize(vec3(p.x / r, -s, p.z / r)) : vec3(0.0, -1.0, 0.0);
+      return Hit(t, inner ? -nrm : nrm, inner ? M_GLASS_INNER : M_GLASS_OUTER, v.row);
+    }
+  }
+  return no_hit();
+}
+
+// The rim bead: a torus around the axis at the wall top; only where it is outside the body.
+Hit hit_rim(Vessel v, vec3 o, vec3 d, float tmin) {
+  float R = v.shape.rim_major, rr = v.shape.rim_minor, H = v.body.height;
+  vec2 tr;
+  if (!clip_to_bounds(o, d, H - rr, H + rr, R + rr, tmin, tr)) return no_hit();
+  // Solve from the bound entry, in units of the major radius (keeps floats well scaled).
+  ++g_cost;
+  vec3 lo = (o + tr.x * d - vec3(0.0, H, 0.0)) / R;
+  float r = rr / R;
+  float m = dot(lo, lo), nn = dot(lo, d), K = m + 1.0 - r * r;
+  vec4 ts = solve_quartic(4.0 * nn, 4.0 * nn * nn + 2.0 * K - 4.0 * (1.0 - d.y * d.y),
+                          4.0 * nn * K - 8.0 * (nn - lo.y * d.y), K * K - 4.0 * (m - lo.y * lo.y));
+  Hit best = no_hit();
+  for (int i = 0; i < 4; ++i) {
+    if (ts[i] >= INF) continue;
+    float t = tr.x + ts[i] * R;
+    if (t <= tmin || t >= best.t) continue;
+    vec3 p = o + t * d;
+    float pr = length(p.xz);
+    if ((p.y < H && inside_body(v, pr, p.y)) || clipped(v, p)) continue;
+    vec3 c = pr > 0.0 ? vec3(p.x / pr * R, H, p.z / pr * R) : vec3(0.0, H, 0.0);
+    best = Hit(t, normalize(p - c), M_RIM, v.row);
+  }
+  return best;
+}
+
+Hit hit_disk(Vessel v, vec3 o, vec3 d, float y, float rad, float tmin, vec3 n, int m) {
+  if (abs(d.y) < 1e-12) return no_hit();
+  float t = (y - o.y) / d.y;
+  vec3 p = o + t * d;
+  if (t <= tmin || dot(p.xz, p.xz) > rad * rad || clipped(v, p)) return no_hit();
+  return Hit(t, n, m, v.row);
+}
+
+#endif  // LIB_VESSEL_INTERSECT_GLSL

@@ -1,0 +1,262 @@
+#version 300 es
+// Pass 1: one path per pixel through every object of the scene. The path runs in the
+// world through air, glass and liquid; its medium is (medium, object). At each interface
+// Fresnel splits the light: the reflected part looks up the surroundings, the refracted
+// part is followed (total internal reflection follows the reflection), so light leaves
+// one glass and enters the next: a glass seen through another is right by construction.
+// Stages: trace_path (find surfaces, march foam heads), shade_interface (one interface),
+// surroundings (what a ray sees past everything), the debug outputs, and the output.
+#include "generated/constants.glsl"
+#include "generated/frame.glsl"
+#include "lib/common/math.glsl"
+#include "lib/scene/camera.glsl"
+#include "lib/scene/objects.glsl"
+#include "lib/scene/trace.glsl"
+#include "lib/vessel/media.glsl"
+#include "lib/optics/fresnel.glsl"
+#include "lib/liquid/surface.glsl"
+#include "lib/liquid/body.glsl"
+#include "lib/foam/head.glsl"
+#include "lib/environment/studio.glsl"
+#include "lib/environment/floor.glsl"
+#include "lib/output/tonemap.glsl"
+
+out vec4 frag_color;
+
+// The one path of this pixel.
+struct Path {
+  vec3 o, d;      // where it is and where it goes (world)
+  int medium;     // MEDIUM_AIR, MEDIUM_GLASS or MEDIUM_LIQUID
+  int obj;        // the object whose glass or drink it is in; -1 in the air
+  vec3 radiance;  // gathered so far
+  vec3 thr;       // throughput: what still reaches the eye of what lies ahead
+};
+
+float max3(vec3 v) { return max(v.r, max(v.g, v.b)); }
+
+// ---- stage: the surroundings ----
+
+// What a ray sees past every object: the floor or the studio from the air; from inside
+// a glass or a drink (a path that ran out of events) the studio.
+vec3 surroundings(vec3 o, vec3 d, int medium) { return medium == MEDIUM_AIR ? background(o, d) : studio_sky(d); }
+
+// ---- the geometry of an interface (shared by the picture and the path-event view) ----
+
+// Crossing the surface h at p: the normal facing the path, the media's indices, the
+// Fresnel reflectance (1 under total internal reflection) and the medium beyond.
+struct Crossing {
+  vec3 n;
+  float n1, n2, F;
+  int next;
+};
+
+// v, g: the records of h's object.
+Crossing crossing_at(Path path, Hit h, Vessel v, ObjectGlass g, bool below) {
+  Crossing c;
+  c.next = medium_across(h.m, path.medium, below);
+  c.n = dot(h.n, path.d) < 0.0 ? h.n : -h.n;
+  c.n1 = medium_ior(v, g, path.medium);
+  c.n2 = medium_ior(v, g, c.next);
+  c.F = fresnel_dielectric(-dot(c.n, path.d), c.n1, c.n2);
+  return c;
+}
+
+// The path goes on from p: refracted into the next medium, or reflected under total
+// internal reflection.
+void go_on(inout Path path, Hit h, Crossing c, vec3 p) {
+  if (c.F >= 1.0) {
+    path.d = reflect(path.d, c.n);
+  } else {
+    path.d = refract(path.d, c.n, c.n1 / c.n2);
+    path.medium = c.next;
+    path.obj = c.next == MEDIUM_AIR ? -1 : h.obj;
+  }
+  path.o = p;
+}
+
+// ---- stage: shade an interface ----
+
+// The light gathered at the surface h (the path's segment up to it, the key light's
+// highlight, the reflected surroundings) and the path onwards. v: the records of h's
+// object (inside a glass or drink that is also the path's). False: the path ended (it
+// reached the floor).
+bool shade_interface(inout Path path, Hit h, Vessel v) {
+  vec3 p = path.o + h.t * path.d;
+  ObjectGlass g = glass_of(v.row);
+  // The segment up to the surface, inside the path's medium.
+  if (path.medium == MEDIUM_LIQUID) path.radiance += path.thr * haze_inscatter(v, h.t);
+  path.thr *= medium_transmittance(v, g, path.medium, h.t);
+  // The floor is shaded at most once per interface, from one place (its shading loops
+  // over every glass): where the path ends on it, or where the reflection meets it.
+  vec3 floor_at = p, floor_weight = vec3(0.0);
+  float floor_dist = length(p - frame.cam_eye);
+  bool on_floor = h.m == M_FLOOR;
+  Crossing c;
+  if (on_floor) {
+    floor_weight = path.thr;
+    path.thr = vec3(0.0);
+  } else {
+    vec3 pl = to_local_point(v, p);
+    bool below = below_liquid(v, pl);
+#if FOAM_HEAD
+    if (h.m == M_GLASS_INNER && !below) {  // lacing on the wall
+      ObjectFoam f = fetch_object_foam(v.row);
+      float cover = lacing_cover(v, f, pl);
+      path.radiance += path.thr * cover * foam_light(v, f, to_local_dir(v, path.d), to_local_dir(v, frame.light_dir), 0.001, 0.0);
+      path.thr *= 1.0 - cover;
+    }
+#endif
+    c = crossing_at(path, h, v, g, below);
+    // Key light highlight (GGX), on the side the path arrives from.
+    float rough = h.m == M_LIQUID_SURFACE || h.m == M_CLIP_LIQUID ? v.liquid.roughness : g.glass_roughness;
+    path.radiance += path.thr * frame.light_color * frame.light_intensity * c.F * ggx_specular(c.n, -path.d, frame.light_dir, rough);
+    if (c.F < 1.0) {
+      // The reflection sees the surroundings: the floor or the studio from the air, the
+      // studio from inside a glass.
+      if (frame.transparent == 0 || path.medium != MEDIUM_AIR) {
+        vec3 r = reflect(path.d, c.n);
+        float t;
+        if (path.medium == MEDIUM_AIR && floor_along(p, r, t)) {
+          floor_at = p + t * r;
+          floor_dist = t;
+          floor_weight = path.thr * c.F;
+        } else {
+          path.radiance += path.thr * c.F * studio_sky(r);
+        }
+      }
+      path.thr *= 1.0 - c.F;
+    }
+  }
+  if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_dist);
+  if (on_floor) return false;
+  go_on(path, h, c, p);
+  return true;
+}
+
+// ---- stage: trace the path ----
+
+// Follows the path from the camera through at most frame.max_events interfaces; whatever
+// throughput is left then sees the surroundings. see_through: achromatic transmission
+// to the background (the alpha of transparent pictures). One loop: each iteration tests
+// one object (lib/scene/trace.glsl search_step) and, once a segment's nearest surface is
+// known, marches the heads along it and shades the interface.
+vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
+  Path path = Path(eye, dir, MEDIUM_AIR, -1, vec3(0.0), vec3(1.0));
+  see_through = 0.0;
+  bool escaped = false;
+  int events = 0;
+  Search s = start_search(0.0);
+  int steps = frame.max_events * (OBJECT_COUNT + 1);
+  for (int it = 0; it < steps; ++it) {
+    Vessel v;
+    if (!search_step(s, path.o, path.d, path.medium, path.obj, v)) continue;
+    Hit h = s.best;
+#if FOAM_HEAD
+    if (path.medium == MEDIUM_AIR) {  // heads and their big bubbles sit in the air above the drinks
+      foam_along(path.o, path.d, h.m == M_NONE ? 100.0 : h.t, path.radiance, path.thr);
+      if (max3(path.thr) < 1e-3) break;
+    }
+#endif
+    if (h.m == M_NONE) {
+      escaped = true;
+      break;
+    }
+    if (!shade_interface(path, h, v) || max3(path.thr) < 1e-3) break;
+    if (++events == frame.max_events) break;
+    s = start_search(2e-6);
+  }
+  if (escaped || max3(path.thr) >= 1e-3) {
+    if (frame.transparent != 0) {
+      float m = min(path.thr.r, min(path.thr.g, path.thr.b));
+      see_through = m;
+      path.radiance += (path.thr - vec3(m)) * ambient_light();
+    } else {
+      path.radiance += path.thr * surroundings(path.o, path.d, path.medium);
+    }
+  }
+  return path.radiance;
+}
+
+// ---- stage: debug outputs ----
+// Compiled only into the debug variant (DEBUG_VIEWS 1): llvmpipe pays for code behind a
+// uniform branch it does not take (this costs the picture a third of its time).
+#ifndef DEBUG_VIEWS
+#define DEBUG_VIEWS 0
+#endif
+#if DEBUG_VIEWS
+
+// The nearest surface along a world ray from a path in `medium` (of object `obj`), its
+// object's records in v: the search run to its end.
+Hit nearest_surface(vec3 o, vec3 d, int medium, int obj, float tmin, out Vessel v) {
+  Search s = start_search(tmin);
+  for (int it = 0; it <= OBJECT_COUNT; ++it)
+    if (search_step(s, o, d, medium, obj, v)) break;
+  return s.best;
+}
+
+// Depth / material: (t, material, object, 1) of the first surface; normal: (world
+// normal, material). Compared with core/reference first_hit by tests/gpu/test_probes.
+vec4 debug_first_surface(vec3 eye, vec3 dir, int view) {
+  Vessel v;
+  Hit h = nearest_surface(eye, dir, MEDIUM_AIR, -1, 0.0, v);
+  if (view == VIEW_NORMAL) return vec4(h.n, float(h.m));
+  return vec4(h.m != M_NONE ? h.t : 0.0, float(h.m), float(h.obj), 1.0);
+}
+
+// Event n (0-based) of the refracted path, as the picture follows it: (distance from
+// the previous event, material, object, medium before it); material M_NONE past the
+// path's end. Compared with a double-precision CPU trace (tests/gpu).
+vec4 debug_path_event(vec3 eye, vec3 dir, int n) {
+  Path path = Path(eye, dir, MEDIUM_AIR, -1, vec3(0.0), vec3(1.0));
+  for (int e = 0; e < frame.max_events; ++e) {
+    Vessel v;
+    Hit h = nearest_surface(path.o, path.d, path.medium, path.obj, e == 0 ? 0.0 : 2e-6, v);
+    if (e == n) return vec4(h.m != M_NONE ? h.t : 0.0, float(h.m), float(h.obj), float(path.medium));
+    if (h.m == M_NONE || h.m == M_FLOOR) break;
+    vec3 p = path.o + h.t * path.d;
+    go_on(path, h, crossing_at(path, h, v, glass_of(v.row), below_liquid(v, to_local_point(v, p))), p);
+  }
+  return vec4(0.0, float(M_NONE), -1.0, float(path.medium));
+}
+
+// Pixel (x, y) evaluates the medium rule for material x, medium y mod 3 and below
+// (y >= 3): (medium beyond, 0, 0, 1). Compared with core's medium_across by tests/gpu.
+vec4 debug_medium_rule() {
+  int m = int(gl_FragCoord.x), y = int(gl_FragCoord.y);
+  return vec4(float(medium_across(m, y % 3, y >= 3)), 0.0, 0.0, 1.0);
+}
+#endif  // DEBUG_VIEWS
+
+// ---- output ----
+
+void main() {
+  init_objects();
+  vec3 dir = camera_dir(gl_FragCoord.xy);
+#if DEBUG_VIEWS
+  int view = frame.debug_view;
+  if (view == VIEW_MEDIUM_RULE) {
+    frag_color = debug_medium_rule();
+    return;
+  }
+  if (view == VIEW_DEPTH || view == VIEW_NORMAL || view == VIEW_MATERIAL) {
+    frag_color = debug_first_surface(frame.cam_eye, dir, view);
+    return;
+  }
+  if (view == VIEW_PATH_EVENT) {
+    frag_color = debug_path_event(frame.cam_eye, dir, frame.debug_event);
+    return;
+  }
+#endif
+  float see_through;
+  vec3 radiance = trace_path(frame.cam_eye, dir, see_through);
+#if DEBUG_VIEWS
+  if (view == VIEW_COST) {  // the work this pixel's path needed
+    frag_color = vec4(float(g_cost), float(g_foam_steps), float(g_bounds_entered), 1.0);
+    return;
+  }
+#endif
+  vec3 c = radiance * frame.exposure;
+  c = frame.tonemap == 1 ? aces_filmic(c) : c;
+  float alpha = frame.transparent != 0 ? clamp(1.0 - see_through, 0.0, 1.0) : 1.0;
+  frag_color = vec4(linear_to_srgb(c), alpha);
+}

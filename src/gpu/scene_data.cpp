@@ -1,0 +1,220 @@
+#include "gpu/scene_data.hpp"
+
+#include "core/scene/camera.hpp"
+
+#include <GLES3/gl3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace draught::gpu {
+
+contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height, DebugView debug, int debug_event) {
+  const SceneParams& p = f.params;
+  contract::FrameBlock b{};
+  const CameraBasis cam = camera_basis(f.camera, width, height);
+  b.cam_eye = cam.eye;
+  b.cam_tan_half_vfov = cam.tan_half_vfov;
+  b.cam_right = cam.right;
+  b.cam_aspect = cam.aspect;
+  b.cam_up = cam.up;
+  b.cam_forward = cam.forward;
+  b.object_count = int(f.vessels.size());
+  b.max_events = p.render.max_events;
+  b.viewport_size = {width, height};
+  b.viewport_inv = {1.0f / width, 1.0f / height};
+  b.light_dir = glm::length(p.light.direction) > 1e-6f ? glm::normalize(p.light.direction) : glm::vec3(0, 1, 0);
+  b.light_intensity = p.light.intensity;
+  b.light_color = p.light.color;
+  b.light_cos_radius = std::cos(glm::radians(p.light.size));
+  b.env_mode = p.env.mode;
+  b.strip_intensity = p.env.strip_intensity;
+  b.backdrop_glow = p.env.backdrop_glow;
+  b.floor_on = p.env.floor && !p.render.transparent;
+  b.env_color = p.env.color;
+  b.checker_size = p.env.checker_size;
+  b.sky_top = p.env.sky_top;
+  b.exposure = p.render.exposure;
+  b.sky_horizon = p.env.sky_horizon;
+  b.tonemap = p.render.tonemap;
+  b.ground = p.env.ground;
+  b.transparent = p.render.transparent;
+  b.floor_a = p.env.floor_a;
+  b.debug_view = int(debug);
+  b.floor_b = p.env.floor_b;
+  b.debug_event = debug_event;
+  b.bubble_env = f.environment.reflected;
+  return b;
+}
+
+namespace {
+// A head is drawn when there is liquid and more than a tenth of a millimetre of foam
+// (the same test picks the FOAM_HEAD shader variant).
+bool has_head(const VesselFrame& v) { return v.has_liquid && v.foam.thickness > 1e-4; }
+}  // namespace
+
+contract::ObjectRecord pack_object(const FrameState& f, int row) {
+  const VesselFrame& vf = f.vessels[size_t(row)];
+  const VesselParams& vp = vf.params;
+  const Vessel& v = vf.vessel;
+  contract::ObjectRecord r{};
+  // bounds: the local bounding cylinder (walls and rim bead) in the world
+  r.bound_base = glm::vec3(vf.pose.position);
+  r.bound_axis = glm::vec3(vf.pose.orientation * glm::dvec3(0, 1, 0));
+  r.bound_radius = float(v.bound_radius);
+  r.bound_length = float(v.height + v.rim_minor);
+  // body: what the floor needs (shadow, contact)
+  r.height = float(v.height);
+  r.foot_radius = float(v.r_outer.front());
+  r.mean_outer_radius = float(vf.mean_outer_radius);
+  // Where the surface (with its ring wave, the only shape that moves the axis point)
+  // crosses the axis; a glass tipped past level is shadowed as if dry.
+  const double ny = vf.liquid.n.y;
+  r.wet_height = vf.has_liquid && ny > 1e-6 ? float((vf.liquid.offset + vf.liquid.waves.ring) / ny) : -1.0f;
+  r.absorption = vf.liquid_absorption;
+  r.has_liquid = vf.has_liquid ? 1 : 0;
+  // shape
+  const glm::dmat3 rot = glm::mat3_cast(vf.pose.orientation);
+  r.rot_x = glm::vec3(rot[0]);
+  r.rot_y = glm::vec3(rot[1]);
+  r.rot_z = glm::vec3(rot[2]);
+  r.position = glm::vec3(vf.pose.position);
+  r.base = float(v.base);
+  r.dy = float(v.dy);
+  r.inv_dy = float(1.0 / v.dy);
+  r.rim_major = float(v.rim_major);
+  r.rim_minor = float(v.rim_minor);
+  r.cavity_floor_radius = float(v.inner_radius(v.base));
+  // The cross-section as the reference intersector has it (normalised; off: 0, 0, 0, 1).
+  const glm::vec4 clip(scene_geometry(f).vessels[size_t(row)].clip);
+  r.clip_normal = glm::vec3(clip);
+  r.clip_offset = clip.w;
+  r.knot_row = row;
+  const bool head = has_head(vf);
+  r.has_head = head ? 1 : 0;
+  // liquid: the plane core solved (volume-true, never above the lowest rim point)
+  r.plane_normal = glm::vec3(vf.liquid.n);
+  r.plane_offset = float(vf.liquid.offset);
+  const SurfaceWaves& w = vf.liquid.waves;
+  r.wave_ring = float(w.ring);
+  r.wave_cos2a = float(w.cross.x);
+  r.wave_sin2a = float(w.cross.y);
+  r.wave_radius = float(w.radius);
+  r.ior = vp.liquid.ior;
+  r.haze_color = vp.liquid.haze_color;
+  r.haze = vp.liquid.haze;
+  r.roughness = vp.liquid.roughness;
+  // glass
+  r.glass_absorption = vp.glass.absorption;
+  r.glass_ior = vp.glass.ior;
+  r.glass_roughness = vp.glass.roughness;
+  // foam
+  const FoamFrame& fo = vf.foam;
+  const FoamParams& fp = vp.foam;
+  r.thickness = float(fo.thickness);
+  r.dome = float(fo.dome);
+  r.density = fp.density;
+  r.anisotropy = fp.anisotropy;
+  r.foam_color = fp.color;
+  r.multiscatter = fp.multiscatter;
+  r.bubble_size = fp.bubble_size;
+  r.detail = fp.detail;
+  const int bubbles = head ? std::min<int>(int(vf.big_bubbles.size()), contract::kMaxBigBubbles) : 0;
+  r.big_bubble_count = bubbles;
+  for (int i = 0; i < bubbles; ++i) {
+    const PlacedBubble& b = vf.big_bubbles[size_t(i)];
+    r.big_bubbles[i] = {glm::vec3(b.centre), float(b.popped ? -b.radius : b.radius)};
+  }
+  // Lacing is drawn with the head (as the renderer always did).
+  const int rings = head ? std::min<int>(int(fo.lacing.size()), contract::kMaxLacing) : 0;
+  r.lacing_count = rings;
+  r.lacing_strength = fp.lacing;
+  for (int i = 0; i < rings; ++i) r.lacing[i] = float(fo.lacing[size_t(i)]);
+  return r;
+}
+
+std::vector<glm::vec4> pack_knots(const Vessel& v) {
+  std::vector<glm::vec4> row(static_cast<size_t>(contract::kSegments));
+  for (size_t k = 0; k < row.size(); ++k)
+    row[k] = glm::vec4(glm::dvec4(v.r_outer[k], v.r_inner[k], v.r_outer[k + 1], v.r_inner[k + 1]));
+  return row;
+}
+
+namespace {
+void make_texture(unsigned& tex, int width, int rows) {
+  if (tex) glDeleteTextures(1, &tex);
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, width, rows);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
+}  // namespace
+
+SceneTextures::SceneTextures() { allocate(4); }
+
+SceneTextures::~SceneTextures() {
+  glDeleteTextures(1, &objects_tex_);
+  glDeleteTextures(1, &knots_tex_);
+}
+
+void SceneTextures::allocate(int rows) {
+  // Rows are bounded by memory (GL_MAX_TEXTURE_SIZE, >= 2048 in ES 3.0), not by the
+  // uniform-block size; grown in powers of two, everything re-uploaded.
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  if (rows > max_size)
+    throw std::runtime_error("a scene of " + std::to_string(rows) + " objects needs more texture rows than this GL driver has (" +
+                             std::to_string(max_size) + ")");
+  make_texture(objects_tex_, contract::kObjectTexels, rows);
+  make_texture(knots_tex_, contract::kSegments, rows);
+  capacity_ = rows;
+  objects_.clear();
+  knots_.clear();
+}
+
+void SceneTextures::update(const FrameState& f) {
+  const int n = int(f.vessels.size());
+  if (n > contract::kMaxSceneObjects)
+    throw std::runtime_error("the scene has " + std::to_string(n) + " objects; the renderer draws at most " +
+                             std::to_string(contract::kMaxSceneObjects) + " (kMaxSceneObjects)");
+  if (n > capacity_) {
+    int rows = capacity_;
+    while (rows < n) rows *= 2;
+    allocate(rows);
+  }
+  object_uploads_ = knot_uploads_ = 0;
+  objects_.resize(size_t(n));
+  knots_.resize(size_t(n));
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  for (int i = 0; i < n; ++i) {
+    const contract::ObjectRecord r = pack_object(f, i);
+    // (Records are value-initialised, padding included, so bytes compare.)
+    if (!objects_[size_t(i)] || std::memcmp(&r, &*objects_[size_t(i)], sizeof r) != 0) {
+      glBindTexture(GL_TEXTURE_2D, objects_tex_);
+      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, i, contract::kObjectTexels, 1, GL_RGBA, GL_FLOAT, &r);
+      objects_[size_t(i)] = r;
+      ++object_uploads_;
+    }
+    std::vector<glm::vec4> k = pack_knots(f.vessels[size_t(i)].vessel);
+    if (k != knots_[size_t(i)]) {  // only when the glass changed
+      glBindTexture(GL_TEXTURE_2D, knots_tex_);
+      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, i, contract::kSegments, 1, GL_RGBA, GL_FLOAT, k.data());
+      knots_[size_t(i)] = std::move(k);
+      ++knot_uploads_;
+    }
+  }
+}
+
+void SceneTextures::bind() const {
+  glActiveTexture(GL_TEXTURE0 + contract::kObjectSampler.unit);
+  glBindTexture(GL_TEXTURE_2D, objects_tex_);
+  glActiveTexture(GL_TEXTURE0 + contract::kKnotsSampler.unit);
+  glBindTexture(GL_TEXTURE_2D, knots_tex_);
+  glActiveTexture(GL_TEXTURE0);
+}
+
+}  // namespace draught::gpu

@@ -1,0 +1,62 @@
+// What the GPU reads of a FrameState, packed with the layouts generated from
+// src/interface/*.def: the Frame uniform block (generated/frame.hpp) and the scene's
+// data textures (generated/objects.hpp): one ObjectRecord row per object in u_objects,
+// one row of profile knots per vessel in u_knots. Textures are updated row by row, only
+// where something changed (knots when a glass changes). No physics here: every number
+// comes from the FrameState (core computes the liquid plane, big-bubble places and the
+// environment estimate).
+#pragma once
+
+#include "core/scene/frame.hpp"
+#include "generated/constants.hpp"
+#include "generated/frame.hpp"
+#include "generated/objects.hpp"
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace draught::gpu {
+
+using contract::DebugView;
+
+// The uniform block for a width x height target. debug_event: the event the PathEvent
+// view reports.
+contract::FrameBlock pack_frame_block(const FrameState&, int width, int height, DebugView, int debug_event = 0);
+// Object `row` of the frame (a vessel; its knots in u_knots row `row`).
+contract::ObjectRecord pack_object(const FrameState&, int row);
+// A vessel's knot row: texel k = (r_outer[k], r_inner[k], r_outer[k + 1], r_inner[k + 1]).
+std::vector<glm::vec4> pack_knots(const Vessel&);
+
+// The two data textures (RGBA32F, fetched texel by texel: ES 3.0 does not filter float
+// textures). Needs a current GLES 3.0 context.
+class SceneTextures {
+ public:
+  SceneTextures();
+  ~SceneTextures();
+  SceneTextures(const SceneTextures&) = delete;
+  SceneTextures& operator=(const SceneTextures&) = delete;
+
+  // Brings both textures up to the frame: rows that differ from what they hold are
+  // uploaded, nothing else. Throws for more than contract::kMaxSceneObjects objects.
+  void update(const FrameState&);
+  // Binds both textures to their units (generated: kObjectSampler, kKnotsSampler).
+  void bind() const;
+
+  // Rows uploaded by the last update (tests check that a still frame uploads none).
+  int object_rows_uploaded() const { return object_uploads_; }
+  int knot_rows_uploaded() const { return knot_uploads_; }
+  int capacity() const { return capacity_; }
+
+ private:
+  void allocate(int rows);
+
+  unsigned objects_tex_ = 0, knots_tex_ = 0;
+  int capacity_ = 0;  // rows allocated in both textures
+  std::vector<std::optional<contract::ObjectRecord>> objects_;  // what u_objects holds, row by row
+  std::vector<std::vector<glm::vec4>> knots_;     // what u_knots holds
+  int object_uploads_ = 0, knot_uploads_ = 0;
+};
+
+}  // namespace draught::gpu

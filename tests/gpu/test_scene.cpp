@@ -1,0 +1,235 @@
+// Scenes of several objects on the GPU: the C++/GLSL contract (the medium rule's twins,
+// the uniform block checked member by member), refracted paths through two glasses
+// against a double-precision CPU trace, a scene at the object limit, and data textures
+// that upload only what changed.
+#include "core/scene/camera.hpp"
+#include "gpu/program.hpp"
+#include "gpu/scene_data.hpp"
+#include "gpu_fixture.hpp"
+#include "reference_path.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+namespace draught::test {
+namespace {
+
+// The medium rule exists once per language: core/reference/media.hpp medium_across and
+// its GLSL twin in shaders/lib/vessel/media.glsl. The MediumRule view evaluates the
+// GLSL one for every (material, medium, below) at pixel (material, medium + 3 below).
+TEST(Contract, MediumRuleTwinsAgreeOnEveryInput) {
+  Gpu& g = gpu_instance();
+  const FrameState f = scene_frame({"lager", "pint", {}, {}});
+  const int materials = int(Material::ClipLiquid) + 1;
+  const gpu::DebugImage img = g.renderer->render_debug(f, materials, 6, gpu::DebugView::MediumRule);
+  int checked = 0;
+  for (int m = 0; m < materials; ++m)
+    for (int from = 0; from < 3; ++from)
+      for (int below = 0; below < 2; ++below) {
+        const int gl_row = from + 3 * below;  // gl_FragCoord.y counts from the bottom
+        const float* px = img.px(m, img.height - 1 - gl_row);
+        const MediumKind cpu = medium_across(Material(m), MediumKind(from), below != 0);
+        EXPECT_EQ(int(std::lround(px[0])), int(cpu)) << material_name(Material(m)) << " from medium " << from
+                                                     << (below ? " below" : " above") << " the liquid";
+        ++checked;
+      }
+  EXPECT_EQ(checked, materials * 6);
+}
+
+// The renderer checks every member of the Frame block against the driver's offsets. A
+// block whose members are in another order than the C++ struct's is refused, naming
+// the first member that moved.
+TEST(Contract, UniformBlockMismatchNamesTheMember) {
+  Gpu& g = gpu_instance();
+  (void)g;
+  gpu::ShaderSource frag = gpu::assemble_shader("generated/frame.glsl");
+  const std::string a = "  vec3 cam_eye;", b = "  float cam_tan_half_vfov;";
+  const size_t pa = frag.text.find(a), pb = frag.text.find(b);
+  ASSERT_NE(pa, std::string::npos);
+  ASSERT_NE(pb, std::string::npos);
+  // Swap the first two members: float then vec3 moves cam_eye from byte 0 to byte 16.
+  const std::string line_a = frag.text.substr(pa, frag.text.find('\n', pa) - pa);
+  const std::string line_b = frag.text.substr(pb, frag.text.find('\n', pb) - pb);
+  std::string swapped = frag.text;
+  swapped.replace(pb, line_b.size(), line_a);
+  swapped.replace(pa, line_a.size(), line_b);
+  frag.text = "#version 300 es\n" + swapped +
+              "out vec4 c;\nvoid main() { c = vec4(frame.cam_eye, frame.cam_tan_half_vfov); }\n";
+  gpu::ShaderSource vert{"#version 300 es\nvoid main() { gl_Position = vec4(0.0); }\n", {"test.vert"}};
+  gpu::Program program(vert, frag);
+  try {
+    gpu::check_uniform_block(program.id(), contract::kFrameBlockName, contract::kFrameBlockMembers,
+                             contract::kFrameBlockUsedBytes, sizeof(contract::FrameBlock), contract::kFrameBlockBinding,
+                             "test.frag");
+    ADD_FAILURE() << "a block with moved members was accepted";
+  } catch (const gpu::ShaderError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("Frame.cam_eye"), std::string::npos) << what;
+    EXPECT_NE(what.find("byte 16"), std::string::npos) << what;
+    std::printf("refused as expected: %s\n", what.c_str());
+  }
+}
+
+// Events of refracted paths through the flight seen along its row: the GPU's PathEvent
+// view against the CPU trace. Float on the GPU, double on the CPU: a path may fork where
+// an event grazes an edge, so an event is compared only where every earlier event
+// agrees, and materials may differ on a small share of those pixels (1 %, the pixels
+// whose path grazes an edge somewhere). Distances agree to max(0.1 mm, 1e-3 t).
+TEST(Flight, RefractedPathsThroughTwoGlassesMatchTheCpuTrace) {
+  Gpu& g = gpu_instance();
+  const FrameState f = make_frame(flight_scene(FlightView::AlongTheRow));
+  const int w = 96, h = 72, events = 6;
+  const SceneGeometry geo = scene_geometry(f);
+  const CameraBasis cam = camera_basis(f.camera, w, h);
+  std::vector<std::vector<PathEvent>> cpu(size_t(w * h));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      cpu[size_t(y * w + x)] = reference_path(f, geo, camera_ray(cam, x + 0.5, y + 0.5, w, h), f.params.render.max_events);
+  std::vector<bool> alive(size_t(w * h), true);  // all earlier events agree
+  int through_two = 0;  // pixels whose agreeing path met two glasses
+  std::vector<std::set<int>> met(size_t(w * h));
+  for (int e = 0; e < events; ++e) {
+    const gpu::DebugImage gpu = g.renderer->render_debug(f, w, h, gpu::DebugView::PathEvent, e);
+    int compared = 0, material_bad = 0, distance_bad = 0;
+    double worst = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const size_t i = size_t(y * w + x);
+        if (!alive[i] || int(cpu[i].size()) <= e) continue;
+        const PathEvent& c = cpu[i][size_t(e)];
+        const float* px = gpu.px(x, y);
+        ++compared;
+        const bool same = int(std::lround(px[1])) == int(c.m) && int(std::lround(px[2])) == c.object &&
+                          int(std::lround(px[3])) == int(c.medium);
+        if (!same) {
+          ++material_bad;
+          alive[i] = false;
+          continue;
+        }
+        if (c.m == Material::None) continue;
+        const double dt = std::fabs(double(px[0]) - c.t);
+        worst = std::max(worst, dt);
+        if (dt > std::max(1e-4, 1e-3 * c.t)) ++distance_bad;
+        if (c.object >= 0) met[i].insert(c.object);
+      }
+    std::printf("[flight-along-the-row event %d] %d paths compared, %d differ in material/object/medium, %d in distance; worst "
+                "|dt| %.2e m\n",
+                e, compared, material_bad, distance_bad, worst);
+    EXPECT_LE(material_bad, std::max(2, compared / 100)) << "event " << e;
+    EXPECT_LE(distance_bad, std::max(1, compared / 200)) << "event " << e;
+  }
+  for (const auto& s : met) through_two += s.size() >= 2;
+  std::printf("[flight-along-the-row] %d pixels' paths meet two glasses or more, every event agreeing\n", through_two);
+  EXPECT_GT(through_two, w * h / 50) << "the view should see glasses through each other";
+}
+
+// A scene at the object limit: kMaxSceneObjects glasses in a grid. It renders, every
+// pixel finite, and every glass is seen (it is the first surface of some pixel).
+TEST(Limits, SceneAtTheObjectLimitRendersEveryGlass) {
+  Gpu& g = gpu_instance();
+  const int side = 8;
+  static_assert(kMaxSceneObjects == 64, "the grid below holds 8 x 8 glasses");
+  Params p = resolve_scene({"lager", "pint", {"bubbles.max_bubbles=0", "render.supersample=1"}, {"eye=0.9,1.1,1.4"}});
+  Scene s;
+  s.params = p;
+  for (int i = 0; i < kMaxSceneObjects; ++i)
+    s.objects.push_back(SceneObject{"glass" + std::to_string(i),
+                                    Placement{{0.12f * float(i % side - 3.5f), 0.0f, 0.12f * float(i / side - 3.5f)}, 0.0f},
+                                    VesselObject{p}});
+  const FrameState f = make_frame(s);
+  ASSERT_EQ(int(f.vessels.size()), kMaxSceneObjects);
+  const int w = 192, h = 144;
+  const gpu::DebugImage depth = g.renderer->render_debug(f, w, h, gpu::DebugView::Depth);
+  std::set<int> seen;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      for (int c = 0; c < 4; ++c) ASSERT_TRUE(std::isfinite(depth.px(x, y)[c])) << x << "," << y;
+      if (depth.px(x, y)[2] >= 0) seen.insert(int(std::lround(depth.px(x, y)[2])));
+    }
+  EXPECT_EQ(int(seen.size()), kMaxSceneObjects) << "some glass is not the first surface of any pixel";
+  const Image img = g.renderer->render(f, w, h);
+  long black = 0;
+  for (size_t i = 0; i < img.rgba.size(); i += 4) black += img.rgba[i] == 0 && img.rgba[i + 1] == 0 && img.rgba[i + 2] == 0;
+  EXPECT_EQ(black, 0) << "black (NaN) pixels";
+  write_png(std::filesystem::path(DRAUGHT_DIFF_DIR) / "limit_64_glasses.png", img);
+  std::printf("%d of %d glasses seen; picture in %s\n", int(seen.size()), kMaxSceneObjects, DRAUGHT_DIFF_DIR);
+}
+
+TEST(Limits, MoreObjectsThanTheLimitAreAClearError) {
+  Gpu& g = gpu_instance();
+  FrameState f = scene_frame({"lager", "pint", {}, {}});
+  f.vessels.resize(size_t(kMaxSceneObjects + 1), f.vessels.front());
+  try {
+    g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(std::to_string(kMaxSceneObjects)), std::string::npos) << e.what();
+  }
+}
+
+// The data textures: a frame like the last uploads nothing; a drink that changes
+// uploads its object's row; knots only when a glass changes.
+TEST(SceneData, UploadsOnlyWhatChanged) {
+  Gpu& g = gpu_instance();
+  Scene s = flight_scene();
+  FrameState f = make_frame(s);
+  g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
+  g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
+  EXPECT_EQ(g.renderer->scene_textures().object_rows_uploaded(), 0);
+  EXPECT_EQ(g.renderer->scene_textures().knot_rows_uploaded(), 0);
+  f.vessels[2].liquid.offset -= 0.01;  // the stout drunk a little
+  g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
+  EXPECT_EQ(g.renderer->scene_textures().object_rows_uploaded(), 1);
+  EXPECT_EQ(g.renderer->scene_textures().knot_rows_uploaded(), 0);
+  f.vessels[1].vessel = f.vessels[0].vessel;  // another glass for the amber ale
+  g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
+  EXPECT_EQ(g.renderer->scene_textures().knot_rows_uploaded(), 1);
+}
+
+// The record packed for a glass holds core's numbers: the liquid plane as the
+// simulation solved it (the fill table never reaches the GPU) and the big bubbles as
+// core/foam placed them.
+TEST(SceneData, RecordsCarryCoresPhysics) {
+  const FrameState f = make_frame(flight_scene());
+  for (int i = 0; i < int(f.vessels.size()); ++i) {
+    const VesselFrame& v = f.vessels[size_t(i)];
+    const contract::ObjectRecord r = gpu::pack_object(f, i);
+    EXPECT_FLOAT_EQ(r.plane_offset, float(v.liquid.offset));
+    EXPECT_EQ(int(r.big_bubble_count.value), v.has_liquid && v.foam.thickness > 1e-4 ? int(v.big_bubbles.size()) : 0);
+    for (int b = 0; b < int(r.big_bubble_count.value); ++b)
+      EXPECT_FLOAT_EQ(r.big_bubbles[b].x, float(v.big_bubbles[size_t(b)].centre.x));
+    EXPECT_EQ(int(r.knot_row.value), i);
+  }
+}
+
+}  // namespace
+}  // namespace draught::test
+
+namespace draught::test {
+namespace {
+
+// A single glass is drawn with the one-object shader variant; the general path (several
+// objects) must give the same picture for it: waves, a head and a cross-section included.
+TEST(Variants, OneObjectVariantDrawsWhatTheGeneralPathDraws) {
+  Gpu& g = gpu_instance();
+  const FrameState frames[] = {
+      scene_frame({"lager", "pint", {"render.supersample=1"}, {}}),
+      scene_frame({"stout", "nonic", {"render.supersample=1", "clip.enabled=true"}, {"eye=0,0.2,0.3", "target=0,0.14,0"}}),
+      timeline_frame("shake-and-settle", 1.3),
+  };
+  for (const FrameState& f : frames) {
+    const Image fast = g.renderer->render(f, 96, 96);
+    g.renderer->set_one_object_variant(false);
+    const Image general = g.renderer->render(f, 96, 96);
+    g.renderer->set_one_object_variant(true);
+    int worst = 0;
+    for (size_t i = 0; i < fast.rgba.size(); ++i) worst = std::max(worst, std::abs(int(fast.rgba[i]) - int(general.rgba[i])));
+    EXPECT_LE(worst, 1) << "the one-object variant differs from the general path";
+  }
+}
+
+}  // namespace
+}  // namespace draught::test
