@@ -140,7 +140,7 @@ int bench(int frames, const std::vector<int>& sizes, const std::vector<std::stri
     // The same view with no objects: what the floor and the sky cost.
     FrameState empty = f;
     empty.vessels.clear();
-    renderer.set_one_object_variant(!s.general);
+    renderer.set_held_objects(!s.general);
     for (int size : sizes) {
       const double med_empty = median_ms(renderer, empty, size, size, frames);
       const Measured m = measure(renderer, f, size, frames, med_empty);
@@ -150,7 +150,7 @@ int bench(int frames, const std::vector<int>& sizes, const std::vector<std::stri
                   m.min, m.max, 1000.0 / m.median, m.tests, m.tests_max, m.foam, m.covered, m.per_kpx);
       if (s.flight) {
         // Each glass of the flight alone in the same view: what the same glasses cost
-        // without each other (the one-object shader variant, as a single glass renders).
+        // without each other.
         double extra = 0;
         long covered = 0;
         for (size_t k = 0; k < f.vessels.size(); ++k) {

@@ -50,10 +50,10 @@ void RenderTarget::release() {
 RenderTarget::~RenderTarget() { release(); }
 
 namespace {
-// The source with `#define name 1` right after its #version line (line numbers kept).
-ShaderSource with_define(ShaderSource src, const std::string& name) {
+// The source with `#define name value` right after its #version line (line numbers kept).
+ShaderSource with_define(ShaderSource src, const std::string& name, const std::string& value = "1") {
   const size_t eol = src.text.find('\n');
-  src.text.insert(eol + 1, "#define " + name + " 1\n#line 2 0\n");
+  src.text.insert(eol + 1, "#define " + name + " " + value + "\n#line 2 0\n");
   return src;
 }
 
@@ -74,7 +74,8 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kWaves) frag = with_define(std::move(frag), "SURFACE_WAVES");
   if (variant & kFoam) frag = with_define(std::move(frag), "FOAM_HEAD");
   if (variant & kDebug) frag = with_define(std::move(frag), "DEBUG_VIEWS");
-  if (variant & kOneObject) frag = with_define(std::move(frag), "ONE_OBJECT");
+  if (const int held = variant >> kHeldShift)
+    frag = with_define(std::move(frag), "HELD_OBJECTS", std::to_string(held));
   auto program = std::make_unique<Program>(vert, frag);
   bind_interface(*program, "passes/path.frag.glsl");
   return program;
@@ -108,14 +109,16 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
   // Only the code a frame needs: waves and foam when some object has them, the debug
-  // views when one is asked for, object loops of one iteration for a single object.
+  // views when one is asked for, and for a few objects their records held per pixel.
   bool waves = false, foam = false;
   for (const VesselFrame& v : f.vessels) {
     waves = waves || (v.has_liquid && !v.liquid.waves.flat());
     foam = foam || (v.has_liquid && v.foam.thickness > 1e-4);
   }
+  const int objects = int(f.vessels.size());
+  const int held = held_objects_ && objects >= 1 && objects <= kMaxHeldObjects ? objects : 0;
   const int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0) | (debug != DebugView::None ? kDebug : 0) |
-                      (one_object_variant_ && f.vessels.size() == 1 ? kOneObject : 0);
+                      (held << kHeldShift);
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
   glUseProgram(program->id());

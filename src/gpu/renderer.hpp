@@ -9,6 +9,7 @@
 #include "generated/constants.hpp"
 
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -62,26 +63,30 @@ class Renderer {
   void finish();
   // The scene's data textures (tests check what a frame uploads).
   const SceneTextures& scene_textures() const { return *textures_; }
-  // Scenes of one object are drawn with the one-object shader variant (object loops
-  // resolved at compile time; the same pictures, faster on llvmpipe). Off: every scene
-  // takes the general path (tests and benchmarks compare the two).
-  void set_one_object_variant(bool on) { one_object_variant_ = on; }
+  // Scenes of up to kMaxHeldObjects objects are drawn with a shader variant that holds
+  // every object's records per pixel (object loops resolved at compile time; the same
+  // pictures, much faster on llvmpipe). Four: a tasting flight; every held object costs
+  // each pixel its records' fetches up front. Off: every scene takes the general path
+  // (tests and benchmarks compare the two).
+  static constexpr int kMaxHeldObjects = 4;
+  void set_held_objects(bool on) { held_objects_ = on; }
 
  private:
   void draw_bubbles(const FrameState&, int width, int height);
 
-  // Bits: what the path pass is compiled with (software rasterizers pay for code even
-  // where a uniform branch skips it, so frames get only the code they use).
-  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kOneObject = 8 };
+  // What the path pass is compiled with (software rasterizers pay for code even where a
+  // uniform branch skips it, so frames get only the code they use): these bits, and the
+  // number of held objects (0: the general path) from bit 4 on.
+  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kHeldShift = 3 };
   std::unique_ptr<Program> build_program(int variant) const;
 
   std::filesystem::path shader_dir_;
-  std::unique_ptr<Program> programs_[16];    // by variant, built when first needed
+  std::map<int, std::unique_ptr<Program>> programs_;  // by variant, built when first needed
   std::unique_ptr<Program> bubble_program_;  // pass 2: rising bubbles, built when first needed
   std::unique_ptr<SceneTextures> textures_;  // u_objects, u_knots
   unsigned bubble_vao_ = 0, bubble_vbo_ = 0;
   unsigned vao_ = 0, ubo_ = 0;
-  bool one_object_variant_ = true;
+  bool held_objects_ = true;
 };
 
 // Turns a debug image into a picture a person can read (grey depth, RGB normals,

@@ -10,15 +10,18 @@
 #include "generated/objects.glsl"
 #include "lib/common/math.glsl"
 
-// The number of objects. The renderer compiles scenes of one object with ONE_OBJECT 1:
-// then every object loop has one iteration known at compile time (it disappears) and
-// the object's records are fetched once per pixel (load_vessel). Same source, same
-// results (tests/gpu checks), only faster.
-#ifndef ONE_OBJECT
-#define ONE_OBJECT 0
+// The number of objects. The renderer compiles scenes of a few objects (up to
+// Renderer::kMaxHeldObjects) with HELD_OBJECTS = their number: every object loop then
+// has a trip count known at compile time (it unrolls), and every object's records are
+// fetched once when the pixel starts and held (init_objects): the loops see constants,
+// not state they carry, and no fetch at a row that varies per pixel. Larger scenes
+// (HELD_OBJECTS 0) fetch records where they are used. Same source, same results
+// (tests/gpu checks); on llvmpipe the held path is much faster (docs/PERFORMANCE.md).
+#ifndef HELD_OBJECTS
+#define HELD_OBJECTS 0
 #endif
-#if ONE_OBJECT
-#define OBJECT_COUNT 1
+#if HELD_OBJECTS > 0
+#define OBJECT_COUNT HELD_OBJECTS
 #else
 #define OBJECT_COUNT frame.object_count
 #endif
@@ -56,46 +59,54 @@ Vessel fetch_vessel(int row) {
   return Vessel(row, fetch_object_bounds(row), fetch_object_body(row), fetch_object_shape(row), fetch_object_liquid(row));
 }
 
-#if ONE_OBJECT
-// The one object's records, fetched once when the pixel starts (init_objects) and never
-// changed after: loops see a constant, not state they carry.
-Vessel g_the_object;
-ObjectGlass g_the_glass;
+#if HELD_OBJECTS > 0
+// Every object's records, fetched when the pixel starts and never changed after.
+Vessel g_held[HELD_OBJECTS];
+ObjectGlass g_held_glass[HELD_OBJECTS];
 #endif
 
 // Call first in main().
 void init_objects() {
-#if ONE_OBJECT
-  g_the_object = fetch_vessel(0);
-  g_the_glass = fetch_object_glass(0);
+#if HELD_OBJECTS > 0
+  for (int i = 0; i < HELD_OBJECTS; ++i) {
+    g_held[i] = fetch_vessel(i);
+    g_held_glass[i] = fetch_object_glass(i);
+  }
 #endif
 }
 
-// Object `row`'s records (with one object: those fetched when the pixel started).
+// Object `row`'s records (held: selected by comparisons, which unroll, rather than by an
+// index that varies per pixel).
 Vessel load_vessel(int row) {
-#if ONE_OBJECT
-  return g_the_object;
+#if HELD_OBJECTS > 0
+  Vessel v = g_held[0];
+  for (int i = 1; i < HELD_OBJECTS; ++i)
+    if (row == i) v = g_held[i];
+  return v;
 #else
   return fetch_vessel(row);
 #endif
 }
 ObjectBounds bounds_of(int row) {
-#if ONE_OBJECT
-  return g_the_object.bounds;
+#if HELD_OBJECTS > 0
+  return load_vessel(row).bounds;
 #else
   return fetch_object_bounds(row);
 #endif
 }
 ObjectBody body_of(int row) {
-#if ONE_OBJECT
-  return g_the_object.body;
+#if HELD_OBJECTS > 0
+  return load_vessel(row).body;
 #else
   return fetch_object_body(row);
 #endif
 }
 ObjectGlass glass_of(int row) {
-#if ONE_OBJECT
-  return g_the_glass;
+#if HELD_OBJECTS > 0
+  ObjectGlass g = g_held_glass[0];
+  for (int i = 1; i < HELD_OBJECTS; ++i)
+    if (row == i) g = g_held_glass[i];
+  return g;
 #else
   return fetch_object_glass(row);
 #endif
