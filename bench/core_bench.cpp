@@ -81,7 +81,7 @@ BENCHMARK(BM_BubbleSprites)->Unit(benchmark::kMillisecond);
 void BM_ReferenceFirstHit(benchmark::State& state) {
   FrameState f = make_frame(glass_params("pint"));
   SceneGeometry geo = scene_geometry(f);
-  CameraBasis cam = camera_basis(f.camera, 64, 64);
+  CameraBasis cam = camera_basis(f, 64, 64);
   for (auto _ : state)
     for (int y = 0; y < 64; ++y)
       for (int x = 0; x < 64; ++x) benchmark::DoNotOptimize(first_hit(geo, camera_ray(cam, x + 0.5, y + 0.5, 64, 64)));

@@ -317,7 +317,11 @@ void Viewer::select(int object) {
 void Viewer::zoom(double clicks) {
   if (clicks == 0) return;
   Scene p = editor_.scene();
-  CameraParams c = p.params.camera.auto_frame ? sim_->frame().camera : p.params.camera;
+  int w = 1, h = 1;
+  window_.drawable_size(w, h);
+  // The camera as framed for this window (auto-framing follows its aspect), so zoom
+  // starts from what is on screen.
+  CameraParams c = p.params.camera.auto_frame ? sim_->frame().camera_for(w, h) : p.params.camera;
   const glm::vec3 back = c.eye - c.target;
   const float dist = glm::length(back);
   if (dist < 1e-6f) return;

@@ -15,7 +15,7 @@ namespace draught::gpu {
 contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height, DebugView debug, int debug_event) {
   const SceneParams& p = f.params;
   contract::FrameBlock b{};
-  const CameraBasis cam = camera_basis(f.camera, width, height);
+  const CameraBasis cam = camera_basis(f, width, height);
   b.cam_eye = cam.eye;
   b.cam_tan_half_vfov = cam.tan_half_vfov;
   b.cam_right = cam.right;

@@ -41,7 +41,7 @@ struct Reference {
 
 Reference reference_hits(const FrameState& f, int w, int h) {
   Reference r{w, h, {}};
-  CameraBasis cam = camera_basis(f.camera, w, h);
+  CameraBasis cam = camera_basis(f, w, h);
   SceneGeometry geo = scene_geometry(f);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) r.hits.push_back(first_hit(geo, camera_ray(cam, x + 0.5, y + 0.5, w, h), 0.0));
@@ -153,7 +153,7 @@ TEST(Probe, LiquidSurfaceAtSolvedFillHeight) {
   Gpu& g = gpu_instance();
   FrameState f = scene_frame({"lager", "pint", {"liquid.fill=0.6"}, {"eye=0,0.4,0.001", "target=0,0,0"}});
   const int n = 64;
-  CameraBasis cam = camera_basis(f.camera, n, n);
+  CameraBasis cam = camera_basis(f, n, n);
   gpu::DebugImage depth = g.renderer->render_debug(f, n, n, gpu::DebugView::Depth);
   int checked = 0;
   for (int y = 0; y < n; ++y)

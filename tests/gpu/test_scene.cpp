@@ -83,7 +83,7 @@ TEST(Flight, RefractedPathsThroughTwoGlassesMatchTheCpuTrace) {
   const FrameState f = make_frame(flight_scene(FlightView::AlongTheRow));
   const int w = 96, h = 72, events = 6;
   const SceneGeometry geo = scene_geometry(f);
-  const CameraBasis cam = camera_basis(f.camera, w, h);
+  const CameraBasis cam = camera_basis(f, w, h);
   std::vector<std::vector<PathEvent>> cpu(size_t(w * h));
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)

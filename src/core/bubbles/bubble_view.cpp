@@ -66,7 +66,7 @@ void add_sprites(const FrameState&, const SceneGeometry&, int target, const Came
 std::vector<BubbleSprite> bubble_sprites(const FrameState& f, int width, int height) {
   std::vector<BubbleSprite> out;
   const SceneGeometry geo = scene_geometry(f);
-  const CameraBasis cam = camera_basis(f.camera, width, height);
+  const CameraBasis cam = camera_basis(f, width, height);
   for (size_t k = 0; k < f.vessels.size(); ++k) {
     const VesselFrame& vf = f.vessels[k];
     if (!vf.has_liquid || vf.bubbles.empty()) continue;

@@ -19,7 +19,7 @@ struct Bounds {
   bool empty() const { return lo.x > hi.x; }
 };
 
-CameraParams frame_bounds(const CameraParams& c, const Bounds& b) {
+CameraParams frame_bounds(const CameraParams& c, const Bounds& b, double aspect = 1.0) {
   if (!c.auto_frame || b.empty()) return c;
   glm::dvec3 back = glm::dvec3(c.eye - c.target);
   back = glm::length(back) > 1e-9 ? glm::normalize(back) : glm::dvec3(0, 0, 1);
@@ -28,7 +28,8 @@ CameraParams frame_bounds(const CameraParams& c, const Bounds& b) {
   const double radius = 0.5 * std::max(size.x, size.z);
   const double height = b.hi.y;
   // Half the height with a margin for the floor and the rim, or the width.
-  const double half = std::max(0.5 * height + 0.012, radius * 1.1) * 1.12;
+  // The width fits the picture's width: a wide picture of a flight frames it tightly.
+  const double half = std::max(0.5 * height + 0.012, radius * 1.1 / std::max(aspect, 1e-3)) * 1.12;
   const double dist = half / half_tan + radius;
   CameraParams out = c;
   const glm::dvec3 centre(0.5 * (b.lo.x + b.hi.x), 0.47 * height, 0.5 * (b.lo.z + b.hi.z));
@@ -45,7 +46,8 @@ CameraParams frame_camera(const CameraParams& c, const Vessel& v) {
   return frame_bounds(c, b);
 }
 
-CameraParams frame_camera(const CameraParams& c, const std::vector<VesselFrame>& vessels) {
+namespace {
+Bounds standing_bounds(const std::vector<VesselFrame>& vessels) {
   Bounds b;
   // Each glass as it stands at its place (its upright bounds, so motion does not make the
   // camera swim).
@@ -55,7 +57,21 @@ CameraParams frame_camera(const CameraParams& c, const std::vector<VesselFrame>&
     b.add(at + glm::dvec3(-r, 0, -r));
     b.add(at + glm::dvec3(r, f.vessel.height, r));
   }
-  return frame_bounds(c, b);
+  return b;
+}
+}  // namespace
+
+CameraParams frame_camera(const CameraParams& c, const std::vector<VesselFrame>& vessels, double aspect) {
+  return frame_bounds(c, standing_bounds(vessels), aspect);
+}
+
+CameraParams FrameState::camera_for(int width, int height) const {
+  if (width <= 0 || height <= 0 || width == height) return camera;
+  return frame_camera(params.camera, vessels, double(width) / double(height));
+}
+
+CameraBasis camera_basis(const FrameState& f, int width, int height) {
+  return camera_basis(f.camera_for(width, height), width, height);
 }
 
 FrameState assemble_frame(const SceneParams& p, std::vector<VesselFrame> vessels, int selected) {
@@ -90,7 +106,7 @@ SceneGeometry scene_geometry(const FrameState& f) {
 }
 
 int pick_object(const FrameState& f, double px, double py, int width, int height) {
-  const CameraBasis cam = camera_basis(f.camera, width, height);
+  const CameraBasis cam = camera_basis(f, width, height);
   return first_hit(scene_geometry(f), camera_ray(cam, px, py, width, height)).object;
 }
 

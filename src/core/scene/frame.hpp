@@ -7,6 +7,7 @@
 #include "core/environment/reflection.hpp"
 #include "core/foam/foam.hpp"
 #include "core/params/params.hpp"
+#include "core/scene/camera.hpp"
 #include "core/reference/intersect.hpp"
 #include "core/scene/motion.hpp"
 #include "core/scene/scene.hpp"
@@ -38,7 +39,10 @@ struct VesselFrame {
 
 struct FrameState {
   SceneParams params;
-  CameraParams camera;  // the camera in effect (auto-framed or as given)
+  CameraParams camera;  // the camera in effect for a square picture (auto-framed or as given)
+  // The camera in effect for a width x height picture: auto-framing fits the scene's
+  // width to the picture's, so a wide picture of a flight is framed tightly.
+  CameraParams camera_for(int width, int height) const;
   std::vector<VesselFrame> vessels;
   int selected = 0;  // index into vessels of the object input drives
   EnvironmentFrame environment;  // what the surroundings give the renderer (core/environment)
@@ -50,10 +54,13 @@ FrameState assemble_frame(const SceneParams&, std::vector<VesselFrame>, int sele
 FrameState make_frame(const Scene&);
 FrameState make_frame(const Params&);  // a single glass
 // The camera that frames everything in the frame, looking along target - eye of `c`.
-CameraParams frame_camera(const CameraParams& c, const std::vector<VesselFrame>&);
+CameraParams frame_camera(const CameraParams& c, const std::vector<VesselFrame>&, double aspect = 1.0);
 CameraParams frame_camera(const CameraParams& c, const Vessel&);  // one upright glass at the origin
 // The reference intersector's view of the frame (every object, the floor, clip planes).
 SceneGeometry scene_geometry(const FrameState&);
+
+// The camera basis of a width x height picture of the frame (camera_for, then the basis).
+CameraBasis camera_basis(const FrameState&, int width, int height);
 
 // The object seen at pixel (px, py) of a width x height picture (the first surface along
 // the camera ray, reference intersector), or -1 for the floor and the sky.

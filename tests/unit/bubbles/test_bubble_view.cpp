@@ -22,7 +22,7 @@ FrameState settled(const SceneRequest& req) {
 // liquid (air -> glass -> liquid through the wall; refraction at each interface).
 double path_miss(const FrameState& f, double px, double py, int w, int h, const glm::dvec3& c) {
   const SceneGeometry geo = scene_geometry(f);
-  Ray r = camera_ray(camera_basis(f.camera, w, h), px, py, w, h);
+  Ray r = camera_ray(camera_basis(f, w, h), px, py, w, h);
   const double n[3] = {1.0, f.vessels[0].params.glass.ior, f.vessels[0].params.liquid.ior};
   int medium = 0;  // air, glass, liquid; through a side wall only
   for (int e = 0; e < 4 && medium != 2; ++e) {
