@@ -385,18 +385,8 @@ Pose TimelineDriver::pose_at(double t) const {
 }
 
 MotionSample TimelineDriver::sample(double t) {
-  // Velocities and accelerations by central differences of the smooth scripted path.
-  constexpr double h = 1e-3;
-  MotionSample m;
-  m.time = t;
-  m.pose = pose_at(t);
-  const Pose before = pose_at(t - h), after = pose_at(t + h);
-  const glm::dquat dq = after.orientation * glm::inverse(before.orientation);
-  const double angle = 2.0 * std::acos(std::clamp(std::abs(dq.w), 0.0, 1.0));
-  const glm::dvec3 axis(dq.x, dq.y, dq.z);
-  if (glm::length(axis) > 1e-15) m.angular_velocity = glm::normalize(axis) * (dq.w < 0 ? -angle : angle) / (2 * h);
-  m.linear_acceleration = (after.position - 2.0 * m.pose.position + before.position) / (h * h);
-  return sanitize(m);
+  // Velocities and accelerations of the smooth scripted path.
+  return sample_path(t, [this](double time) { return pose_at(time); });
 }
 
 void play_timeline(Simulation& sim, TimelineDriver& driver, const Timeline& tl, const Params& base, double t) {

@@ -6,6 +6,9 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 namespace draught {
 
 // The vessel's rigid pose: p_world = orientation * p_local + position. The local frame is
@@ -34,5 +37,25 @@ Pose tipped_on_floor(const glm::dquat& orientation, double foot_radius);
 // Finite, bounded motion: NaN/Inf components become 0 (identity for the orientation),
 // angular velocity is limited to max_rate rad/s and acceleration to max_accel m/s^2.
 MotionSample sanitize(const MotionSample&, double max_rate = 60.0, double max_accel = 200.0);
+
+// The motion sample at time t of a smooth scripted path of poses (a timeline, a glass set
+// back down): angular velocity and acceleration by central differences over +-1 ms.
+template <class PoseAt>
+MotionSample sample_path(double t, const PoseAt& pose_at);
+
+template <class PoseAt>
+MotionSample sample_path(double t, const PoseAt& pose_at) {
+  constexpr double h = 1e-3;
+  MotionSample m;
+  m.time = t;
+  m.pose = pose_at(t);
+  const Pose before = pose_at(t - h), after = pose_at(t + h);
+  const glm::dquat dq = after.orientation * glm::inverse(before.orientation);
+  const double angle = 2.0 * std::acos(std::clamp(std::abs(dq.w), 0.0, 1.0));
+  const glm::dvec3 axis(dq.x, dq.y, dq.z);
+  if (glm::length(axis) > 1e-15) m.angular_velocity = glm::normalize(axis) * (dq.w < 0 ? -angle : angle) / (2 * h);
+  m.linear_acceleration = (after.position - 2.0 * m.pose.position + before.position) / (h * h);
+  return sanitize(m);
+}
 
 }  // namespace draught

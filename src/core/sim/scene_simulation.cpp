@@ -64,15 +64,7 @@ MotionSample SceneSimulation::released(size_t i, double t) {
     releases_[i].start = -1;
     return m;
   }
-  const double h = 1e-3;
-  m.pose = pose_at(t);
-  const Pose before = pose_at(t - h), after = pose_at(t + h);
-  const glm::dquat dq = after.orientation * glm::inverse(before.orientation);
-  const double angle = 2.0 * std::acos(std::clamp(std::abs(dq.w), 0.0, 1.0));
-  const glm::dvec3 axis(dq.x, dq.y, dq.z);
-  if (glm::length(axis) > 1e-15) m.angular_velocity = glm::normalize(axis) * (dq.w < 0 ? -angle : angle) / (2 * h);
-  m.linear_acceleration = (after.position - 2.0 * m.pose.position + before.position) / (h * h);
-  return sanitize(m);
+  return sample_path(t, pose_at);
 }
 
 Simulation* SceneSimulation::vessel(int i) {
