@@ -180,14 +180,17 @@ float lacing_cover(Vessel v, ObjectFoam f, vec3 p) {
 void foam_along(vec3 o, vec3 d, float t_end, inout vec3 radiance, inout vec3 thr) {
   float done = 0.0;  // heads before this distance are marched
   for (int pass = 0; pass < OBJECT_COUNT; ++pass) {
-    // The nearest head that starts after the ones done.
+    // The nearest head that starts after the ones done, and whether another follows.
     int next = -1;
     float next_t0 = INF, next_t1 = INF;
+    bool more = false;
     for (int i = 0; i < OBJECT_COUNT; ++i) {
       if (!object_in_reach(i, o, d, done, t_end) || load_vessel(i).shape.has_head == 0) continue;
       Vessel v = load_vessel(i);
       float t0 = done, t1 = t_end;
-      if (foam_interval(v, fetch_object_foam(i), to_local_point(v, o), to_local_dir(v, d), t0, t1) && t0 < next_t0) {
+      if (!foam_interval(v, fetch_object_foam(i), to_local_point(v, o), to_local_dir(v, d), t0, t1)) continue;
+      more = more || next >= 0;
+      if (t0 < next_t0) {
         next = i;
         next_t0 = t0;
         next_t1 = t1;
@@ -199,8 +202,7 @@ void foam_along(vec3 o, vec3 d, float t_end, inout vec3 radiance, inout vec3 thr
     vec3 lo = to_local_point(v, o), ld = to_local_dir(v, d), l = to_local_dir(v, frame.light_dir);
     bubble_caps(v, f, lo, ld, next_t0, next_t1, l, radiance, thr);
     march_foam(v, f, lo, ld, next_t0, next_t1, l, radiance, thr);
-    // (With one object there is one head: no second pass.)
-    if (max(thr.r, max(thr.g, thr.b)) < 1e-3 || OBJECT_COUNT == 1) return;
+    if (max(thr.r, max(thr.g, thr.b)) < 1e-3 || !more) return;  // (no second pass for one head)
     done = next_t1;
   }
 }

@@ -34,8 +34,11 @@ Search start_search(float tmin) { return Search(no_hit(), -INF, -1, tmin); }
 
 // The object to test next: the smallest bound entry after the ones tested, while it can
 // still be nearer than the best hit (ties: the lower row first); -1 when none is left.
-int next_candidate(Search s, vec3 o, vec3 d, int medium, int obj, out float entry) {
+// then: the bound entry of the candidate after it (INF for none), so that the search
+// knows without another pass whether it is done once this one is tested.
+int next_candidate(Search s, vec3 o, vec3 d, int medium, int obj, out float entry, out float then) {
   entry = 0.0;
+  then = INF;
   if (medium != MEDIUM_AIR) return s.after_row < 0 ? obj : -1;
   int row = -1;
   float first = INF;
@@ -44,9 +47,13 @@ int next_candidate(Search s, vec3 o, vec3 d, int medium, int obj, out float entr
     if (!object_span(i, o, d, tr) || tr.y < s.tmin) continue;
     float e = max(tr.x, s.tmin);
     bool untested = e > s.after_t0 || (e == s.after_t0 && i > s.after_row);
-    if (untested && e <= s.best.t && e < first) {
+    if (!untested || e > s.best.t) continue;
+    if (e < first) {  // (rows rise: an equal entry keeps the lower row first)
+      then = first;
       first = e;
       row = i;
+    } else {
+      then = min(then, e);
     }
   }
   entry = first;
@@ -57,16 +64,15 @@ int next_candidate(Search s, vec3 o, vec3 d, int medium, int obj, out float entr
 // s.best is the nearest surface (the floor too), and v holds its object's records when
 // it is an object.
 bool search_step(inout Search s, vec3 o, vec3 d, int medium, int obj, out Vessel v) {
-  float entry;
-  int cand = next_candidate(s, o, d, medium, obj, entry);
+  float entry, then;
+  int cand = next_candidate(s, o, d, medium, obj, entry, then);
   v = load_vessel(max(cand, 0));
   if (cand >= 0) {
     ++g_bounds_entered;
     keep_nearest(s.best, object_hit(v, o, d, medium, s.tmin));
     s.after_t0 = entry;
     s.after_row = cand;
-    // (With one object there is never a second candidate: no second bounds pass.)
-    if (medium == MEDIUM_AIR && OBJECT_COUNT > 1 && next_candidate(s, o, d, medium, obj, entry) >= 0) return false;
+    if (then <= s.best.t) return false;  // another object may still be nearer
   }
   if (medium == MEDIUM_AIR) keep_nearest(s.best, hit_floor(o, d, s.tmin));
   if (s.best.obj >= 0 && s.best.obj != cand) v = load_vessel(s.best.obj);
