@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <iterator>
 #include <memory>
 #include <optional>
@@ -490,7 +491,9 @@ void Viewer::write_screenshot(int width, int height) const {
   for (int y = 0; y < height / 2; ++y)
     std::swap_ranges(img.px(0, y), img.px(0, y) + std::size_t(width) * 4, img.px(0, height - 1 - y));
   for (std::size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
-  write_png(opt_.screenshot, img);
+  const std::filesystem::path out(opt_.screenshot);
+  if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());  // as the CLI does
+  write_png(out, img);
   std::printf("wrote %s (%d x %d, %d frames, %s)\n", opt_.screenshot.c_str(), width, height, opt_.frames,
               window_.renderer().c_str());
 }

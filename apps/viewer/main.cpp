@@ -5,7 +5,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 namespace {
@@ -43,6 +45,13 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     parse_size(size, o.width, o.height);
+    // Checked before a window opens: the screenshot is PNG data, so its name says so.
+    if (!o.screenshot.empty()) {
+      std::string ext = std::filesystem::path(o.screenshot).extension().string();
+      for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+      if (ext != ".png")
+        throw std::runtime_error("--screenshot " + o.screenshot + ": expected a file name ending in .png");
+    }
     o.preset_given = app.get_option("--preset")->count() > 0;
     o.glass_given = app.get_option("--glass")->count() > 0;
     return draught::viewer::run_viewer(o);

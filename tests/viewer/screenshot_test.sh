@@ -16,7 +16,16 @@ run() {
   "$xvfb_run" -a -s "-screen 0 1024x768x24" "$viewer" "$@"
 }
 
-run --preset lager --size 320x240 --frames 30 --hide-panel --screenshot "$out/viewer-glass.png"
+# A screenshot name that is not .png is refused before any window opens.
+if "$viewer" --screenshot "$out/viewer-shot.jpg" 2>"$out/viewer-jpg.err"; then
+  echo "viewer_screenshot: --screenshot x.jpg was accepted" >&2; exit 1
+fi
+grep -q "expected a file name ending in .png" "$out/viewer-jpg.err" || { cat "$out/viewer-jpg.err" >&2; exit 1; }
+[ ! -e "$out/viewer-shot.jpg" ] || { echo "viewer_screenshot: a .jpg was written" >&2; exit 1; }
+# Missing folders of the screenshot's path are created.
+rm -rf "$out/new-folder"
+run --preset lager --size 320x240 --frames 30 --hide-panel --screenshot "$out/new-folder/viewer-glass.png"
+mv "$out/new-folder/viewer-glass.png" "$out/viewer-glass.png"
 "$checker" "$out/viewer-glass.png" 320 240 glass
 run --preset lager --size 320x240 --frames 30 --hide-panel --quality 0 --screenshot "$out/viewer-low.png"
 "$checker" "$out/viewer-low.png" 320 240 glass
