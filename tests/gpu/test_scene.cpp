@@ -154,6 +154,7 @@ TEST(Limits, SceneAtTheObjectLimitRendersEveryGlass) {
   long black = 0;
   for (size_t i = 0; i < img.rgba.size(); i += 4) black += img.rgba[i] == 0 && img.rgba[i + 1] == 0 && img.rgba[i + 2] == 0;
   EXPECT_EQ(black, 0) << "black (NaN) pixels";
+  std::filesystem::create_directories(DRAUGHT_DIFF_DIR);  // a fresh build has none yet
   write_png(std::filesystem::path(DRAUGHT_DIFF_DIR) / "limit_64_glasses.png", img);
   std::printf("%d of %d glasses seen; picture in %s\n", int(seen.size()), kMaxSceneObjects, DRAUGHT_DIFF_DIR);
 }
