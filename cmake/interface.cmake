@@ -9,15 +9,8 @@
 # SEGMENTS -> kSegments, MAX_SCENE_OBJECTS -> kMaxSceneObjects
 function(_iface_const_name upper out)
   string(TOLOWER "${upper}" lower)
-  string(REPLACE "_" ";" words "${lower}")
-  set(name "k")
-  foreach(w IN LISTS words)
-    string(SUBSTRING "${w}" 0 1 first)
-    string(SUBSTRING "${w}" 1 -1 rest)
-    string(TOUPPER "${first}" first)
-    string(APPEND name "${first}${rest}")
-  endforeach()
-  set(${out} "${name}" PARENT_SCOPE)
+  _iface_camel("${lower}" camel)
+  set(${out} "k${camel}" PARENT_SCOPE)
 endfunction()
 
 # GlassOuter -> GLASS_OUTER (upper) or glass-outer (kebab)

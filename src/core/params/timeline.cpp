@@ -315,17 +315,8 @@ void orbit_camera(CameraParams& camera, double orbit) {
 }  // namespace
 
 Params Timeline::params_at(double t, const Params& base) const {
-  Params p = base;
-  double orbit = 0;
-  for (auto& a : actions) {
-    if (a.at > t) break;
-    const double x = progress(a, t);
-    if (a.kind == TimelineAction::Kind::Orbit) orbit += a.degrees * x;
-    if (a.kind != TimelineAction::Kind::Set || !drives(a, 0)) continue;
-    set_param(p, *a.param, blended(a, get_param(p, *a.param), x));
-  }
-  if (orbit != 0) orbit_camera(p.camera, orbit);
-  return p;
+  // The scene of this one glass, so there is one place that applies set and orbit actions.
+  return vessel_document(scene_at(t, single_glass_scene(base)), 0);
 }
 
 Scene Timeline::scene_at(double t, const Scene& base) const {
