@@ -15,11 +15,14 @@ set(DRAUGHT_CORE_SOURCES
   src/core/liquid/beverage.cpp
   src/core/liquid/slosh.cpp
   src/core/foam/foam.cpp
+  src/core/foam/head_volume.cpp
   src/core/environment/reflection.cpp
+  src/core/environment/studio.cpp
   src/core/bubbles/bubbles.cpp
   src/core/bubbles/bubble_view.cpp
   src/core/reference/intersect.cpp
   src/core/reference/optics.cpp
+  src/core/reference/path_tracer.cpp
   src/core/sim/simulation.cpp
   src/core/sim/scene_simulation.cpp
   src/core/io/image.cpp

@@ -10,6 +10,7 @@
 #include "core/scene/frame.hpp"
 #include "core/params/preset.hpp"
 #include "core/params/timeline.hpp"
+#include "core/reference/path_tracer.hpp"
 #include "gpu/context.hpp"
 #include "gpu/renderer.hpp"
 
@@ -18,6 +19,8 @@
 #include <cstdio>
 #include <iostream>
 #include <tuple>
+
+#include <unistd.h>
 
 namespace draught::cli {
 
@@ -53,6 +56,42 @@ void check_camera(const SceneParams& p, bool camera_given) {
                    at + ": the camera needs a direction to look in; move the eye or the target");
 }
 
+namespace {
+
+// A still from the reference path tracer: the same frame, camera and output transform
+// as the GPU's picture; progress on stderr.
+int render_reference_still(const RenderRequest& req, const FrameState& frame, const std::filesystem::path& dest,
+                           const std::filesystem::path& out) {
+  ReferenceSettings settings;
+  settings.samples = req.samples;
+  settings.threads = req.threads;
+  const bool progress = req.progress || isatty(STDERR_FILENO);
+  const auto t0 = std::chrono::steady_clock::now();
+  if (progress)
+    settings.progress = [&](int done, int rows) {
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const int width = 28, filled = done * width / rows;
+      std::fprintf(stderr, "\r[%s%s] %3d %%  %4.0f s left", std::string(size_t(filled), '#').c_str(),
+                   std::string(size_t(width - filled), '.').c_str(), done * 100 / rows,
+                   done > 0 ? s * (rows - done) / done : 0.0);
+      if (done == rows) std::fprintf(stderr, "\n");
+      std::fflush(stderr);
+    };
+  const RadianceImage radiance = render_reference(frame, req.width, req.height, settings);
+  if (dest.has_parent_path()) std::filesystem::create_directories(dest.parent_path());
+  sweep_stale_temporaries(dest.parent_path());
+  write_png(dest, display_image(radiance, frame.params.render));
+  if (req.verbose)
+    std::fprintf(stderr, "reference: %dx%d at %d paths per pixel in %.1f s (%.0f paths per second)\n", req.width,
+                 req.height, req.samples, radiance.seconds,
+                 double(req.width) * req.height * req.samples / std::max(radiance.seconds, 1e-9));
+  if (dest != out) std::printf("wrote %s (through the symbolic link, to %s)\n", out.c_str(), dest.c_str());
+  else std::printf("wrote %s\n", out.string().c_str());
+  return 0;
+}
+
+}  // namespace
+
 int render(const RenderRequest& req) {
   std::filesystem::path out(req.output);
   if (out.extension() != ".png")
@@ -75,6 +114,7 @@ int render(const RenderRequest& req) {
   check_camera(scene.params, req.camera_given);
   if (req.verbose) std::fprintf(stderr, "%s", log.c_str());
   const FrameState frame = make_frame(scene);
+  if (req.reference) return render_reference_still(req, frame, dest, out);
   auto ctx = gpu::HeadlessContext::create();
   if (req.verbose) std::fprintf(stderr, "renderer: %s (%s)\n", ctx->renderer().c_str(), ctx->platform().c_str());
   gpu::Renderer renderer(req.shader_dir);

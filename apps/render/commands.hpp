@@ -16,6 +16,11 @@ struct RenderRequest {
   std::string debug;  // "", depth, normal, material
   std::string shader_dir;
   bool verbose = false;
+  // The reference path tracer (core/reference/path_tracer) instead of the GPU.
+  bool reference = false;
+  int samples = 64;  // --spp: paths per pixel
+  int threads = 0;   // 0: one per hardware thread
+  bool progress = false;  // draw the progress bar even when stderr is not a terminal
   bool output_given = false, camera_given = false;  // -o and --camera were on the command line
 };
 

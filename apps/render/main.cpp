@@ -44,6 +44,11 @@ int main(int argc, char** argv) {
   render->add_flag("--transparent", transparent, "Transparent background, premultiplied alpha");
   render->add_option("--supersample", supersample, "Anti-aliasing: samples per axis (1-4)");
   render->add_option("--shader-dir", rr.shader_dir, "Load shaders from this folder instead of the built-in ones");
+  std::string spp, threads;
+  render->add_flag("--reference", rr.reference,
+                   "Render with the reference path tracer on the CPU (slow, the ground truth) instead of the GPU");
+  render->add_option("--spp", spp, "Reference: paths per pixel, 1-100000 (default 64)");
+  render->add_option("--threads", threads, "Reference: worker threads, 1-256 (default: one per CPU)");
   cli::AnimateRequest anim;
   render->add_option("-t,--timeline", anim.timeline,
                      "Animate: play this timeline (a name or a JSON file); -o is then a folder for PNG frames or a "
@@ -94,6 +99,18 @@ int main(int argc, char** argv) {
       rr.verbose = verbose;
       rr.output_given = render->count("--output") > 0;
       rr.camera_given = render->count("--camera") > 0;
+      if (render->count("--spp")) rr.samples = cli::integer_flag("--spp", spp, 1, 100000);
+      if (render->count("--threads")) rr.threads = cli::integer_flag("--threads", threads, 1, 256);
+      if (rr.reference) {
+        if (!anim.timeline.empty()) throw InputError("--reference renders a still: leave out --timeline");
+        if (!rr.debug.empty()) throw InputError("--reference renders the picture: leave out --debug");
+        if (transparent) throw InputError("--reference renders an opaque picture: leave out --transparent");
+        if (!rr.shader_dir.empty()) throw InputError("--reference uses no shaders: leave out --shader-dir");
+        rr.progress = anim.progress;
+      } else {
+        for (const char* flag : {"--spp", "--threads"})
+          if (render->count(flag)) throw InputError(std::string(flag) + " needs --reference (it is about the path tracer)");
+      }
       if (!anim.timeline.empty()) {
         if (!rr.debug.empty()) throw InputError("--debug renders a still: leave out --timeline");
         anim.output = rr.output_given ? rr.output : "";
@@ -101,8 +118,10 @@ int main(int argc, char** argv) {
         anim.glass_given = render->count("--glass") > 0;
         return cli::animate(rr, anim);
       }
-      for (const char* flag : {"--fps", "--duration", "--progress", "--overwrite"})
+      for (const char* flag : {"--fps", "--duration", "--overwrite"})
         if (render->count(flag)) throw InputError(std::string(flag) + " needs --timeline (it is about animations)");
+      if (!rr.reference && render->count("--progress"))
+        throw InputError("--progress needs --timeline or --reference (it is about long renders)");
       return cli::render(rr);
     }
     if (*presets) return cli::list_presets();

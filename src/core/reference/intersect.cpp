@@ -232,6 +232,13 @@ Hit hit_vessel(const VesselGeometry& s, const Ray& world_ray, double tmin) {
   const Vessel& v = *s.vessel;
   const glm::dquat to_local = glm::inverse(s.pose.orientation);
   const Ray ray{to_local * (world_ray.o - s.pose.position), to_local * world_ray.d};
+  // The sphere around the glass's bounding cylinder first: most rays of a scene miss
+  // most glasses (a cheap test before two walls, a torus and the discs).
+  const double half = 0.5 * (v.height + v.rim_minor);
+  const glm::dvec3 oc = ray.o - glm::dvec3(0, half, 0);
+  const double b = glm::dot(oc, ray.d), r2 = half * half + v.bound_radius * v.bound_radius;
+  const double c = glm::dot(oc, oc) - r2;
+  if (c > 0 && (b > 0 || b * b < c)) return Hit{};
   // A surface's first hit that is not cut away by the cross-section.
   auto kept = [&](auto&& hit_from) {
     double from = tmin;

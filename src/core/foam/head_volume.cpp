@@ -1,0 +1,133 @@
+#include "core/foam/head_volume.hpp"
+
+#include "core/math/noise.hpp"
+#include "core/scene/frame.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace draught {
+
+namespace {
+// The ring of denser foam around a big bubble: density x (1 + k exp(-((dist - r) / (0.45 r))^2)).
+double ring_gain(const PlacedBubble& b) { return b.popped ? 0.6 : 1.8; }
+constexpr double kRingWidth = 0.45;
+// Beyond this many ring widths a ring adds less than 2e-4 (exp(-9)): it no longer counts
+// towards another bubble's bound.
+constexpr double kRingReach = 3.0;
+}  // namespace
+
+HeadVolume::HeadVolume(const VesselFrame& vf, const VesselGeometry& geometry) {
+  // As gpu/scene_data.cpp has_head: liquid and more than a tenth of a millimetre of foam.
+  present_ = vf.has_liquid && vf.foam.thickness > 1e-4;
+  if (!present_) return;
+  vessel_ = &vf.vessel;
+  liquid_ = vf.liquid;
+  clip_ = geometry.clip;
+  thickness_ = vf.foam.thickness;
+  dome_ = vf.foam.dome;
+  radius_ = vf.liquid.waves.radius;
+  const FoamParams& fp = vf.params.foam;
+  density_ = fp.density;
+  bubble_size_ = std::max<double>(fp.bubble_size, 1e-6);
+  detail_ = fp.detail;
+  bubbles_ = vf.big_bubbles;
+  // The bound: the noise adds at most 0.8 x detail; each bubble's ring multiplies by
+  // (1 + gain), and rings that reach one another multiply together.
+  double rings = 1;
+  for (const PlacedBubble& a : bubbles_) {
+    double m = 1 + ring_gain(a);
+    for (const PlacedBubble& b : bubbles_)
+      if (&a != &b && glm::length(a.centre - b.centre) < (1 + kRingReach * kRingWidth) * (a.radius + b.radius))
+        m *= 1 + ring_gain(b);
+    rings = std::max(rings, m);
+  }
+  majorant_ = density_ * (1 + 0.8 * detail_) * rings * 1.001;
+}
+
+double HeadVolume::thickness_at(double x, double z) const {
+  const double u2 = std::min((x * x + z * z) / (radius_ * radius_), 1.5);
+  return thickness_ * std::max(1 + dome_ * (1 - 2 * u2), 0.1);
+}
+
+double HeadVolume::density(const glm::dvec3& p) const {
+  if (!present_) return 0;
+  const double height = liquid_.level(p), top = thickness_at(p.x, p.z);
+  if (height < 0 || height > top || p.y > vessel_->height || std::hypot(p.x, p.z) > vessel_->inner_radius(p.y) ||
+      glm::dot(glm::dvec3(clip_), p) > clip_.w)
+    return 0;
+  // Bubbles are bigger low in the head (they coarsen as liquid drains out of it).
+  const double scale = bubble_size_ * (1 + 1.5 * (1 - height / top));
+  double d = density_ * std::max(1 + 1.6 * detail_ * (value_noise(glm::vec3(p / scale)) - 0.5), 0.0);
+  d *= std::clamp((top - height) / (0.12 * top), 0.0, 1.0);  // a soft top, a crisp underside
+  for (const PlacedBubble& b : bubbles_) {
+    const double dist = glm::length(p - b.centre);
+    if (dist < b.radius) return 0;  // inside a big bubble, or the void a popped one left
+    const double ring = (dist - b.radius) / (kRingWidth * b.radius);
+    d *= 1 + ring_gain(b) * std::exp(-ring * ring);
+  }
+  return d;
+}
+
+bool HeadVolume::interval(const glm::dvec3& o, const glm::dvec3& d, double& t0, double& t1) const {
+  if (!present_) return false;
+  const glm::dvec3 n = liquid_.n;
+  const SurfaceWaves& w = liquid_.waves;
+  const double waves = std::fabs(w.ring) + std::fabs(w.cross.x) + std::fabs(w.cross.y);
+  const double top_max = thickness_ * (1 + std::fabs(dome_)) + waves + 0.006;
+  const double h0 = glm::dot(n, o) - liquid_.offset, dh = glm::dot(n, d);
+  if (std::fabs(dh) > 1e-12) {
+    const double ta = (-waves - h0) / dh, tb = (top_max - h0) / dh;
+    t0 = std::max(t0, std::min(ta, tb));
+    t1 = std::min(t1, std::max(ta, tb));
+  } else if (h0 < -waves || h0 > top_max) {
+    return false;
+  }
+  // The cavity's bounding cylinder: the glass's bound radius, from the cavity floor to the rim.
+  const double y0 = vessel_->base, y1 = vessel_->height;
+  if (std::fabs(d.y) > 1e-12) {
+    const double ta = (y0 - o.y) / d.y, tb = (y1 - o.y) / d.y;
+    t0 = std::max(t0, std::min(ta, tb));
+    t1 = std::min(t1, std::max(ta, tb));
+  } else if (o.y < y0 || o.y > y1) {
+    return false;
+  }
+  const double R = vessel_->bound_radius;
+  const double a = d.x * d.x + d.z * d.z, b = o.x * d.x + o.z * d.z, c = o.x * o.x + o.z * o.z - R * R;
+  if (a > 1e-18) {
+    const double disc = b * b - a * c;
+    if (disc <= 0) return false;
+    const double s = std::sqrt(disc);
+    t0 = std::max(t0, (-b - s) / a);
+    t1 = std::min(t1, (-b + s) / a);
+  } else if (c > 0) {
+    return false;
+  }
+  return t1 > t0;
+}
+
+bool HeadVolume::hit_cap(const glm::dvec3& o, const glm::dvec3& d, double t0, double t1, double& t_hit,
+                         glm::dvec3& n) const {
+  bool found = false;
+  for (const PlacedBubble& b : bubbles_) {
+    if (b.popped) continue;
+    const glm::dvec3 oc = o - b.centre;
+    const double bb = glm::dot(oc, d), disc = bb * bb - (glm::dot(oc, oc) - b.radius * b.radius);
+    if (disc <= 0) continue;
+    const double s = std::sqrt(disc);
+    for (double t : {-bb - s, -bb + s}) {  // the near side, or the far side from inside
+      if (t <= t0 || t >= t1) continue;
+      const glm::dvec3 p = o + t * d;
+      // Only the cap that stands out of the head's top, and not where the glass is cut away.
+      if (liquid_.level(p) < thickness_at(p.x, p.z) || glm::dot(glm::dvec3(clip_), p) > clip_.w) continue;
+      t1 = t;
+      t_hit = t;
+      n = (p - b.centre) / b.radius;
+      found = true;
+      break;
+    }
+  }
+  return found;
+}
+
+}  // namespace draught

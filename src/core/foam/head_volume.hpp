@@ -1,0 +1,47 @@
+// The head as a participating medium: its extinction at a point of the glass's frame (the
+// C++ twin of foam_thickness_at and foam_density in shaders/lib/foam/head.glsl), where
+// along a ray it can be (foam_interval), and a bound on its extinction for
+// free-flight sampling. The reference path tracer samples scattering in it; the picture
+// marches the same field.
+#pragma once
+
+#include "core/foam/foam.hpp"
+#include "core/reference/intersect.hpp"
+
+#include <vector>
+
+namespace draught {
+
+struct VesselFrame;
+
+class HeadVolume {
+ public:
+  // The head of vessel frame `vf` cut by `clip` (a VesselGeometry's); empty() when the
+  // vessel has no head (as the renderer's has_head).
+  HeadVolume(const VesselFrame& vf, const VesselGeometry& geometry);
+  bool empty() const { return !present_; }
+  // Extinction per metre at p (glass frame).
+  double density(const glm::dvec3& p) const;
+  // A bound on density() everywhere (for delta and ratio tracking).
+  double majorant() const { return majorant_; }
+  // Cuts [t0, t1] of the local ray o + t d to where the head can be: the slab from the
+  // lowest wave to the highest top, inside the cavity's bounding cylinder. False: nowhere.
+  bool interval(const glm::dvec3& o, const glm::dvec3& d, double& t0, double& t1) const;
+  // The head's thickness above the liquid at (x, z).
+  double thickness_at(double x, double z) const;
+  // The big bubbles' caps (shiny films standing out of the head's top) along the local
+  // ray within (t0, t1): the nearest cap's t and outward normal. False: none.
+  bool hit_cap(const glm::dvec3& o, const glm::dvec3& d, double t0, double t1, double& t, glm::dvec3& n) const;
+
+ private:
+  bool present_ = false;
+  const Vessel* vessel_ = nullptr;
+  LiquidPlane liquid_;
+  glm::dvec4 clip_{0, 0, 0, 1};
+  double thickness_ = 0, dome_ = 0, radius_ = 1;  // radius: the surface's, for the dome
+  double density_ = 0, bubble_size_ = 1, detail_ = 0;
+  double majorant_ = 0;
+  std::vector<PlacedBubble> bubbles_;
+};
+
+}  // namespace draught

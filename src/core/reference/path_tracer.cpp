@@ -1,0 +1,415 @@
+#include "core/reference/path_tracer.hpp"
+
+#include "core/environment/studio.hpp"
+#include "core/foam/head_volume.hpp"
+#include "core/math/random.hpp"
+#include "core/output/tonemap.hpp"
+#include "core/reference/media.hpp"
+#include "core/reference/optics.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <numbers>
+#include <thread>
+
+namespace draught {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kEps = 1e-7;  // where a path starts again past the surface it left
+
+double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
+double mean3(const glm::dvec3& v) { return (v.x + v.y + v.z) / 3.0; }
+
+// An orthonormal basis around unit n (Duff et al. 2017).
+void basis(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
+  const double s = std::copysign(1.0, n.z), a = -1.0 / (s + n.z), c = n.x * n.y * a;
+  t = {1 + s * n.x * n.x * a, s * c, -s * n.x};
+  b = {c, s + n.y * n.y * a, -n.y};
+}
+
+glm::dvec3 around(const glm::dvec3& n, double cos_t, double phi) {
+  glm::dvec3 t, b;
+  basis(n, t, b);
+  const double sin_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t));
+  return glm::normalize(sin_t * std::cos(phi) * t + sin_t * std::sin(phi) * b + cos_t * n);
+}
+
+// Henyey-Greenstein: phase value for the cosine between the incoming travel direction
+// and the scattered one, and a sample of it.
+double hg_phase(double c, double g) {
+  const double g2 = g * g;
+  return (1 - g2) / (4 * kPi * std::pow(std::max(1 + g2 - 2 * g * c, 1e-12), 1.5));
+}
+glm::dvec3 sample_hg(const glm::dvec3& d, double g, Rng& rng) {
+  const double u = rng.uniform(), phi = 2 * kPi * rng.uniform();
+  double c;
+  if (std::fabs(g) < 1e-3) {
+    c = 1 - 2 * u;
+  } else {
+    const double s = (1 - g * g) / (1 - g + 2 * g * u);
+    c = (1 + g * g - s * s) / (2 * g);
+  }
+  return around(d, std::clamp(c, -1.0, 1.0), phi);
+}
+
+// Power heuristic (beta = 2) weight of a strategy with density a against one with b.
+double power_weight(double a, double b) { return a * a / (a * a + b * b); }
+
+// Everything the tracer needs of one vessel, prepared once per frame.
+struct VesselMedia {
+  glm::dquat to_local, to_world;
+  glm::dvec3 position{0.0};
+  double glass_ior = 1.5, liquid_ior = 1.33;
+  glm::dvec3 glass_absorption{0.0};
+  glm::dvec3 liquid_absorption{0.0}, haze{0.0};  // haze: scattering per metre (colour x amount)
+  glm::dvec3 foam_albedo{1.0};
+  double foam_g = 0;
+  glm::dvec3 local_point(const glm::dvec3& p) const { return to_local * (p - position); }
+  glm::dvec3 local_dir(const glm::dvec3& d) const { return to_local * d; }
+  double ior(MediumKind m) const {
+    return m == MediumKind::Glass ? glass_ior : (m == MediumKind::Liquid ? liquid_ior : 1.0);
+  }
+};
+
+// Where a path leaves a stretch of air: a scattering in a head, a big bubble's cap, or
+// neither (it reached the stretch's end).
+struct AirEvent {
+  enum Kind { None, Scatter, Cap } kind = None;
+  double t = kInf;
+  int obj = -1;
+  glm::dvec3 n{0.0};  // the cap's normal (world)
+};
+
+class Tracer {
+ public:
+  Tracer(const FrameState& f, const ReferenceSettings& s) : frame_(f), settings_(s), geo_(scene_geometry(f)), studio_(f.params) {
+    for (size_t i = 0; i < f.vessels.size(); ++i) {
+      const VesselFrame& vf = f.vessels[i];
+      heads_.emplace_back(vf, geo_.vessels[i]);
+      VesselMedia m;
+      m.to_world = vf.pose.orientation;
+      m.to_local = glm::inverse(vf.pose.orientation);
+      m.position = vf.pose.position;
+      m.glass_ior = vf.params.glass.ior;
+      m.liquid_ior = vf.params.liquid.ior;
+      m.glass_absorption = glm::dvec3(vf.params.glass.absorption);
+      m.liquid_absorption = glm::dvec3(vf.liquid_absorption);
+      // As the picture's medium_transmittance and haze_inscatter: extinction is
+      // absorption + haze; of the haze, the haze colour scatters and the rest absorbs.
+      const double haze = vf.params.liquid.haze;
+      m.haze = haze * glm::dvec3(vf.params.liquid.haze_color);
+      m.liquid_absorption += glm::dvec3(haze) - m.haze;
+      m.foam_albedo = glm::dvec3(vf.params.foam.color);
+      m.foam_g = vf.params.foam.anisotropy;
+      media_.push_back(m);
+    }
+  }
+
+  // The radiance arriving at the eye along the camera ray.
+  glm::dvec3 radiance(Ray ray, Rng& rng) const {
+    glm::dvec3 L(0.0), thr(1.0);
+    MediumKind medium = MediumKind::Air;
+    int obj = -1;
+    // Multiple importance sampling of the key light: the density with which the last
+    // light-sampling vertex (floor or head) chose this direction; < 0 when no such vertex
+    // could have sampled the light along this path (the camera, or a mirror since).
+    double mis_pdf = -1;
+    int surfaces = 0, scatters = 0;
+    const glm::dvec3 eye = ray.o;
+    for (;;) {
+      const Hit h = first_hit(geo_, ray, kEps);
+      double t_end = h.valid() ? h.t : kInf;
+      // The medium along the segment: absorption, or a scattering event before its end.
+      if (medium == MediumKind::Glass) {
+        thr *= glm::exp(-media_[size_t(obj)].glass_absorption * t_end);
+      } else if (medium == MediumKind::Liquid) {
+        const VesselMedia& m = media_[size_t(obj)];
+        double t_scatter;
+        if (!liquid_segment(m, t_end, thr, t_scatter, rng)) {
+          if (++scatters > settings_.max_scatters) break;
+          ray.o = ray.at(t_scatter);
+          ray.d = sample_hg(ray.d, 0.0, rng);  // haze: isotropic
+          mis_pdf = -1;                        // no light sampling inside a drink (it sits behind an interface)
+          continue;
+        }
+      } else {
+        const AirEvent e = air_segment(ray, t_end, rng);
+        if (e.kind == AirEvent::Scatter) {
+          if (++scatters > settings_.max_scatters) break;
+          const VesselMedia& m = media_[size_t(e.obj)];
+          thr *= m.foam_albedo;
+          const glm::dvec3 p = ray.at(e.t);
+          L += thr * light_at_foam(p, ray.d, m.foam_g, rng);
+          ray.o = p;
+          const glm::dvec3 d = sample_hg(ray.d, m.foam_g, rng);
+          mis_pdf = hg_phase(glm::dot(ray.d, d), m.foam_g);
+          ray.d = d;
+          if (!roulette(thr, surfaces + scatters, rng)) break;
+          continue;
+        }
+        if (e.kind == AirEvent::Cap) {
+          if (++surfaces > settings_.max_surfaces) break;
+          // A thin film of the drink: reflected by both faces, else straight through.
+          const double F = fresnel_dielectric(std::fabs(glm::dot(e.n, ray.d)), 1.0, media_[size_t(e.obj)].liquid_ior);
+          ray.o = ray.at(e.t);
+          if (rng.uniform() < 2 * F / (1 + F)) {
+            ray.d = reflect_dir(ray.d, e.n);
+            mis_pdf = -1;
+          }
+          continue;
+        }
+      }
+      if (!h.valid()) {  // out into the studio
+        L += thr * studio_.sky(ray.d);
+        if (studio_.key.contains(ray.d))
+          L += thr * studio_.key.radiance * (mis_pdf < 0 ? 1.0 : power_weight(mis_pdf, 1.0 / studio_.key.solid_angle));
+        break;
+      }
+      const glm::dvec3 p = ray.at(h.t);
+      if (h.m == Material::Floor) {
+        // The floor fades into the backdrop with distance (as the picture's).
+        if (rng.uniform() >= Studio::floor_visibility(glm::length(p - eye))) {
+          L += thr * glm::dvec3(studio_.env.ground);
+          break;
+        }
+        const glm::dvec3 albedo = studio_.floor_albedo(p);
+        L += thr * albedo * light_at_floor(p, rng);
+        thr *= albedo;  // cosine-weighted bounce: albedo / pi x cos / pdf = albedo
+        const double cos_t = std::sqrt(rng.uniform());
+        ray.o = p;
+        ray.d = around({0, 1, 0}, cos_t, 2 * kPi * rng.uniform());
+        mis_pdf = cos_t / kPi;
+        if (!roulette(thr, surfaces + scatters, rng)) break;
+        continue;
+      }
+      // A dielectric interface (glass, liquid surface, a cut face).
+      if (++surfaces > settings_.max_surfaces) break;
+      const VesselMedia& m = media_[size_t(h.object)];
+      const bool below = geo_.vessels[size_t(h.object)].liquid.below(m.local_point(p));
+      const MediumKind next = medium_across(h.m, medium, below);
+      const glm::dvec3 n = glm::dot(h.n, ray.d) < 0 ? h.n : -h.n;
+      const double n1 = m.ior(medium), n2 = m.ior(next);
+      const double F = fresnel_dielectric(-glm::dot(n, ray.d), n1, n2);
+      ray.o = p;
+      if (rng.uniform() < F) {
+        ray.d = reflect_dir(ray.d, n);
+      } else {
+        ray.d = glm::normalize(*refract_dir(ray.d, n, n1 / n2));  // F < 1: it refracts
+        medium = next;
+        obj = next == MediumKind::Air ? -1 : h.object;
+      }
+      mis_pdf = -1;
+    }
+    return L;
+  }
+
+ private:
+  // Russian roulette once a path is long: survivors carry the lost weight.
+  static bool roulette(glm::dvec3& thr, int events, Rng& rng) {
+    if (events < 8) return true;
+    const double q = std::min(1.0, max3(thr));
+    if (q <= 0 || rng.uniform() >= q) return false;
+    thr /= q;
+    return true;
+  }
+
+  // Through the drink for t_end: absorbed, or scattered by its haze. Spectral free-flight
+  // sampling: a channel picks the distance, the three channels' mean density weights it.
+  // False: scattered at t_scatter (thr updated either way).
+  static bool liquid_segment(const VesselMedia& m, double t_end, glm::dvec3& thr, double& t_scatter, Rng& rng) {
+    const glm::dvec3 sigma_t = m.liquid_absorption + m.haze;
+    if (max3(m.haze) <= 0) {
+      thr *= glm::exp(-sigma_t * t_end);
+      return true;
+    }
+    const int c = std::min(2, int(rng.uniform() * 3));
+    const double t = sigma_t[c] > 0 ? -std::log(1 - rng.uniform()) / sigma_t[c] : kInf;
+    if (t < t_end) {
+      const glm::dvec3 tr = glm::exp(-sigma_t * t);
+      thr *= tr * m.haze / mean3(sigma_t * tr);
+      t_scatter = t;
+      return false;
+    }
+    const glm::dvec3 tr = glm::exp(-sigma_t * t_end);
+    thr *= tr / mean3(tr);
+    return true;
+  }
+
+  // The heads along the world ray over [0, t_end] in order of entry, as (t0, t1, object).
+  struct Stretch {
+    double t0, t1;
+    int obj;
+  };
+  std::vector<Stretch> heads_along(const Ray& ray, double t_end) const {
+    std::vector<Stretch> out;
+    for (size_t i = 0; i < heads_.size(); ++i) {
+      if (heads_[i].empty()) continue;
+      const VesselMedia& m = media_[i];
+      double t0 = 0, t1 = t_end;
+      if (heads_[i].interval(m.local_point(ray.o), m.local_dir(ray.d), t0, t1)) out.push_back({t0, t1, int(i)});
+    }
+    std::sort(out.begin(), out.end(), [](const Stretch& a, const Stretch& b) { return a.t0 < b.t0; });
+    return out;
+  }
+
+  // A stretch of air [0, t_end]: the first cap of a big bubble, and delta tracking through
+  // the heads before it.
+  AirEvent air_segment(const Ray& ray, double t_end, Rng& rng) const {
+    AirEvent e;
+    const std::vector<Stretch> stretches = heads_along(ray, t_end);
+    double end = t_end;
+    for (const Stretch& s : stretches) {
+      const VesselMedia& m = media_[size_t(s.obj)];
+      double t;
+      glm::dvec3 n;
+      if (heads_[size_t(s.obj)].hit_cap(m.local_point(ray.o), m.local_dir(ray.d), 0.0, end, t, n)) {
+        end = t;
+        e = {AirEvent::Cap, t, s.obj, m.to_world * n};
+      }
+    }
+    for (const Stretch& s : stretches) {
+      if (s.t0 >= end) break;
+      const HeadVolume& head = heads_[size_t(s.obj)];
+      const VesselMedia& m = media_[size_t(s.obj)];
+      const glm::dvec3 o = m.local_point(ray.o), d = m.local_dir(ray.d);
+      const double M = head.majorant(), t1 = std::min(s.t1, end);
+      for (double t = s.t0;;) {
+        t -= std::log(1 - rng.uniform()) / M;
+        if (t >= t1) break;
+        if (rng.uniform() * M < head.density(o + t * d)) return {AirEvent::Scatter, t, s.obj, {}};
+      }
+    }
+    return e;
+  }
+
+  // The fraction of light that crosses the air from p along d to the sky: 0 past any
+  // surface (a dielectric bends it away), else the heads' transmittance (ratio
+  // tracking) and the films of caps it passes straight through.
+  double sky_visibility(const Ray& ray, Rng& rng) const {
+    if (first_hit(geo_, ray, kEps).valid()) return 0;
+    double T = 1;
+    for (const Stretch& s : heads_along(ray, kInf)) {
+      const HeadVolume& head = heads_[size_t(s.obj)];
+      const VesselMedia& m = media_[size_t(s.obj)];
+      const glm::dvec3 o = m.local_point(ray.o), d = m.local_dir(ray.d);
+      const double M = head.majorant();
+      for (double t = s.t0;;) {
+        t -= std::log(1 - rng.uniform()) / M;
+        if (t >= s.t1) break;
+        T *= 1 - std::min(head.density(o + t * d), M) / M;
+        if (T < 1e-4) return 0;
+      }
+      double from = 0, t;
+      glm::dvec3 n;
+      while (head.hit_cap(o, d, from, kInf, t, n)) {
+        const double F = fresnel_dielectric(std::fabs(glm::dot(n, d)), 1.0, m.liquid_ior);
+        T *= 1 - 2 * F / (1 + F);
+        from = t + kEps;
+      }
+    }
+    return T;
+  }
+
+  // A direction towards the key softbox (uniform in its cone), or none.
+  bool sample_key(Rng& rng, glm::dvec3& l) const {
+    if (studio_.key.solid_angle <= 0) return false;
+    const double cos_t = 1 - rng.uniform() * (1 - studio_.key.cos_radius);
+    l = around(studio_.key.dir, cos_t, 2 * kPi * rng.uniform());
+    return true;
+  }
+
+  // Direct light of the key softbox reflected by the floor at p (per unit albedo).
+  glm::dvec3 light_at_floor(const glm::dvec3& p, Rng& rng) const {
+    glm::dvec3 l;
+    if (!sample_key(rng, l) || l.y <= 0) return glm::dvec3(0.0);
+    const double pdf_light = 1.0 / studio_.key.solid_angle, pdf_bsdf = l.y / kPi;
+    if (sky_visibility({p, l}, rng) <= 0) return glm::dvec3(0.0);
+    return studio_.key.radiance * (l.y / kPi) / pdf_light * power_weight(pdf_light, pdf_bsdf);
+  }
+
+  // Direct light of the key softbox scattered at head point p (per unit albedo) towards
+  // -d, where d is the direction the path travelled to p.
+  glm::dvec3 light_at_foam(const glm::dvec3& p, const glm::dvec3& d, double g, Rng& rng) const {
+    glm::dvec3 l;
+    if (!sample_key(rng, l)) return glm::dvec3(0.0);
+    const double pdf_light = 1.0 / studio_.key.solid_angle, phase = hg_phase(glm::dot(d, l), g);
+    const double vis = sky_visibility({p, l}, rng);
+    if (vis <= 0) return glm::dvec3(0.0);
+    return studio_.key.radiance * vis * phase / pdf_light * power_weight(pdf_light, phase);
+  }
+
+  const FrameState& frame_;
+  ReferenceSettings settings_;
+  SceneGeometry geo_;
+  Studio studio_;
+  std::vector<HeadVolume> heads_;
+  std::vector<VesselMedia> media_;
+};
+
+}  // namespace
+
+RadianceImage render_reference(const FrameState& f, int width, int height, const ReferenceSettings& s) {
+  const auto start = std::chrono::steady_clock::now();
+  RadianceImage img;
+  img.width = width;
+  img.height = height;
+  img.pixels.assign(size_t(width) * size_t(height), glm::dvec3(0.0));
+  const Tracer tracer(f, s);
+  const CameraBasis cam = camera_basis(f, width, height);
+  const int spp = std::max(1, s.samples);
+  std::atomic<int> next_row{0};
+  std::mutex progress_lock;
+  int rows_done = 0;
+  auto work = [&] {
+    for (int y; (y = next_row.fetch_add(1)) < height;) {
+      for (int x = 0; x < width; ++x) {
+        Rng rng(s.seed, std::uint64_t(y) * std::uint64_t(width) + std::uint64_t(x), 0);
+        glm::dvec3 sum(0.0);
+        for (int i = 0; i < spp; ++i) {
+          // A box filter over the pixel, as the picture's supersampling.
+          const Ray r = camera_ray(cam, x + rng.uniform(), y + rng.uniform(), width, height);
+          const glm::dvec3 L = tracer.radiance(r, rng);
+          if (std::isfinite(L.x) && std::isfinite(L.y) && std::isfinite(L.z)) sum += L;
+        }
+        img.at(x, y) = sum / double(spp);
+      }
+      if (s.progress) {
+        std::lock_guard<std::mutex> lock(progress_lock);
+        s.progress(++rows_done, height);
+      }
+    }
+  };
+  int threads = s.threads > 0 ? s.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::min(threads, height);
+  std::vector<std::thread> pool;
+  for (int i = 1; i < threads; ++i) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  img.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return img;
+}
+
+Image display_image(const RadianceImage& r, const RenderParams& params) {
+  Image img;
+  img.width = r.width;
+  img.height = r.height;
+  img.rgba.resize(size_t(r.width) * size_t(r.height) * 4);
+  for (int y = 0; y < r.height; ++y)
+    for (int x = 0; x < r.width; ++x) {
+      const glm::u8vec3 c = display_rgb8(r.at(x, y), params);
+      std::uint8_t* px = img.px(x, y);
+      px[0] = c.r;
+      px[1] = c.g;
+      px[2] = c.b;
+      px[3] = 255;
+    }
+  return img;
+}
+
+}  // namespace draught
