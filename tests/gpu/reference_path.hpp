@@ -19,6 +19,7 @@ struct PathEvent {
   Material m = Material::None;
   int object = -1;
   MediumKind medium = MediumKind::Air;  // the medium before the surface
+  Ray ray;                              // the stretch of the path that ends here
 };
 
 inline std::vector<PathEvent> reference_path(const FrameState& f, const SceneGeometry& geo, Ray r, int max_events) {
@@ -34,7 +35,7 @@ inline std::vector<PathEvent> reference_path(const FrameState& f, const SceneGeo
       h = hit_vessel(geo.vessels[size_t(object)], r, tmin);
       h.object = h.valid() ? object : -1;
     }
-    events.push_back({h.valid() ? h.t : 0.0, h.m, h.object, medium});
+    events.push_back({h.valid() ? h.t : 0.0, h.m, h.object, medium, r});
     if (!h.valid() || h.m == Material::Floor) break;
     const glm::dvec3 p = r.at(h.t);
     const VesselFrame& v = f.vessels[size_t(h.object)];

@@ -1,0 +1,157 @@
+// The picture against the project's reference path tracer (core/reference/path_tracer),
+// region by region: the glass, the drink seen through it, the head. Each pixel is
+// classified by the refracted path of its camera ray (tests/gpu/reference_path.hpp);
+// pixels next to another region are left out (edges are where supersampling and the
+// reference's jittered samples disagree by construction). The difference is CIEDE2000
+// between the two 8-bit sRGB pictures, after the same exposure and tone map.
+//
+// The targets (docs/REFERENCE.md): mean <= 2 on glass and liquid, <= 4 on the
+// head, 90th percentile <= 5. Where the picture does not meet them yet, the bounds below
+// are today's figures plus a margin, so a change that moves the picture away from the
+// reference fails, and docs/REFERENCE.md states both.
+#include "color_difference.hpp"
+#include "gpu_fixture.hpp"
+#include "reference_path.hpp"
+
+#include "core/foam/head_volume.hpp"
+#include "core/reference/path_tracer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace draught::test {
+namespace {
+
+TEST(Ciede2000, MatchesSharmasTestData) {
+  // Pairs 1, 7, 17 and 25 of Sharma, Wu and Dalal's table (2005).
+  EXPECT_NEAR(ciede2000({50, 2.6772, -79.7751}, {50, 0, -82.7485}), 2.0425, 1e-4);
+  EXPECT_NEAR(ciede2000({50, 0, 0}, {50, -1, 2}), 2.3669, 1e-4);
+  EXPECT_NEAR(ciede2000({50, 2.5, 0}, {73, 25, -18}), 27.1492, 1e-4);
+  EXPECT_NEAR(ciede2000({60.2574, -34.0099, 36.2677}, {60.4626, -34.1751, 39.4387}), 1.2644, 1e-4);
+  EXPECT_NEAR(ciede2000(srgb8_to_lab(255, 255, 255), {100, 0, 0}), 0.0, 1e-3);
+}
+
+enum class Region { Background, Glass, Liquid, Foam };
+const char* region_name(Region r) {
+  return r == Region::Glass ? "glass" : r == Region::Liquid ? "liquid" : r == Region::Foam ? "foam" : "background";
+}
+
+// What the camera ray sees: the head when its refracted path crosses one (through air),
+// the drink when it enters one, else the glass when it meets one.
+Region region_of(const FrameState& f, const SceneGeometry& geo, const std::vector<HeadVolume>& heads, const Ray& ray) {
+  const std::vector<PathEvent> events = reference_path(f, geo, ray, 12);
+  if (events.empty() || events[0].m == Material::None || events[0].m == Material::Floor)
+    return Region::Background;
+  for (const PathEvent& e : events) {
+    if (e.medium == MediumKind::Liquid) return Region::Liquid;
+    if (e.medium != MediumKind::Air) continue;
+    const double len = e.m == Material::None ? 1.0 : e.t;
+    for (size_t i = 0; i < heads.size(); ++i) {
+      const VesselFrame& v = f.vessels[i];
+      const glm::dquat to_local = glm::inverse(v.pose.orientation);
+      const glm::dvec3 o = to_local * (e.ray.o - v.pose.position), d = to_local * e.ray.d;
+      double t0 = 0, t1 = len;
+      if (!heads[i].interval(o, d, t0, t1)) continue;
+      for (int k = 0; k < 64; ++k)
+        if (heads[i].density(o + (t0 + (t1 - t0) * (k + 0.5) / 64) * d) > 0) return Region::Foam;
+    }
+  }
+  return Region::Glass;
+}
+
+struct RegionStats {
+  std::vector<double> de;
+  double mean() const {
+    double s = 0;
+    for (double d : de) s += d;
+    return de.empty() ? 0 : s / double(de.size());
+  }
+  double p90() const {
+    if (de.empty()) return 0;
+    std::vector<double> v = de;
+    std::nth_element(v.begin(), v.begin() + ptrdiff_t(v.size() * 9 / 10), v.end());
+    return v[v.size() * 9 / 10];
+  }
+};
+
+struct Bounds {
+  double mean, p90;
+};
+
+struct ComparisonCase {
+  const char* name;
+  SceneRequest request;
+  int size;
+  int spp;
+  Bounds glass, liquid, foam;
+};
+
+class ReferenceComparison : public ::testing::TestWithParam<ComparisonCase> {};
+
+TEST_P(ReferenceComparison, RegionsAgreeWithinTheirBounds) {
+  const ComparisonCase& c = GetParam();
+  const FrameState f = scene_frame(c.request);
+  const int n = c.size;
+  const Image picture = gpu_instance().renderer->render(f, n, n);
+  ReferenceSettings settings;
+  settings.samples = c.spp;
+  const Image reference = display_image(render_reference(f, n, n, settings), f.params.render);
+
+  // Classify each pixel at four points inside it; keep those whose 3x3 neighbourhood
+  // is one region throughout.
+  const SceneGeometry geo = scene_geometry(f);
+  std::vector<HeadVolume> heads;
+  for (size_t i = 0; i < f.vessels.size(); ++i) heads.emplace_back(f.vessels[i], geo.vessels[i]);
+  const CameraBasis cam = camera_basis(f, n, n);
+  std::vector<int> region(size_t(n) * size_t(n));
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      int r = -1;
+      for (double oy : {0.25, 0.75})
+        for (double ox : {0.25, 0.75}) {
+          const int here = int(region_of(f, geo, heads, camera_ray(cam, x + ox, y + oy, n, n)));
+          r = r == -1 || r == here ? here : -2;
+        }
+      region[size_t(y) * size_t(n) + size_t(x)] = r;
+    }
+  RegionStats stats[4];
+  for (int y = 1; y + 1 < n; ++y)
+    for (int x = 1; x + 1 < n; ++x) {
+      const int r = region[size_t(y) * size_t(n) + size_t(x)];
+      bool inside = r >= 0;
+      for (int dy = -1; dy <= 1 && inside; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) inside = inside && region[size_t(y + dy) * size_t(n) + size_t(x + dx)] == r;
+      if (!inside) continue;
+      const std::uint8_t* a = picture.px(x, y);
+      const std::uint8_t* b = reference.px(x, y);
+      stats[r].de.push_back(ciede2000(srgb8_to_lab(a[0], a[1], a[2]), srgb8_to_lab(b[0], b[1], b[2])));
+    }
+
+  const Bounds bounds[4] = {{0, 0}, c.glass, c.liquid, c.foam};
+  for (Region r : {Region::Glass, Region::Liquid, Region::Foam}) {
+    const RegionStats& s = stats[int(r)];
+    std::printf("%s %-7s %4zu px  CIEDE2000 mean %5.2f  p90 %5.2f\n", c.name, region_name(r), s.de.size(), s.mean(),
+                s.p90());
+    const Bounds& b = bounds[int(r)];
+    if (b.mean <= 0) continue;  // no such region in this scene
+    EXPECT_GE(s.de.size(), 10u) << region_name(r) << ": too few pixels to compare";
+    EXPECT_LE(s.mean(), b.mean) << region_name(r);
+    EXPECT_LE(s.p90(), b.p90) << region_name(r);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, ReferenceComparison,
+    // Today (llvmpipe, 64x64, 256 paths per pixel): glass 1.6 / 4.8, liquid 4.8 / 8.8,
+    // head 13.5 / 19.7 (mean / 90th percentile).
+    ::testing::Values(ComparisonCase{"lager-pint", SceneRequest{"lager", "pint"}, 64, 256, {2.5, 7}, {6, 11}, {16, 24}}),
+    [](const ::testing::TestParamInfo<ComparisonCase>& i) {
+      std::string s = i.param.name;
+      std::replace(s.begin(), s.end(), '-', '_');
+      return s;
+    });
+
+}  // namespace
+}  // namespace draught::test
