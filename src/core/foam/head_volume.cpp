@@ -17,6 +17,28 @@ constexpr double kRingWidth = 0.45;
 constexpr double kRingReach = 3.0;
 }  // namespace
 
+double foam_reflectance(double a, double g) {
+  a = std::clamp(a, 0.0, 1.0);
+  const double s = std::sqrt((1 - a) / std::max(1 - a * g, 1e-12));
+  return (1 - s) * (1 - 0.139 * s) / (1 + 1.17 * s);
+}
+
+glm::dvec3 foam_single_scattering_albedo(const glm::dvec3& reflectance, double g) {
+  glm::dvec3 out;
+  for (int c = 0; c < 3; ++c) {
+    // R falls monotonically from 1 (s = 0) to 0 (s = 1): bisect on s, then a from s.
+    const double target = std::clamp(reflectance[c], 0.0, 1.0);
+    double lo = 0, hi = 1;
+    for (int i = 0; i < 60; ++i) {
+      const double s = 0.5 * (lo + hi);
+      ((1 - s) * (1 - 0.139 * s) / (1 + 1.17 * s) > target ? lo : hi) = s;
+    }
+    const double s2 = 0.25 * (lo + hi) * (lo + hi);
+    out[c] = (1 - s2) / (1 - s2 * g);
+  }
+  return out;
+}
+
 HeadVolume::HeadVolume(const VesselFrame& vf, const VesselGeometry& geometry) {
   // As gpu/scene_data.cpp has_head: liquid and more than a tenth of a millimetre of foam.
   present_ = vf.has_liquid && vf.foam.thickness > 1e-4;

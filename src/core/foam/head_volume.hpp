@@ -14,6 +14,15 @@ namespace draught {
 
 struct VesselFrame;
 
+// The colour of a foam is what a deep head shows under even light: its diffuse
+// reflectance R, built up by hundreds of scatterings. The single-scattering albedo a that
+// gives it is very near 1 (a white head: R = 0.97 needs a = 0.9998). Diffusion theory
+// for a semi-infinite medium (van de Hulst; Jensen et al. 2001) ties them:
+//   R = (1 - s)(1 - 0.139 s) / (1 + 1.17 s),  s = sqrt((1 - a) / (1 - a g)),
+// inverted here per channel (R in [0, 1], g the Henyey-Greenstein anisotropy).
+double foam_reflectance(double single_scattering_albedo, double g);
+glm::dvec3 foam_single_scattering_albedo(const glm::dvec3& reflectance, double g);
+
 class HeadVolume {
  public:
   // The head of vessel frame `vf` cut by `clip` (a VesselGeometry's); empty() when the

@@ -105,7 +105,8 @@ class Tracer {
       const double haze = vf.params.liquid.haze;
       m.haze = haze * glm::dvec3(vf.params.liquid.haze_color);
       m.liquid_absorption += glm::dvec3(haze) - m.haze;
-      m.foam_albedo = glm::dvec3(vf.params.foam.color);
+      // foam.color is the colour a deep head shows: its reflectance, not one scattering's.
+      m.foam_albedo = foam_single_scattering_albedo(glm::dvec3(vf.params.foam.color), vf.params.foam.anisotropy);
       m.foam_g = vf.params.foam.anisotropy;
       media_.push_back(m);
     }

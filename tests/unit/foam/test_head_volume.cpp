@@ -1,0 +1,90 @@
+// The head as a medium: its colour to single-scattering albedo (diffusion theory), the
+// density field's bound and where along a ray it can be.
+#include "core/foam/head_volume.hpp"
+#include "core/scene/frame.hpp"
+
+#include "../test_common.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace draught {
+namespace {
+
+TEST(FoamAlbedo, ReflectanceInvertsToTheSingleScatteringAlbedo) {
+  for (double g : {0.0, 0.3, 0.7})
+    for (double R : {0.0, 0.1, 0.5, 0.8, 0.9, 0.97, 0.99, 1.0}) {
+      const glm::dvec3 a = foam_single_scattering_albedo(glm::dvec3(R), g);
+      EXPECT_NEAR(foam_reflectance(a.x, g), R, 1e-9) << "R " << R << " g " << g;
+    }
+}
+
+TEST(FoamAlbedo, AWhiteHeadScattersAlmostWithoutLoss) {
+  // A head that looks 97 % white loses about 2e-4 of the light per scattering.
+  EXPECT_NEAR(foam_single_scattering_albedo(glm::dvec3(0.97), 0.0).x, 0.9998, 1e-4);
+  EXPECT_DOUBLE_EQ(foam_single_scattering_albedo(glm::dvec3(1.0), 0.0).x, 1.0);
+  EXPECT_NEAR(foam_single_scattering_albedo(glm::dvec3(0.0), 0.0).x, 0.0, 1e-9);
+  // Darker heads need a lower albedo, channel by channel.
+  const glm::dvec3 tan = foam_single_scattering_albedo({0.9, 0.8, 0.6}, 0.0);
+  EXPECT_GT(tan.r, tan.g);
+  EXPECT_GT(tan.g, tan.b);
+}
+
+struct Head {
+  FrameState frame;
+  SceneGeometry geo;
+  HeadVolume volume() const { return HeadVolume(frame.vessels[0], geo.vessels[0]); }
+};
+
+Head default_head() {
+  Head h{make_frame(test::params_with_glass("pint")), {}};
+  h.geo = scene_geometry(h.frame);
+  return h;
+}
+
+TEST(HeadVolume, DensityStaysUnderItsBoundAndInsideItsInterval) {
+  const Head h = default_head();
+  const HeadVolume head = h.volume();
+  ASSERT_FALSE(head.empty());
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const Vessel& v = h.frame.vessels[0].vessel;
+  int inside = 0;
+  for (int i = 0; i < 4000; ++i) {
+    // Rays through random points of the glass's bounding box.
+    const glm::dvec3 p(u(rng) * v.bound_radius, v.height * (0.5 + 0.5 * u(rng)), u(rng) * v.bound_radius);
+    glm::dvec3 d(u(rng), u(rng), u(rng));
+    if (glm::length(d) < 1e-3) continue;
+    d = glm::normalize(d);
+    const double sigma = head.density(p);
+    ASSERT_LE(sigma, head.majorant()) << i;
+    if (sigma <= 0) continue;
+    ++inside;
+    double t0 = -1, t1 = 1;  // the ray o = p - d through p at t = 1
+    ASSERT_TRUE(head.interval(p - d, d, t0, t1)) << i;
+    EXPECT_LE(t0, 1.0);
+    EXPECT_GE(t1, 1.0);
+  }
+  EXPECT_GT(inside, 40);  // the test saw the head
+}
+
+TEST(HeadVolume, NoFoamUnderTheLiquidOrOutsideTheCavity) {
+  const Head h = default_head();
+  const HeadVolume head = h.volume();
+  const VesselFrame& vf = h.frame.vessels[0];
+  const double level = vf.liquid.offset;  // upright: the surface's height
+  EXPECT_EQ(head.density({0, level - 0.002, 0}), 0);
+  EXPECT_GT(head.density({0, level + 0.5 * vf.foam.thickness, 0}) + head.density({0.003, level + 0.4 * vf.foam.thickness, 0.002}), 0);
+  EXPECT_EQ(head.density({vf.vessel.bound_radius, level + 0.005, 0}), 0);
+}
+
+TEST(HeadVolume, NoHeadWithoutLiquid) {
+  Params p = test::params_with_glass("pint");
+  p.liquid.fill = 0;
+  const FrameState f = make_frame(p);
+  EXPECT_TRUE(HeadVolume(f.vessels[0], scene_geometry(f).vessels[0]).empty());
+}
+
+}  // namespace
+}  // namespace draught
