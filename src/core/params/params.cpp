@@ -50,7 +50,7 @@ std::vector<ParamDesc> make_table() {
       ROW(VesselParams, foam, height, Float, 0.0f, 0.08f, "m", "Head thickness once poured and settled (0: no head)"),
       ROW(VesselParams, foam, density, Float, 50.0f, 20000.0f, "1/m", "Extinction of the foam: how opaque the head is"),
       ROW(VesselParams, foam, color, Color, 0.0f, 1.0f, "",
-          "Single-scattering albedo of the foam (white for lager, tan for stout)"),
+          "Colour of a deep head under even light: its diffuse reflectance (white for lager, tan for stout)"),
       ROW(VesselParams, foam, anisotropy, Float, -0.9f, 0.9f, "", "Henyey-Greenstein anisotropy of the foam's scattering"),
       ROW(VesselParams, foam, multiscatter, Float, 0.0f, 1.0f, "",
           "Weight of the multiple-scattering terms (brightens the inside of the head)"),

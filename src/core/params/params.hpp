@@ -45,7 +45,7 @@ struct LiquidParams {
 struct FoamParams {
   float height = 0.015f;                // head thickness when settled after the pour, metres
   float density = 1500.0f;              // extinction per metre (micro bubbles scatter light)
-  glm::vec3 color{0.97f, 0.95f, 0.9f};  // single-scattering albedo (white lager foam, tan stout head)
+  glm::vec3 color{0.97f, 0.95f, 0.9f};  // diffuse reflectance of a deep head (white lager foam, tan stout head)
   float anisotropy = 0.0f;              // Henyey-Greenstein g
   float multiscatter = 0.7f;            // 0: single scattering only; 1: the full multi-scatter terms
   float age = 45.0f;                    // seconds since the pour, for a still picture
