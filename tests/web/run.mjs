@@ -554,6 +554,16 @@ test('multi-byte echoes: errors that shorten a value of UTF-8 characters are sho
     assert.match(m.text, /got "a€+\.\.\.$/, `the echo ends on a whole character: ${m.text}`);
     assert.ok(!m.text.includes('\uFFFD'), 'no broken character');
 
+    // Bytes that are no UTF-8 at all: the browser reads the file as UTF-8 with U+FFFD in their
+    // place, so the module only ever sees valid text.
+    const broken = Buffer.concat([Buffer.from('{"draught_preset": 1, "kind": "drink", "name": "'), Buffer.from([0xff, 0xfe, 0xe2, 0x82]),
+                                  Buffer.from('"}')]);
+    await page.setInputFiles('#load', { name: 'bytes.json', mimeType: 'application/json', buffer: broken });
+    await waitMessage(page, /bytes\.json/);
+    assert.match((await message(page)).text, /^loaded drink "\uFFFD+" from bytes\.json$/);
+    await page.selectOption('#drink', 'stout');  // back to the plain lager that v0 holds
+    await page.selectOption('#drink', 'lager');
+
     // The same through a panel field.
     await typeValue(page, 'liquid.haze_color', value);
     await waitMessage(page, /haze_color/);
