@@ -561,7 +561,7 @@ test('multi-byte echoes: errors that shorten a value of UTF-8 characters are sho
     await page.setInputFiles('#load', { name: 'bytes.json', mimeType: 'application/json', buffer: broken });
     await waitMessage(page, /bytes\.json/);
     assert.match((await message(page)).text, /^loaded drink "\uFFFD+" from bytes\.json$/);
-    await page.selectOption('#drink', 'stout');  // back to the plain lager that v0 holds
+    await page.selectOption('#drink', 'stout');  // then lager again (the picker's own value fires no change): v0's state
     await page.selectOption('#drink', 'lager');
 
     // The same through a panel field.
