@@ -5,11 +5,13 @@
 // scene preset); input drives the selected one and the panel edits it.
 #include "core/io/files.hpp"
 #include "core/scene/frame.hpp"
+#include "core/scene/motion.hpp"
 #include "core/input/combined.hpp"
 #include "core/params/params.hpp"
 #include "core/params/preset.hpp"
 #include "core/scene/scene.hpp"
 #include "core/sim/scene_simulation.hpp"
+#include "core/text/echo.hpp"
 #include "core/vessel/vessel.hpp"
 #include "gpu/renderer.hpp"
 
@@ -86,6 +88,8 @@ struct App {
   double css_w = 0, css_h = 0, dpr = 1;
   int width = 0, height = 0;
   bool context_lost = false;
+  int restores = 0;         // WebGL contexts restored after a loss
+  double frame_at = -1;     // now_s() when the last frame was drawn (the page's fps readout)
   double startup_ms = 0;
   double cpu_ms = 0;  // smoothed time spent in frame(): simulation, bubble placement, GL calls
   std::string error;  // a failure that stopped drawing
@@ -98,6 +102,9 @@ const char* answer(std::string s) {
   reply = std::move(s);
   return reply.c_str();
 }
+// JSON replies never throw on text that is not valid UTF-8 (a quoted file, an echo): the
+// bytes are replaced, so an error path cannot fail itself and leave the page without a message.
+const char* answer_json(const json& j) { return answer(j.dump(-1, ' ', false, json::error_handler_t::replace)); }
 double now_s() { return emscripten_get_now() / 1000.0 - (app ? app->t0 : 0); }
 Viewport viewport(double w, double h) { return {std::max(1.0, w), std::max(1.0, h)}; }
 
@@ -127,6 +134,12 @@ void select_object(int object) {
   if (app->sim) app->sim->select(object);
 }
 
+// How far the selected glass leans, in degrees (0 upright; tests and the console).
+double selected_tilt_degrees() {
+  const Simulation* v = app && app->sim ? app->sim->vessel(app->scene.selected) : nullptr;
+  return v ? glm::degrees(tilt_angle(v->frame().pose.orientation)) : 0.0;
+}
+
 // The object seen at (x, y) CSS pixels of the canvas (vw x vh), or -1.
 int pick_at(double x, double y, double vw, double vh) {
   if (!app || !app->sim) return -1;
@@ -152,11 +165,11 @@ Scene row_of_copies(const Scene& s, int count) {
   return out;
 }
 
-// "field 'objects[1].liquid.fill': expected ..., got "7"", as the CLI's --set words it.
-std::string set_error(const std::string& path, const ParamError& e, const std::string& text) {
-  std::string msg = "field '" + path + "': expected " + e.expected;
-  if (e.expected.find(", got ") == std::string::npos) msg += ", got \"" + text + "\"";
-  return msg;
+// "field 'objects[1].liquid.fill': expected ..., got "7"", as the CLI's --set words it. What it
+// repeats of the path and the text is capped at whole UTF-8 characters (core/text/echo), so a
+// pasted megabyte makes a short message.
+std::string set_error(std::string_view path, const std::string& expected, std::string_view text) {
+  return "field '" + shorten(path) + "': expected " + expected + ", got " + quote_input(text);
 }
 
 void resize_canvas() {
@@ -184,6 +197,7 @@ void frame() {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     app->renderer->draw(f, app->width, app->height);
     ++app->frames;
+    app->frame_at = t;
     const double cpu = (now_s() - t) * 1000.0;
     app->cpu_ms = app->cpu_ms == 0 ? cpu : 0.9 * app->cpu_ms + 0.1 * cpu;
   } catch (const std::exception& e) {
@@ -192,9 +206,32 @@ void frame() {
   }
 }
 
+// A lost WebGL context (a GPU reset, too many pages using WebGL, WEBGL_lose_context) takes
+// every GL object with it. Drawing pauses; the scene, the simulation, the input and the
+// selection live on the CPU and are kept. Returning EM_TRUE prevents the event's default,
+// which is what allows the browser to restore the context.
 EM_BOOL on_context_lost(int, const void*, void*) {
   app->context_lost = true;
-  app->error = "the WebGL context was lost (GPU reset or too many pages using WebGL); reload the page";
+  // Dropped now, while GL calls are no-ops: deleting its objects after the restore would
+  // name objects of the old context.
+  app->renderer.reset();
+  return EM_TRUE;
+}
+
+// The context is back, empty: programs, buffers and textures are built again (the renderer
+// uploads the whole scene into its fresh textures on the next frame).
+EM_BOOL on_context_restored(int, const void*, void*) {
+  app->context_lost = false;
+  emscripten_webgl_make_context_current(app->gl);
+  try {
+    app->renderer = std::make_unique<gpu::Renderer>();
+  } catch (const std::exception& e) {
+    app->error = std::string("the WebGL context came back, but the renderer could not be rebuilt: ") + e.what();
+    return EM_TRUE;
+  }
+  ++app->restores;
+  app->last = -1;  // the pause is no frame time
+  app->quality.samples = 0;
   return EM_TRUE;
 }
 
@@ -246,6 +283,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_start(const char* canvas, int preserve,
   if (app->gl <= 0) return answer(app->error = "this browser cannot create a WebGL2 context (WebGL2 is required)");
   emscripten_webgl_make_context_current(app->gl);
   emscripten_set_webglcontextlost_callback(canvas, nullptr, EM_FALSE, on_context_lost);
+  emscripten_set_webglcontextrestored_callback(canvas, nullptr, EM_FALSE, on_context_restored);
   if (fixed_scale > 0) {
     app->quality.adaptive = false;
     app->quality.scale = std::clamp(fixed_scale, 0.1, 2.0);
@@ -299,6 +337,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_status() {
   if (!app) return answer("{}");
   json j = {{"frames", app->frames},
             {"time", now_s()},
+            {"frame_time", app->frame_at},
             {"scale", app->quality.scale},
             {"adaptive", app->quality.adaptive},
             {"frame_ms", app->quality.shown_ms},
@@ -314,8 +353,11 @@ EMSCRIPTEN_KEEPALIVE const char* draught_status() {
             {"objects", app->scene.objects.size()},
             {"selected", app->scene.selected},
             {"fraction", app->sim && app->sim->vessel(app->scene.selected) ? app->sim->vessel(app->scene.selected)->fraction() : 0.0},
+            {"tilt", selected_tilt_degrees()},
+            {"context_lost", app->context_lost},
+            {"context_restores", app->restores},
             {"error", app->error}};
-  return answer(j.dump());
+  return answer_json(j);
 }
 
 // Shipped presets: [{kind, name, description, suggested_glass}], glasses, drinks, scenes.
@@ -325,9 +367,9 @@ EMSCRIPTEN_KEEPALIVE const char* draught_presets() {
     for (const Preset& p : list_presets())
       out.push_back({{"kind", p.kind}, {"name", p.name}, {"description", p.description},
                      {"suggested_glass", p.suggested_glass}});
-    return answer(out.dump());
+    return answer_json(out);
   } catch (const std::exception& e) {
-    return answer(json{{"error", e.what()}}.dump());
+    return answer_json(json{{"error", e.what()}});
   }
 }
 
@@ -337,7 +379,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_presets() {
 EMSCRIPTEN_KEEPALIVE const char* draught_param_table() {
   json out = json::array();
   for (const ParamDesc& d : param_table()) out.push_back(param_row(d));
-  return answer(out.dump());
+  return answer_json(out);
 }
 
 // The values the panel shows, {path: text}: the selected object's and the scene's.
@@ -347,18 +389,18 @@ EMSCRIPTEN_KEEPALIVE const char* draught_param_values() {
     const Params doc = vessel_document(app->scene, app->scene.selected);
     for (const ParamDesc& d : param_table()) out[d.path] = format_param(d, get_param(doc, d));
   }
-  return answer(out.dump());
+  return answer_json(out);
 }
 
 // One value by any path ("liquid.fill": the selected object's, "objects[2].liquid.fill",
 // "env.floor"): {"value": text, "error": ""}.
 EMSCRIPTEN_KEEPALIVE const char* draught_get_param(const char* path) {
-  if (!app) return answer(json{{"error", "not started"}}.dump());
+  if (!app) return answer_json(json{{"error", "not started"}});
   try {
     const ParamRef ref = parse_param_ref(app->scene, path);
-    return answer(json{{"value", format_param(*ref.desc, get_param(app->scene, ref))}, {"error", ""}}.dump());
+    return answer_json(json{{"value", format_param(*ref.desc, get_param(app->scene, ref))}, {"error", ""}});
   } catch (const ParamError& e) {
-    return answer(json{{"error", "field '" + std::string(path) + "': expected " + e.expected}}.dump());
+    return answer_json(json{{"error", "field '" + shorten(path) + "': expected " + e.expected}});
   }
 }
 
@@ -369,14 +411,20 @@ EMSCRIPTEN_KEEPALIVE const char* draught_set_param(const char* path, const char*
   if (!app) return answer("not started");
   try {
     const ParamRef ref = parse_param_ref(app->scene, path);
+    ParamValue value;
+    try {
+      value = parse_param_text(*ref.desc, text);
+    } catch (const ParamError&) {  // its message repeats the whole text; this one a short part
+      return answer(set_error(path, expected_text(*ref.desc), text));
+    }
     Scene s = app->scene;
-    set_param(s, ref, parse_param_text(*ref.desc, text));
+    set_param(s, ref, value);
     use_scene(s, Refill::none);
     return answer("");
   } catch (const ParamError& e) {
-    return answer(set_error(path, e, text));
+    return answer(set_error(path, e.expected, text));
   } catch (const std::exception& e) {
-    return answer(std::string(path) + ": " + e.what());
+    return answer(shorten(path) + ": " + e.what());
   }
 }
 
@@ -385,7 +433,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_objects() {
   json list = json::array();
   if (app)
     for (const SceneObject& o : app->scene.objects) list.push_back({{"name", o.name}, {"kind", as_vessel(o) ? "vessel" : "other"}});
-  return answer(json{{"selected", app ? app->scene.selected : 0}, {"objects", list}}.dump());
+  return answer_json(json{{"selected", app ? app->scene.selected : 0}, {"objects", list}});
 }
 
 // Selects object i (input drives it, the panel edits it); "" or the error.
@@ -448,7 +496,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_select(const char* drink, const char* g
 // names one; its objects when it places several). {"error": "", "kind", "name"}; on error
 // the state is kept.
 EMSCRIPTEN_KEEPALIVE const char* draught_load_preset(const char* text, const char* file) {
-  if (!app) return answer(json{{"error", "not started"}}.dump());
+  if (!app) return answer_json(json{{"error", "not started"}});
   try {
     const Preset pr = parse_preset(text, file);
     Scene s = app->scene;
@@ -475,21 +523,21 @@ EMSCRIPTEN_KEEPALIVE const char* draught_load_preset(const char* text, const cha
       req.preset = path.string();
       use_scene(resolve_scene_objects(req), Refill::all);
     }
-    return answer(json{{"error", ""}, {"kind", pr.kind}, {"name", pr.name}}.dump());
+    return answer_json(json{{"error", ""}, {"kind", pr.kind}, {"name", shorten(pr.name)}});
   } catch (const std::exception& e) {
-    return answer(json{{"error", e.what()}}.dump());
+    return answer_json(json{{"error", e.what()}});
   }
 }
 
 // Everything as a scene preset, loadable again by the page or the CLI: {"text", "error"}.
 // A scene of several objects is exported whole, every object with its placement.
 EMSCRIPTEN_KEEPALIVE const char* draught_export_preset(const char* name) {
-  if (!app) return answer(json{{"error", "not started"}}.dump());
+  if (!app) return answer_json(json{{"error", "not started"}});
   try {
     const std::string text = scene_preset_json(app->scene, name, "Saved from the draught web page");
-    return answer(json{{"text", text}, {"error", ""}}.dump());
+    return answer_json(json{{"text", text}, {"error", ""}});
   } catch (const std::exception& e) {
-    return answer(json{{"error", e.what()}}.dump());
+    return answer_json(json{{"error", e.what()}});
   }
 }
 

@@ -21,7 +21,10 @@
     lastExport: '',
     frames: () => (M ? M._draught_frames() : 0),
     status: () => (M ? JSON.parse(api.status()) : {}),
-    objects: () => (M ? JSON.parse(api.objects()) : { selected: 0, objects: [] }),
+    objects: () => {
+      const o = M ? JSON.parse(api.objects()) : {};
+      return Array.isArray(o.objects) ? o : { selected: 0, objects: [] };
+    },
   });
 
   function say(text, error = false) {
@@ -46,28 +49,91 @@
     say(page.error, true);
   });
 
+  // Limits checked before text reaches the module, in messages that state them. A preset file:
+  // the CLI's limit for any text input (kMaxTextFileBytes, src/core/io/files.hpp). A panel
+  // value: far above any real one (a 32-point profile curve takes under 1 KiB).
+  const kMaxFileBytes = 16 * 1024 * 1024;
+  const kMaxValueBytes = 4096;
+  const encoder = new TextEncoder();
+  // (Text longer than the file limit in characters is over it in bytes too: no need to encode it.)
+  const utf8Bytes = (text) => (text.length > kMaxFileBytes ? text.length : encoder.encode(text).length);
+  const mib = (n) => `${(n / (1024 * 1024)).toFixed(1)} MiB`;
+  const tooLargeFile = (name, bytes) => bytes > kMaxFileBytes
+    ? `${name}: ${mib(bytes)}, larger than the limit of 16 MiB for a preset file; nothing was loaded` : '';
+  const tooLongValue = (path, text) => {
+    const n = utf8Bytes(text);
+    return n > kMaxValueBytes
+      ? `field '${path.slice(0, 200)}': ${n} bytes of text, longer than the limit of ${kMaxValueBytes} bytes for a value; nothing was applied`
+      : '';
+  };
+
+  // Why a call into the module threw, in words for the page.
+  function failure(name, e) {
+    if (e instanceof RangeError)  // the browser's stack: input too deep or too large for it
+      return `the input is too large or nested too deeply to handle (${e.message}); nothing was applied`;
+    const what = typeof e === 'number' ? 'an unexpected C++ exception' : (e && e.message) || String(e);
+    return `the renderer failed in ${name} (${what}); reload the page if this keeps happening`;
+  }
+
+  // A function of the module. String arguments go through the heap (malloc, UTF-8, free), never
+  // the module's stack: ccall copies them onto its 5 MB stack, and a few megabytes of text
+  // overran it and broke every later call. A call that throws anyway gives its reply in the
+  // function's own form ('string': the message, 'json': {"error": message}), with the module's
+  // stack put back where it was, so callers show a message and later calls work.
+  function wrap(name, ret, args) {
+    const f = M['_' + name];
+    return (...values) => {
+      const sp = M.stackSave();
+      const held = [];
+      try {
+        const argv = values.map((v, i) => {
+          if (args[i] !== 'string') return v;
+          const bytes = encoder.encode(String(v));
+          const at = M._malloc(bytes.length + 1);
+          if (!at) throw new Error(`out of memory for ${bytes.length} bytes of text`);
+          held.push(at);
+          M.HEAPU8.set(bytes, at);  // HEAPU8 read after malloc: a growing heap replaces it
+          M.HEAPU8[at + bytes.length] = 0;
+          return at;
+        });
+        const r = f(...argv);
+        return ret === 'string' || ret === 'json' ? M.UTF8ToString(r) : r;
+      } catch (e) {
+        M.stackRestore(sp);
+        const msg = failure(name, e);
+        console.error(msg);
+        if (ret === 'json') return JSON.stringify({ error: msg });
+        if (ret === 'string') return msg;
+        say(msg, true);
+        return ret === 'number' ? -1 : undefined;
+      } finally {
+        for (const at of held) M._free(at);
+      }
+    };
+  }
+
   function start(module) {
     M = module;
-    const fn = (name, ret, args) => M.cwrap(name, ret, args);
+    const fn = (name, ret, args = []) => wrap(name, ret, args);
     Object.assign(api, {
       start: fn('draught_start', 'string', ['string', 'number', 'number']),
       resize: fn('draught_resize', null, ['number', 'number', 'number']),
       quality: fn('draught_set_quality', null, ['number', 'number']),
-      status: fn('draught_status', 'string', []),
-      presets: fn('draught_presets', 'string', []),
-      table: fn('draught_param_table', 'string', []),
-      values: fn('draught_param_values', 'string', []),
+      status: fn('draught_status', 'json'),
+      presets: fn('draught_presets', 'json'),
+      table: fn('draught_param_table', 'json'),
+      values: fn('draught_param_values', 'json'),
       setParam: fn('draught_set_param', 'string', ['string', 'string']),
-      getParam: fn('draught_get_param', 'string', ['string']),
-      objects: fn('draught_objects', 'string', []),
+      getParam: fn('draught_get_param', 'json', ['string']),
+      objects: fn('draught_objects', 'json'),
       selectObject: fn('draught_select_object', 'string', ['number']),
       pick: fn('draught_pick', 'number', ['number', 'number', 'number', 'number']),
       selectAt: fn('draught_select_at', 'number', ['number', 'number', 'number', 'number']),
       testRow: fn('draught_test_row', 'string', ['number']),
       select: fn('draught_select', 'string', ['string', 'string']),
-      load: fn('draught_load_preset', 'string', ['string', 'string']),
-      exportPreset: fn('draught_export_preset', 'string', ['string']),
-      pour: fn('draught_pour', null, []),
+      load: fn('draught_load_preset', 'json', ['string', 'string']),
+      exportPreset: fn('draught_export_preset', 'json', ['string']),
+      pour: fn('draught_pour', null),
       setInput: fn('draught_set_input', 'string', ['string']),
       mouse: fn('draught_mouse', null, ['number', 'number', 'number', 'number', 'number', 'number', 'number']),
       touch: fn('draught_touch', null, ['number', 'number', 'number', 'number', 'number', 'number']),
@@ -85,6 +151,7 @@
     const budget = parseFloat(query.get('budget') || '0');
     if (budget > 0) api.quality(scale, budget);
     watchSize();
+    watchContext();
     buildPickers();
     buildObjectPicker();
     buildPanel();
@@ -105,25 +172,49 @@
     window.addEventListener('resize', send);  // also fires when zoom changes the pixel ratio
   }
 
-  let lastFrames = 0, lastTime = performance.now(), fps = 0, shownError = '';
+  // Frames per second from the module's own frame times, between two drawn frames at least a
+  // second apart: frames slower than the 250 ms poll (or than a second) are counted right. While
+  // no frame comes (a stall, a lost context) the readout falls with the wait.
+  let fpsFrom = null, fps = 0, shownError = '';
   function showStatus() {
     const s = page.status();
-    const now = performance.now();
-    if (now - lastTime >= 1000) {  // frames per second over the last second or more
-      fps = (1000 * (s.frames - lastFrames)) / (now - lastTime);
-      lastFrames = s.frames;
-      lastTime = now;
+    if (s.frames === undefined) {  // the module failed; wrap() has said why
+      if (s.error && s.error !== shownError) say((shownError = page.error = s.error), true);
+      return;
     }
+    let shown = 0;
+    if (s.frame_time >= 0) {
+      if (!fpsFrom || s.frames < fpsFrom.frames) {
+        fpsFrom = { frames: s.frames, time: s.frame_time };
+      } else if (s.frames > fpsFrom.frames && s.frame_time - fpsFrom.time >= 1) {
+        fps = (s.frames - fpsFrom.frames) / (s.frame_time - fpsFrom.time);
+        fpsFrom = { frames: s.frames, time: s.frame_time };
+      }
+      const waiting = s.time - s.frame_time;
+      shown = waiting > 0 ? Math.min(fps, 1 / waiting) : fps;
+    }
+    page.fps = shown;
     let q = `quality ${Math.round(s.scale * 100)} %`;
     if (s.events_cap) q += ` (${s.events_cap} events)`;
     if (!s.adaptive) q += ' (fixed)';
-    $('quality').textContent = `${q} · ${s.width}×${s.height} · ${fps.toFixed(fps < 10 ? 1 : 0)} fps`;
+    $('quality').textContent = `${q} · ${s.width}×${s.height} · ${shown.toFixed(shown < 10 ? 1 : 0)} fps`;
     $('input').textContent = 'input: ' + s.input;
     $('selected').textContent = objects.length > 1 ? ` · ${objects[selected].name} (${selected + 1} of ${objects.length})` : '';
     if (s.error && s.error !== shownError) {
       shownError = page.error = s.error;
       say(s.error, true);
     }
+  }
+
+  // A lost WebGL context: the module pauses drawing and keeps the scene; when the browser gives
+  // the context back, the module rebuilds its programs and textures and draws again.
+  function watchContext() {
+    canvas.addEventListener('webglcontextlost', () =>
+      say('the WebGL context was lost (a GPU reset, or too many pages using WebGL); drawing resumes when the browser restores it', true));
+    canvas.addEventListener('webglcontextrestored', () => {
+      const s = page.status();
+      if (!s.error) say('the WebGL context was restored; drawing again');
+    });
   }
 
   // ---- presets ----
@@ -285,7 +376,7 @@
   function flush() {
     flushQueued = false;
     for (const [full, { path, text }] of pending) {
-      const err = api.setParam(full, text);
+      const err = tooLongValue(full, text) || api.setParam(full, text);
       controls.get(path).error(err);
       if (err) say(err, true);
       else if ($('message').classList.contains('error')) say('');
@@ -294,7 +385,7 @@
   }
   // For tests and the console: any path the module takes ("objects[1].liquid.fill" too).
   page.setParam = (path, text) => {
-    const err = api.setParam(path, String(text));
+    const err = tooLongValue(String(path), String(text)) || api.setParam(String(path), String(text));
     if (!err) refreshValues();
     return err;
   };
@@ -428,9 +519,17 @@
       const file = e.target.files[0];
       e.target.value = '';  // the same file can be loaded again
       if (!file) return;
+      const big = tooLargeFile(file.name, file.size);  // refused before it is read
+      if (big) return say(big, true);
       page.loadText(await file.text(), file.name);
     });
     page.loadText = (text, name) => {
+      name = String(name).slice(0, 255);
+      const big = tooLargeFile(name, utf8Bytes(text));
+      if (big) {
+        say(big, true);
+        return big;
+      }
       const r = JSON.parse(api.load(text, name));
       if (r.error) {
         say(r.error, true);  // nothing was applied

@@ -438,6 +438,231 @@ test('flight: a click and the picker select the second glass; a drag tilts it al
   }
 });
 
+// ---- hostile input and a lost context (issue 15, items 2, 3 and 17) ----
+
+// The panel's own path for a value: type it into the row's field and commit it.
+async function typeValue(page, path, text) {
+  await page.evaluate(({ path, text }) => {
+    const el = document.getElementById('p-' + path.replace(/\./g, '-'));
+    el.value = text;
+    el.dispatchEvent(new Event('change'));
+  }, { path, text });
+}
+const pageErrors = (page) => page.draughtLog.filter((l) => l.startsWith('pageerror'));
+const waitMessage = (page, re) => page.waitForFunction((src) => new RegExp(src).test(document.getElementById('message').textContent),
+                                                      re.source, { timeout: 20000 });
+// A normal edit after the hostile input still works: the value is applied and the picture
+// changes by more than its own motion.
+async function editStillWorks(page, path, text) {
+  const { before, noise: n } = await noise(page);
+  await typeValue(page, path, text);
+  await page.waitForFunction(({ path, text }) => JSON.parse(window.draught.api.values())[path] === text, { path, text });
+  await waitFrames(page, 4);
+  const d = difference(before, await snapshot(page));
+  note(`later edit ${d.toFixed(1)}, noise ${n.toFixed(2)}`);
+  assert.ok(d > changed(d, n), `${path}=${text} changed the picture: difference ${d.toFixed(2)} (noise ${n.toFixed(2)})`);
+}
+
+test('large input: a 1.4 MB description loads, a 17 MiB file is refused naming the limit, the page keeps working', async () => {
+  const page = await openPage(env);
+  try {
+    const big = JSON.stringify({ draught_preset: 1, kind: 'drink', name: 'long-story', description: 'a'.repeat(1_400_000),
+                                 params: { liquid: { srm: 14 } } });
+    await page.setInputFiles('#load', { name: 'long-story.json', mimeType: 'application/json', buffer: Buffer.from(big) });
+    await waitMessage(page, /long-story/);
+    let m = await message(page);
+    assert.ok(!m.error, `loaded, not refused: ${m.text.slice(0, 200)}`);
+    assert.match(m.text, /loaded drink "long-story"/);
+    assert.equal((await values(page))['liquid.srm'], '14');
+
+    // Over the CLI's limit for a text input: refused before it reaches the module, saying so.
+    const huge = Buffer.alloc(17 * 1024 * 1024, 0x20);
+    huge.write('{"draught_preset": 1, "kind": "drink", "name": "huge", "params": {}}');
+    await page.setInputFiles('#load', { name: 'huge.json', mimeType: 'application/json', buffer: huge });
+    await waitMessage(page, /huge\.json/);
+    m = await message(page);
+    assert.ok(m.error);
+    assert.match(m.text, /^huge\.json: 17\.0 MiB, larger than the limit of 16 MiB for a preset file/);
+
+    await editStillWorks(page, 'liquid.fill', '0.3');
+    assert.deepEqual(pageErrors(page), []);
+  } finally {
+    await page.context().close();
+  }
+});
+
+test('large input: a 3.5 MB paste into a panel field gets a message naming the field; later edits work', async () => {
+  const page = await openPage(env);
+  try {
+    const v0 = await values(page);
+    const pasted = 'x'.repeat(3_500_000);
+    await typeValue(page, 'liquid.haze_color', pasted);
+    await waitMessage(page, /haze_color/);
+    const m = await message(page);
+    assert.ok(m.error);
+    assert.match(m.text, /^field 'liquid\.haze_color': 3500000 bytes of text, longer than the limit of 4096 bytes for a value/);
+    assert.match(await page.textContent('.param[data-path="liquid.haze_color"] .err'), /limit of 4096 bytes/);
+    assert.deepEqual(await values(page), v0, 'nothing applied');
+
+    // The module itself takes megabytes through the heap (no stack overrun): a short error,
+    // and every later call works.
+    const direct = await page.evaluate((n) => window.draught.api.setParam('liquid.fill', '9'.repeat(n)), 3_500_000);
+    assert.match(direct, /^field 'liquid\.fill': expected .*, got "9{60}\.\.\."$/);
+    assert.deepEqual(await values(page), v0);
+
+    await editStillWorks(page, 'liquid.srm', '40');
+    assert.deepEqual(pageErrors(page), []);
+  } finally {
+    await page.context().close();
+  }
+});
+
+test('deep input: a description nested 100,000 levels gets a clear message; the page keeps working', async () => {
+  const page = await openPage(env);
+  try {
+    const v0 = await values(page);
+    const depth = 100_000;
+    const deep = `{"draught_preset": 1, "kind": "drink", "name": "deep", "description": ${'['.repeat(depth)}${']'.repeat(depth)}}`;
+    await page.setInputFiles('#load', { name: 'deep.json', mimeType: 'application/json', buffer: Buffer.from(deep) });
+    await waitMessage(page, /deep\.json/);
+    const m = await message(page);
+    assert.ok(m.error);
+    assert.match(m.text, /deep\.json/);
+    assert.match(m.text, /description/);
+    assert.match(m.text, /nested more than 256 levels deep/);
+    assert.ok(m.text.length < 400, `a short message (${m.text.length} characters)`);
+    assert.deepEqual(await values(page), v0, 'nothing applied');
+    await editStillWorks(page, 'liquid.srm', '40');
+    assert.deepEqual(pageErrors(page), []);
+  } finally {
+    await page.context().close();
+  }
+});
+
+test('multi-byte echoes: errors that shorten a value of UTF-8 characters are shown whole; the page keeps working', async () => {
+  const page = await openPage(env);
+  try {
+    const v0 = await values(page);
+    // 'a' then 3-byte characters: the 60-byte cap of an echo falls inside one.
+    const value = 'a' + '€'.repeat(100);
+    const bad = JSON.stringify({ draught_preset: 1, kind: 'drink', name: 'euro', params: { liquid: { fill: value } } });
+    await page.setInputFiles('#load', { name: 'euro.json', mimeType: 'application/json', buffer: Buffer.from(bad) });
+    await waitMessage(page, /euro\.json/);
+    let m = await message(page);
+    assert.ok(m.error);
+    assert.match(m.text, /liquid\.fill/);
+    assert.match(m.text, /got "a€+\.\.\.$/, `the echo ends on a whole character: ${m.text}`);
+    assert.ok(!m.text.includes('\uFFFD'), 'no broken character');
+
+    // Bytes that are no UTF-8 at all: the browser reads the file as UTF-8 with U+FFFD in their
+    // place, so the module only ever sees valid text.
+    const broken = Buffer.concat([Buffer.from('{"draught_preset": 1, "kind": "drink", "name": "'), Buffer.from([0xff, 0xfe, 0xe2, 0x82]),
+                                  Buffer.from('"}')]);
+    await page.setInputFiles('#load', { name: 'bytes.json', mimeType: 'application/json', buffer: broken });
+    await waitMessage(page, /bytes\.json/);
+    assert.match((await message(page)).text, /^loaded drink "\uFFFD+" from bytes\.json$/);
+    await page.selectOption('#drink', 'stout');  // then lager again (the picker's own value fires no change): v0's state
+    await page.selectOption('#drink', 'lager');
+
+    // The same through a panel field.
+    await typeValue(page, 'liquid.haze_color', value);
+    await waitMessage(page, /haze_color/);
+    m = await message(page);
+    assert.ok(m.error);
+    assert.match(m.text, /^field 'liquid\.haze_color': expected .*, got "a€{19}\.\.\."$/);
+    assert.ok(!m.text.includes('\uFFFD'), 'no broken character');
+    assert.deepEqual(await values(page), v0, 'nothing applied');
+
+    await editStillWorks(page, 'liquid.srm', '40');
+    assert.deepEqual(pageErrors(page), []);
+  } finally {
+    await page.context().close();
+  }
+});
+
+test('fps readout: right when frames take longer than a second', async () => {
+  const page = await openPage(env);
+  try {
+    // Every animation frame 1.5 s late: the module draws about 0.65 frames a second.
+    await page.evaluate(() => {
+      const raf = window.requestAnimationFrame.bind(window);
+      window.requestAnimationFrame = (cb) => setTimeout(() => raf(cb), 1500);
+    });
+    await page.waitForTimeout(4500);  // the readout's window holds only slow frames
+    const fpsShown = () => page.evaluate(() => +/([\d.]+) fps/.exec(document.getElementById('quality').textContent)[1]);
+    const s0 = await status(page);
+    const shown = [];
+    for (let i = 0; i < 12; ++i) {
+      await page.waitForTimeout(500);
+      shown.push(await fpsShown());
+    }
+    const s1 = await status(page);
+    const truth = (s1.frames - s0.frames) / (s1.time - s0.time);
+    note(`measured ${truth.toFixed(2)} fps, shown ${shown.join(' ')}`);
+    assert.ok(truth > 0.3 && truth < 0.9, `frames are slower than one a second (${truth.toFixed(2)} fps)`);
+    for (const f of shown) assert.ok(Math.abs(f - truth) <= 0.25 * truth, `shown ${f} fps, measured ${truth.toFixed(2)}`);
+  } finally {
+    await page.context().close();
+  }
+});
+
+test('a lost WebGL context is restored: programs and textures rebuilt, drawing again, state kept', async () => {
+  const page = await openPage(env, { query: 'size=240x120&scale=1&preserve' });
+  try {
+    // State to keep: a drink, an edited value, three glasses with the third selected, a tilt.
+    await page.selectOption('#drink', 'stout');
+    await page.waitForFunction(() => window.draught.status().drink === 'stout');
+    assert.equal(await page.evaluate(() => window.draught.testRow(3)), '');
+    assert.equal(await page.evaluate(() => window.draught.selectObject(2)), '');
+    await typeValue(page, 'liquid.fill', '0.6');
+    await page.waitForFunction(() => JSON.parse(window.draught.api.values())['liquid.fill'] === '0.6');
+    const c = await canvasCentre(page);
+    await page.mouse.move(c.x, c.y);
+    await page.mouse.down();  // held through the loss: the glass stays tilted
+    await page.mouse.move(c.x + 30, c.y, { steps: 4 });
+    await page.waitForFunction(() => window.draught.status().tilt > 10, null, { timeout: 10000 });
+    await waitFrames(page, 3);
+    const before = { values: await values(page), objects: await objects(page), status: await status(page) };
+    const picture = await snapshot(page);
+
+    await page.evaluate(() => {
+      window.loseContextExt = document.getElementById('canvas').getContext('webgl2').getExtension('WEBGL_lose_context');
+      window.loseContextExt.loseContext();
+    });
+    await page.waitForFunction(() => window.draught.status().context_lost === true, null, { timeout: 10000 });
+    assert.match((await message(page)).text, /WebGL context was lost/);
+    const f0 = (await status(page)).frames;
+    await page.waitForTimeout(500);
+    assert.ok((await status(page)).frames <= f0 + 1, 'no frames while the context is lost');
+
+    await page.evaluate(() => window.loseContextExt.restoreContext());
+    await page.waitForFunction((f) => !window.draught.status().context_lost && window.draught.frames() >= f + 3, f0,
+                               { timeout: 30000, polling: 50 });
+    const after = await status(page);
+    assert.equal(after.error, '');
+    assert.equal(after.context_restores, 1);
+    assert.match((await message(page)).text, /restored/);
+    const img = await snapshot(page);
+    const st = stats(img);
+    assert.ok(st.max - st.min > 60, `a picture again, not a blank canvas (min ${st.min}, max ${st.max})`);
+    const d = difference(picture, img);
+    note(`after the restore: difference ${d.toFixed(2)} from before the loss, tilt ${before.status.tilt.toFixed(1)} -> ${after.tilt.toFixed(1)} degrees`);
+    assert.ok(d < 8, `the same scene drawn again: difference ${d.toFixed(2)}`);
+    assert.deepEqual(await values(page), before.values, 'parameter values kept');
+    assert.deepEqual(await objects(page), before.objects, 'objects and selection kept');
+    assert.equal(after.drink, 'stout');
+    assert.ok(Math.abs(after.tilt - before.status.tilt) < 2, `tilt kept: ${before.status.tilt.toFixed(1)} -> ${after.tilt.toFixed(1)} degrees`);
+    await page.mouse.up();
+    await page.waitForFunction(() => window.draught.status().tilt < 0.5, null, { timeout: 10000 });  // upright again
+
+    // And it keeps working: an edit changes the picture.
+    await editStillWorks(page, 'env.sky_horizon', '0.5,0,0');  // the whole backdrop, not one glass of three
+    assert.deepEqual(pageErrors(page), []);
+  } finally {
+    await page.context().close();
+  }
+});
+
 // ---- runner ----
 const only = process.argv[2];
 const t0 = Date.now();
