@@ -75,7 +75,7 @@ target_link_options(draught_web PRIVATE
   -sALLOW_MEMORY_GROWTH=1
   -sMODULARIZE=1 -sEXPORT_NAME=createDraught
   -sENVIRONMENT=web
-  -sEXPORTED_RUNTIME_METHODS=ccall,cwrap,UTF8ToString
+  -sEXPORTED_RUNTIME_METHODS=UTF8ToString
   -sEXPORTED_FUNCTIONS=_main,_malloc,_free
   -sFILESYSTEM=1
   "--embed-file=${DRAUGHT_ROOT}/presets@/presets"

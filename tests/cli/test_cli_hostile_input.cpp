@@ -90,6 +90,17 @@ TEST_F(Hostile, EchoedValuesAreCappedAndValidUtf8) {
   }
 }
 
+TEST_F(Hostile, ALongSetValueIsEchoedCapped) {
+  // --set took the whole text into its message: a pasted page came back in full.
+  std::string euros;
+  for (int i = 0; i < 20000; ++i) euros += "\xE2\x82\xAC";
+  auto r = draught({"render", "--size", "16x16", "--set", "liquid.fill=" + euros, "-o", png().string()});
+  EXPECT_EQ(r.exit_code, 1) << r.describe().substr(0, 500);
+  EXPECT_TRUE(contains(r.err, "field 'liquid.fill'")) << r.err.substr(0, 300);
+  EXPECT_LT(r.err.size(), 600u) << "echoed the whole value";
+  EXPECT_TRUE(valid_utf8(r.err)) << "a UTF-8 character was cut";
+}
+
 // ---------------------------------------------------------------- 5. files that are not files
 
 TEST_F(Hostile, DevZeroAsPresetIsRefusedAtOnce) {

@@ -1,6 +1,7 @@
 #include "core/params/params.hpp"
 
 #include "core/params/param_row.hpp"
+#include "core/text/echo.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -319,7 +320,7 @@ Params default_params() { return Params{}; }
 
 ParamValue parse_param_text(const ParamDesc& d, std::string_view text) {
   auto fail = [&]() -> ParamValue {
-    throw ParamError(d.path, expected_text(d) + ", got \"" + std::string(text) + "\"");
+    throw ParamError(d.path, expected_text(d) + ", got " + quote_input(text));  // capped: a pasted page is not echoed
   };
   ParamValue v;
   switch (d.type) {

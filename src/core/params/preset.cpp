@@ -441,18 +441,19 @@ namespace {
 
 // "path=value" of --set or --camera against the scene: the path may address one object.
 std::pair<ParamRef, ParamValue> parse_assignment(const Scene& scene, const std::string& flag, const std::string& text) {
+  const std::string shown = flag + " " + shorten(text);  // capped: a pasted page is not echoed
   auto eq = text.find('=');
   if (eq == std::string::npos)
-    throw InputError(flag + " " + text + ": expected path=value, e.g. " + flag + " liquid.fill=0.8");
+    throw InputError(shown + ": expected path=value, e.g. " + flag + " liquid.fill=0.8");
   const std::string path = text.substr(0, eq);
   auto fail = [&](const std::string& expected) -> InputError {
-    return InputError(flag + " " + text + ": field '" + path + "': expected " + expected);
+    return InputError(shown + ": field '" + shorten(path) + "': expected " + expected);
   };
   ParamRef ref;
   try {
     const ObjectPath split = split_object_path(path);
     if (!find_param(split.param))
-      throw InputError(flag + " " + text + ": " + unknown_param_message(std::string(split.param)));
+      throw InputError(shown + ": " + unknown_param_message(std::string(split.param)));
     ref = parse_param_ref(scene, path);
   } catch (const ParamError& e) {
     throw fail(e.expected);
