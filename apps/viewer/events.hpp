@@ -23,9 +23,11 @@ class FrameEvents {
  public:
   void push(const SDL_Event& e) { queue_.push_back(e); }
   // The events of this frame, in order: the longest run from the front in which
-  //  - no key goes down or up twice (the first change would not be seen),
-  //  - no modifier changes after another key did (ImGui reads the modifiers once a frame),
-  //  - no text follows a key press that edits text (ImGui's text field takes a frame's
+  //  - no key that edits text (Backspace, Enter, arrows, anything with Ctrl, Alt or GUI
+  //    held) changes twice (the first change would not be seen; character keys may, their
+  //    text carries them, so typing keeps up),
+  //  - no modifier changes after a key edited text (ImGui reads the modifiers once a frame),
+  //  - no text follows a key that edited text (ImGui's text field takes a frame's
   //    characters before its keys: Backspace then "x" would become "x" then Backspace).
   // Each frame takes at least one event when any wait, so nothing waits for ever.
   std::vector<SDL_Event> take_frame();

@@ -124,6 +124,18 @@ TEST_F(SlowFrames, CtrlAThenTypingReplacesThePath) {
   EXPECT_STREQ(path, "my/stout.json");
 }
 
+TEST_F(SlowFrames, CtrlReleasedBeforeAStillSelectsAll) {
+  start("lager.json");
+  std::vector<SDL_Event> events;
+  events.push_back(key(SDL_KEYDOWN, SDL_SCANCODE_LCTRL, SDLK_LCTRL, KMOD_LCTRL));
+  events.push_back(key(SDL_KEYDOWN, SDL_SCANCODE_A, SDLK_a, KMOD_LCTRL));
+  events.push_back(key(SDL_KEYUP, SDL_SCANCODE_LCTRL, SDLK_LCTRL, KMOD_NONE));
+  events.push_back(key(SDL_KEYUP, SDL_SCANCODE_A, SDLK_a, KMOD_NONE));
+  type(events, "stout.json");
+  slow_frame(events);
+  EXPECT_STREQ(path, "stout.json");
+}
+
 TEST_F(SlowFrames, QuickBackspacesEachDeleteACharacter) {
   start("lager.json");
   std::vector<SDL_Event> events;
@@ -164,24 +176,35 @@ TEST(FrameEvents, AKeyDownAndUpTakeTwoFrames) {
 }
 
 TEST(FrameEvents, TypingAndMotionGoInOneFrame) {
-  // Letters alone act through their text, so typing at a few frames per second keeps up;
-  // key repeats and mouse motion change no key.
+  // Character keys act through their text, so a word typed between two frames goes in one
+  // frame, a capital's Shift too; key repeats and mouse motion change no key.
   FrameEvents q;
   std::vector<SDL_Event> events;
-  events.push_back(key(SDL_KEYDOWN, SDL_SCANCODE_A, SDLK_a));
-  SDL_Event text{};
-  text.type = SDL_TEXTINPUT;
-  text.text.text[0] = 'a';
-  events.push_back(text);
+  type(events, "path");
+  events.push_back(key(SDL_KEYDOWN, SDL_SCANCODE_LSHIFT, SDLK_LSHIFT, KMOD_LSHIFT));
+  type(events, "x");
+  events.push_back(key(SDL_KEYUP, SDL_SCANCODE_LSHIFT, SDLK_LSHIFT));
+  type(events, "aa");
   SDL_Event repeat = key(SDL_KEYDOWN, SDL_SCANCODE_A, SDLK_a);
   repeat.key.repeat = 1;
-  events.push_back(repeat);
-  events.push_back(text);
+  events.insert(events.end() - 2, repeat);  // held a moment before its release
   SDL_Event motion{};
   motion.type = SDL_MOUSEMOTION;
   events.push_back(motion);
   for (const SDL_Event& e : events) q.push(e);
   EXPECT_EQ(q.take_frame().size(), events.size());
+}
+
+TEST(FrameEvents, AnEditWaitsForTheTextBeforeItAndHoldsTheTextAfterIt) {
+  FrameEvents q;
+  std::vector<SDL_Event> events;
+  type(events, "ab");                                   // 6 events
+  tap(events, SDL_SCANCODE_BACKSPACE, SDLK_BACKSPACE);  // its down goes with them
+  type(events, "c");
+  for (const SDL_Event& e : events) q.push(e);
+  EXPECT_EQ(q.take_frame().size(), 7u);
+  EXPECT_EQ(q.take_frame().size(), 4u);  // the Backspace's release, then "c"
+  EXPECT_EQ(q.waiting(), 0u);
 }
 
 TEST(FrameEvents, EveryFrameTakesSomething) {
