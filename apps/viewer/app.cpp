@@ -84,6 +84,12 @@ double framed_aspect(const FrameState& f) {
   return 1.1 * std::max(hi_x - lo_x, hi_z - lo_z) / (height + 0.024);
 }
 
+// The ImGui window being built, in window pixels.
+Rect current_window_rect() {
+  const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  return {at.x, at.y, at.x + size.x, at.y + size.y};
+}
+
 // Today's timelines script one glass: they drive the scene's first object (the others stand
 // at rest) whichever the panel has selected.
 constexpr int kTimelineObject = 0;
@@ -445,8 +451,7 @@ void Viewer::draw_panel() {
   ImGui::SetNextWindowSize(ImVec2(std::min(400.0f, io.DisplaySize.x * 0.45f), io.DisplaySize.y - 20),
                            ImGuiCond_FirstUseEver);
   const bool open = ImGui::Begin("draught");
-  panel_rect_ = {ImGui::GetWindowPos().x, ImGui::GetWindowPos().y, ImGui::GetWindowPos().x + ImGui::GetWindowSize().x,
-                 ImGui::GetWindowPos().y + ImGui::GetWindowSize().y};
+  panel_rect_ = current_window_rect();  // its title bar only, when collapsed
   if (open) {
     preset_panel(editor_, preset_state_);
     ImGui::Separator();
@@ -535,18 +540,19 @@ void Viewer::draw_overlay(int width, int height) {
       which = scene.objects[size_t(scene.selected)].name + " (" + std::to_string(scene.selected + 1) + " of " +
               std::to_string(scene.objects.size()) + "): ";
     if (const Simulation* v = selected_sim())
-      ImGui::TextWrapped("%s%.0f %% full, %.1f %% spilled", which.c_str(), 100.0 * v->fraction(), 100.0 * v->spilled());
+      ImGui::TextWrapped("%s%.0f %% full, %.1f %% spilled", which.c_str(), 100.0 * v->fraction(),
+                         100.0 * v->spilled());
     if (view_ != 0) ImGui::Text("debug view: %s", kViewNames[view_]);
     const Tier& tier = kTiers[tier_];
     ImGui::Text("quality %s (%.0f %% resolution, %d events)", tier.name, 100.0 * tier.scale,
                 std::min(editor_.scene().params.render.max_events, tier.max_events));
     // The note's line is always there, so a note coming and going does not resize the overlay.
+    const char* hint = show_panel_ ? "keys and mouse: in the panel" : "F1: the panel, keys";
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.75f, 0.75f, 1.0f));
-    ImGui::TextWrapped("%s", note_.empty() ? (show_panel_ ? "keys and mouse: in the panel" : "F1: the panel, keys") : note_.c_str());
+    ImGui::TextWrapped("%s", note_.empty() ? hint : note_.c_str());
     ImGui::PopStyleColor();
-    overlay_rect_ = {ImGui::GetWindowPos().x, ImGui::GetWindowPos().y, ImGui::GetWindowPos().x + ImGui::GetWindowSize().x,
-                     ImGui::GetWindowPos().y + ImGui::GetWindowSize().y};
   }
+  overlay_rect_ = current_window_rect();
   ImGui::End();
 }
 
