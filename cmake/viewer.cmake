@@ -23,7 +23,7 @@ set(DRAUGHT_IMGUI_BACKENDS
 set_source_files_properties(${DRAUGHT_IMGUI_BACKENDS} PROPERTIES COMPILE_OPTIONS "-w")
 
 # The editor (parameters, undo history, presets) has no GL or ImGui, so tests link it alone.
-add_library(draught_viewer_editor STATIC apps/viewer/editor.cpp)
+add_library(draught_viewer_editor STATIC apps/viewer/editor.cpp apps/viewer/layout.cpp)
 target_include_directories(draught_viewer_editor PUBLIC apps/viewer)
 target_link_libraries(draught_viewer_editor PUBLIC draught_core)
 
@@ -32,6 +32,7 @@ target_link_libraries(draught_viewer_editor PUBLIC draught_core)
 add_executable(draught-viewer
   apps/viewer/main.cpp
   apps/viewer/app.cpp
+  apps/viewer/events.cpp
   apps/viewer/window.cpp
   apps/viewer/params_panel.cpp
   apps/viewer/preset_panel.cpp
@@ -47,9 +48,18 @@ if(DRAUGHT_TESTS)
   include(GoogleTest)
 
   # The editor without a window: undo, presets, load and save errors, selection.
-  add_executable(viewer_editor_tests tests/viewer/test_editor.cpp tests/viewer/test_selection.cpp)
+  add_executable(viewer_editor_tests tests/viewer/test_editor.cpp tests/viewer/test_selection.cpp
+    tests/viewer/test_layout.cpp)
   target_link_libraries(viewer_editor_tests PRIVATE draught_viewer_editor GTest::gtest_main)
   gtest_discover_tests(viewer_editor_tests DISCOVERY_TIMEOUT 30)
+
+  # Key events fed frame by frame to the real ImGui and its SDL backend (SDL's dummy video
+  # driver: no display): a key pressed and released within one frame still acts.
+  add_executable(viewer_events_tests tests/viewer/test_events.cpp apps/viewer/events.cpp
+    ${DRAUGHT_IMGUI_BACKEND_DIR}/imgui_impl_sdl.cpp)
+  target_include_directories(viewer_events_tests PRIVATE apps/viewer ${DRAUGHT_IMGUI_BACKEND_INCLUDE_DIR})
+  target_link_libraries(viewer_events_tests PRIVATE PkgConfig::IMGUI PkgConfig::SDL2 GTest::gtest_main)
+  gtest_discover_tests(viewer_events_tests DISCOVERY_TIMEOUT 30 PROPERTIES ENVIRONMENT "SDL_VIDEODRIVER=dummy")
 
   # The viewer in a real (virtual) X server: a screenshot must show the glass and the panel.
   add_executable(viewer_check_screenshot tests/viewer/check_screenshot.cpp)

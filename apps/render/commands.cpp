@@ -123,7 +123,8 @@ int render(const RenderRequest& req) {
   try {
     img = view == gpu::DebugView::None
               ? renderer.render(frame, req.width, req.height)
-              : gpu::visualize_debug(renderer.render_debug(frame, req.width, req.height, view), view);
+              : gpu::visualize_debug(renderer.render_debug(frame, req.width, req.height, view), view,
+                                    depth_range(frame, req.width, req.height));
   } catch (const std::runtime_error& e) {
     explain_size_error(e, req, view == gpu::DebugView::None ? scene.params.render.supersample : 1);
   }

@@ -1,6 +1,8 @@
 #include "app.hpp"
 
 #include "editor.hpp"
+#include "events.hpp"
+#include "layout.hpp"
 #include "params_panel.hpp"
 #include "preset_panel.hpp"
 #include "selection.hpp"
@@ -29,6 +31,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace draught::viewer {
 
@@ -52,9 +55,40 @@ constexpr double kSipFraction = 0.10, kSipSeconds = 1.0;  // S: drink 10 % of th
 constexpr double kZoomStep = 0.9;                          // camera distance per wheel click
 constexpr double kWheelSettle = 0.4;  // s: wheel clicks closer together are one undo step
 
+// Room left between the scene's free part of the window and the panel or overlay, pixels.
+constexpr double kLayoutGap = 8;
+
+constexpr const char* kKeyHelp =
+    "F1 panel  Esc quit\n"
+    "drag tilt  right drag swirl  wheel zoom\n"
+    "click/Tab select  Ctrl+Z undo\n"
+    "R reset  P pour  S sip  C cut\n"
+    "D debug view  Q quality";
+
 constexpr DebugView kViews[] = {DebugView::None, DebugView::Depth, DebugView::Normal, DebugView::Material,
                                 DebugView::Cost};
 constexpr const char* kViewNames[] = {"none", "depth", "normal", "material", "cost"};
+
+// The width / height of what auto-framing fits (core/scene/frame.cpp frame_bounds): the
+// glasses as they stand, widest across, with the framing's margins. Where the free part
+// of the window is narrower than this, the scene's width limits it.
+double framed_aspect(const FrameState& f) {
+  double lo_x = 1e30, hi_x = -1e30, lo_z = 1e30, hi_z = -1e30, height = 0;
+  for (const VesselFrame& v : f.vessels) {
+    const double r = v.vessel.bound_radius;
+    lo_x = std::min(lo_x, v.placement.position.x - r), hi_x = std::max(hi_x, v.placement.position.x + r);
+    lo_z = std::min(lo_z, v.placement.position.z - r), hi_z = std::max(hi_z, v.placement.position.z + r);
+    height = std::max(height, v.vessel.height);
+  }
+  if (f.vessels.empty()) return 1.0;
+  return 1.1 * std::max(hi_x - lo_x, hi_z - lo_z) / (height + 0.024);
+}
+
+// The ImGui window being built, in window pixels.
+Rect current_window_rect() {
+  const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  return {at.x, at.y, at.x + size.x, at.y + size.y};
+}
 
 // Today's timelines script one glass: they drive the scene's first object (the others stand
 // at rest) whichever the panel has selected.
@@ -134,6 +168,8 @@ class Viewer {
   void draw_panel();
   void draw_scene(int width, int height);
   void draw_overlay(int width, int height);
+  void lay_out();
+  FrameState framed() const;  // the simulation's frame, framed in the free part of the window
   void write_screenshot(int width, int height) const;
 
   const ViewerOptions opt_;
@@ -150,6 +186,7 @@ class Viewer {
   unsigned applied_revision_ = 0;
   bool show_panel_ = true, quit_ = false;
   bool held_[2] = {false, false};  // mouse buttons whose press went to the rig
+  FrameEvents events_;              // SDL's events, a frame at a time
   ClickTracker click_;              // the left button: a click selects, a drag tilts
   int view_ = 0;                    // index into kViews
   int tier_ = 2;                    // quality: index into kTiers (high)
@@ -159,6 +196,10 @@ class Viewer {
   double frame_ms_ = 0;             // smoothed
   std::string note_;                // the overlay's last message (a debug view that failed, ...)
   GLuint debug_tex_ = 0;
+  // What covers the window (ImGui's coordinates: window pixels), and the part of the window
+  // the scene is framed in.
+  Rect panel_rect_, overlay_rect_;
+  PictureRect free_part_;
 };
 
 int Viewer::run() {
@@ -172,8 +213,10 @@ int Viewer::run() {
     if (frame > 0) frame_ms_ = frame_ms_ == 0 ? dt_ms : 0.9 * frame_ms_ + 0.1 * dt_ms;
     now_ = opt_.screenshot.empty() ? std::chrono::duration<double>(t - start).count() : frame / kScreenshotFps;
 
+    // Keys pressed and released between two frames reach ImGui over two (events.hpp).
     SDL_Event e;
-    while (SDL_PollEvent(&e)) handle(e);
+    while (SDL_PollEvent(&e)) events_.push(e);
+    for (const SDL_Event& frame_event : events_.take_frame()) handle(frame_event);
     window_.begin_frame();
     if (show_panel_) draw_panel();
     // A slider being dragged is one undo step, not one per frame.
@@ -181,8 +224,9 @@ int Viewer::run() {
     advance();
     int w = 0, h = 0;
     window_.drawable_size(w, h);
+    draw_overlay(w, h);  // before the scene: its size decides where the scene goes
+    lay_out();
     draw_scene(w, h);
-    draw_overlay(w, h);
     window_.end_frame();
     if (!opt_.screenshot.empty() && frame + 1 >= opt_.frames) {
       write_screenshot(w, h);  // the back buffer, before the swap makes it undefined
@@ -194,7 +238,7 @@ int Viewer::run() {
 }
 
 void Viewer::handle(const SDL_Event& e) {
-  ImGui_ImplSDL2_ProcessEvent(&e);
+  feed_imgui(e);
   if (gamepad_ && gamepad_->handle(e)) return;
   switch (e.type) {
     case SDL_QUIT: quit_ = true; break;
@@ -299,7 +343,7 @@ void Viewer::mouse(const SDL_Event& e) {
 void Viewer::pick(double x, double y) {
   int ww = 0, wh = 0;
   window_.window_size(ww, wh);
-  const int object = pick_object(sim_->frame(), x + 0.5, y + 0.5, ww, wh);
+  const int object = pick_object(framed(), x + 0.5, y + 0.5, ww, wh);
   if (object >= 0 && object != editor_.selected()) select(object);
 }
 
@@ -320,9 +364,11 @@ void Viewer::zoom(double clicks) {
   Scene p = editor_.scene();
   int w = 1, h = 1;
   window_.drawable_size(w, h);
-  // The camera as framed for this window (auto-framing follows its aspect), so zoom
-  // starts from what is on screen.
-  CameraParams c = p.params.camera.auto_frame ? sim_->frame().camera_for(w, h) : p.params.camera;
+  // The camera as framed for the free part of the window (auto-framing follows its
+  // aspect), so zoom starts from what is on screen.
+  const int vw = std::max(1, int(std::lround(w * free_part_.width)));
+  const int vh = std::max(1, int(std::lround(h * free_part_.height)));
+  CameraParams c = p.params.camera.auto_frame ? sim_->frame().camera_for(vw, vh) : p.params.camera;
   const glm::vec3 back = c.eye - c.target;
   const float dist = glm::length(back);
   if (dist < 1e-6f) return;
@@ -383,13 +429,33 @@ void Viewer::advance() {
   sim_->advance(*rig_.driver, now_);
 }
 
+// The scene goes where the panel and the overlay leave the most room for it (the picture is
+// still drawn behind them: the camera's lens is shifted to the free part).
+void Viewer::lay_out() {
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  std::vector<Rect> covers;
+  for (const Rect& r : {show_panel_ ? panel_rect_ : Rect{}, overlay_rect_})
+    if (!r.empty()) covers.push_back({r.x0 - kLayoutGap, r.y0 - kLayoutGap, r.x1 + kLayoutGap, r.y1 + kLayoutGap});
+  free_part_ = picture_rect(free_rect(size.x, size.y, covers, framed_aspect(sim_->frame())), size.x, size.y);
+}
+
+FrameState Viewer::framed() const {
+  FrameState f = sim_->frame();
+  f.view = free_part_;
+  return f;
+}
+
 void Viewer::draw_panel() {
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(std::min(400.0f, io.DisplaySize.x * 0.45f), io.DisplaySize.y - 20),
                            ImGuiCond_FirstUseEver);
-  if (ImGui::Begin("draught")) {
+  const bool open = ImGui::Begin("draught");
+  panel_rect_ = current_window_rect();  // its title bar only, when collapsed
+  if (open) {
     preset_panel(editor_, preset_state_);
+    ImGui::Separator();
+    if (ImGui::CollapsingHeader("keys and mouse")) ImGui::TextUnformatted(kKeyHelp);
     ImGui::Separator();
     Scene s = editor_.scene();
     if (params_panel(s, params_state_)) editor_.change(s);
@@ -400,7 +466,7 @@ void Viewer::draw_panel() {
 
 void Viewer::draw_scene(int width, int height) {
   // Every object, the camera framing them all; in a timeline, its scene at this time.
-  FrameState f = sim_->frame();
+  FrameState f = framed();
   const Tier& tier = kTiers[tier_];
   f.params.render.max_events = std::min(f.params.render.max_events, tier.max_events);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -423,7 +489,8 @@ void Viewer::draw_scene(int width, int height) {
   // Debug channels are floats: they need their own target, then a readable picture of them
   // goes behind the UI as a texture.
   try {
-    const Image img = gpu::visualize_debug(renderer_.render_debug(f, width, height, view), view);
+    const Image img =
+        gpu::visualize_debug(renderer_.render_debug(f, width, height, view), view, depth_range(f, width, height));
     if (!debug_tex_) {
       glGenTextures(1, &debug_tex_);
       glBindTexture(GL_TEXTURE_2D, debug_tex_);
@@ -449,6 +516,9 @@ void Viewer::draw_scene(int width, int height) {
 void Viewer::draw_overlay(int width, int height) {
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 10, 10), ImGuiCond_Always, ImVec2(1, 0));
+  // A fixed width (long lines wrap), so changing numbers do not move the framed scene.
+  const float width_px = 27 * ImGui::GetFontSize();
+  ImGui::SetNextWindowSizeConstraints(ImVec2(width_px, 0), ImVec2(width_px, io.DisplaySize.y));
   ImGui::SetNextWindowBgAlpha(0.6f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
@@ -457,7 +527,7 @@ void Viewer::draw_overlay(int width, int height) {
     if (frame_ms_ > 0) ImGui::Text("%.1f ms  %.0f fps", frame_ms_, 1000.0 / frame_ms_);
     else ImGui::Text("-- ms");
     ImGui::Text("%d x %d", width, height);
-    ImGui::Text("%s", window_.renderer().c_str());
+    ImGui::TextWrapped("%s", window_.renderer().c_str());
     if (timeline_)
       ImGui::Text("timeline %s: %.1f / %.1f s", timeline_->name.c_str(), sim_->time(), timeline_->duration);
     else
@@ -470,16 +540,19 @@ void Viewer::draw_overlay(int width, int height) {
       which = scene.objects[size_t(scene.selected)].name + " (" + std::to_string(scene.selected + 1) + " of " +
               std::to_string(scene.objects.size()) + "): ";
     if (const Simulation* v = selected_sim())
-      ImGui::Text("%s%.0f %% full, %.1f %% spilled", which.c_str(), 100.0 * v->fraction(), 100.0 * v->spilled());
+      ImGui::TextWrapped("%s%.0f %% full, %.1f %% spilled", which.c_str(), 100.0 * v->fraction(),
+                         100.0 * v->spilled());
     if (view_ != 0) ImGui::Text("debug view: %s", kViewNames[view_]);
     const Tier& tier = kTiers[tier_];
     ImGui::Text("quality %s (%.0f %% resolution, %d events)", tier.name, 100.0 * tier.scale,
                 std::min(editor_.scene().params.render.max_events, tier.max_events));
-    const ImVec4 grey(0.75f, 0.75f, 0.75f, 1.0f);
-    if (!note_.empty()) ImGui::TextColored(grey, "%s", note_.c_str());
-    ImGui::TextColored(grey, "F1 panel  R reset  P pour  S sip  D debug  C cut  Q quality\n"
-                             "click/Tab select  Ctrl+Z undo  wheel zoom  Esc quit");
+    // The note's line is always there, so a note coming and going does not resize the overlay.
+    const char* hint = show_panel_ ? "keys and mouse: in the panel" : "F1: the panel, keys";
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.75f, 0.75f, 1.0f));
+    ImGui::TextWrapped("%s", note_.empty() ? hint : note_.c_str());
+    ImGui::PopStyleColor();
   }
+  overlay_rect_ = current_window_rect();
   ImGui::End();
 }
 
@@ -496,6 +569,17 @@ void Viewer::write_screenshot(int width, int height) const {
   write_png(out, img);
   std::printf("wrote %s (%d x %d, %d frames, %s)\n", opt_.screenshot.c_str(), width, height, opt_.frames,
               window_.renderer().c_str());
+  // Where the panel and the overlay are and where the scene was framed, in the screenshot's
+  // pixels (x0 y0 x1 y1), for tests/viewer to check that nothing covers the glass.
+  const ImVec2 ui = ImGui::GetIO().DisplaySize;
+  const double sx = width / std::max(1.0f, ui.x), sy = height / std::max(1.0f, ui.y);
+  const auto print = [&](const char* name, const Rect& r) {
+    std::printf("layout %s %.2f %.2f %.2f %.2f\n", name, r.x0 * sx, r.y0 * sy, r.x1 * sx, r.y1 * sy);
+  };
+  if (show_panel_) print("panel", panel_rect_);
+  print("overlay", overlay_rect_);
+  const PictureRect& v = free_part_;
+  print("scene", {v.x * ui.x, v.y * ui.y, (v.x + v.width) * ui.x, (v.y + v.height) * ui.y});
 }
 
 }  // namespace

@@ -196,15 +196,18 @@ DebugImage Renderer::render_debug(const FrameState& f, int width, int height, De
   return out;
 }
 
-Image visualize_debug(const DebugImage& d, DebugView view) {
+Image visualize_debug(const DebugImage& d, DebugView view, DepthRange depth) {
   Image img{d.width, d.height, std::vector<std::uint8_t>(size_t(d.width) * size_t(d.height) * 4, 255)};
-  float tmin = 1e30f, tmax = 0;
-  for (int y = 0; y < d.height; ++y)
-    for (int x = 0; x < d.width; ++x)
-      if (d.px(x, y)[0] > 0 && view == DebugView::Depth) {
-        tmin = std::min(tmin, d.px(x, y)[0]);
-        tmax = std::max(tmax, d.px(x, y)[0]);
-      }
+  float tmin = float(depth.near), tmax = float(depth.far);
+  if (!(depth.far > depth.near)) {
+    tmin = 1e30f, tmax = 0;
+    for (int y = 0; y < d.height; ++y)
+      for (int x = 0; x < d.width; ++x)
+        if (d.px(x, y)[0] > 0 && view == DebugView::Depth) {
+          tmin = std::min(tmin, d.px(x, y)[0]);
+          tmax = std::max(tmax, d.px(x, y)[0]);
+        }
+  }
   static const std::uint8_t palette[10][3] = {{0, 0, 0},      {90, 90, 90},   {80, 160, 255}, {255, 140, 40},
                                               {240, 240, 60}, {200, 60, 200}, {60, 200, 120}, {255, 60, 60},
                                               {150, 220, 255}, {255, 170, 170}};
@@ -213,7 +216,8 @@ Image visualize_debug(const DebugImage& d, DebugView view) {
       const float* s = d.px(x, y);
       std::uint8_t* o = img.px(x, y);
       if (view == DebugView::Depth) {
-        float v = s[0] > 0 ? 1.0f - 0.85f * (s[0] - tmin) / std::max(tmax - tmin, 1e-6f) : 0.0f;
+        const float u = std::clamp((s[0] - tmin) / std::max(tmax - tmin, 1e-6f), 0.0f, 1.0f);
+        const float v = s[0] > 0 ? 1.0f - 0.85f * u : 0.0f;
         o[0] = o[1] = o[2] = std::uint8_t(std::lround(v * 255));
       } else if (view == DebugView::Normal) {
         for (int c = 0; c < 3; ++c) o[c] = std::uint8_t(std::lround(std::clamp(s[c] * 0.5f + 0.5f, 0.0f, 1.0f) * 255));

@@ -90,7 +90,9 @@ class Renderer {
 };
 
 // Turns a debug image into a picture a person can read (grey depth, RGB normals,
-// a colour per material).
-Image visualize_debug(const DebugImage&, DebugView);
+// a colour per material). Depth runs from white at depth.near to dark grey at depth.far
+// (the scene's range, core/scene/frame.hpp depth_range; nearer and farther surfaces are
+// clamped), black where nothing was hit; without a range, over the picture's own depths.
+Image visualize_debug(const DebugImage&, DebugView, DepthRange depth = {});
 
 }  // namespace draught::gpu

@@ -22,6 +22,7 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
   b.cam_aspect = cam.aspect;
   b.cam_up = cam.up;
   b.cam_forward = cam.forward;
+  b.cam_shift = cam.shift;
   b.object_count = int(f.vessels.size());
   b.max_events = p.render.max_events;
   b.viewport_size = {width, height};

@@ -32,6 +32,12 @@ struct ProbeCase {
 FrameState flight_front() { return make_frame(flight_scene(FlightView::StraightOn)); }
 FrameState flight_angle() { return make_frame(flight_scene(FlightView::AtAnAngle)); }
 FrameState flight_along() { return make_frame(flight_scene(FlightView::AlongTheRow)); }
+// The viewer's framing beside its panel: the lens shifted to the right part of the picture.
+FrameState pint_beside_a_panel() {
+  FrameState f = scene_frame({"lager", "pint", {}, {}});
+  f.view = PictureRect{0.4, 0.25, 0.6, 0.75};
+  return f;
+}
 
 struct Reference {
   int w, h;
@@ -140,7 +146,8 @@ INSTANTIATE_TEST_SUITE_P(
         // Four glasses: the nearest hit over every object, and which object it is.
         ProbeCase{"flight-front", {}, 128, nullptr, 0, flight_front},
         ProbeCase{"flight-angle", {}, 128, nullptr, 0, flight_angle},
-        ProbeCase{"flight-along-the-row", {}, 128, nullptr, 0, flight_along}),
+        ProbeCase{"flight-along-the-row", {}, 128, nullptr, 0, flight_along},
+        ProbeCase{"pint-beside-a-panel", {}, 96, nullptr, 0, pint_beside_a_panel}),
     [](const auto& info) {
       std::string s = info.param.name;
       for (char& ch : s)

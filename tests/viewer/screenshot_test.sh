@@ -2,7 +2,8 @@
 # The viewer in a virtual X server (Xvfb, Mesa's software GLES 3): one screenshot without the
 # panel (the glass must show), one at the low quality tier (still the glass, from half the
 # resolution), one with the panel (the panel must draw), and scenes checked object by object
-# against the reference intersector: the single glass, then the flight of four glasses
+# against the reference intersector: the single glass, then with the panel and the overlay
+# (the glass framed clear of them), then the flight of four glasses beside the panel
 # (presets/scenes/flight.json).
 #   screenshot_test.sh XVFB_RUN VIEWER CHECKER OUTDIR
 set -euo pipefail
@@ -33,12 +34,19 @@ run --preset lager --size 320x240 --frames 30 --screenshot "$out/viewer-panel.pn
 "$checker" "$out/viewer-panel.png" 320 240 panel "$out/viewer-glass.png"
 # The scene check on one glass (the same code path as the flight's).
 "$checker" "$out/viewer-glass.png" 320 240 scene lager
+# With the panel and the overlay: the glass is framed in the part of the window they leave
+# free, every pixel of it clear of them (the viewer prints where they are).
+run --preset lager --size 800x500 --frames 10 --screenshot "$out/viewer-uncovered.png" >"$out/viewer-uncovered.txt"
+cat "$out/viewer-uncovered.txt"
+"$checker" "$out/viewer-uncovered.png" 800 500 uncovered lager "$out/viewer-uncovered.txt"
 
-# Wide, so four glasses stand clear of the overlay; few frames, four glasses cost.
+# The flight with the panel: four glasses framed beside it and below the overlay, each drawn
+# where the reference intersector sees it. Few frames: four glasses cost.
 if [ ! -f "$presets/scenes/flight.json" ]; then
   echo "viewer_screenshot: $presets/scenes/flight.json is missing: the flight arrives with the scene presets (issue 9)" >&2
   exit 1
 fi
-run --preset flight --hide-panel --size 640x360 --frames 10 --screenshot "$out/viewer-flight.png"
-"$checker" "$out/viewer-flight.png" 640 360 scene flight
-echo "viewer screenshots: $out/viewer-glass.png $out/viewer-low.png $out/viewer-panel.png $out/viewer-flight.png"
+run --preset flight --size 960x540 --frames 6 --screenshot "$out/viewer-flight.png" >"$out/viewer-flight.txt"
+cat "$out/viewer-flight.txt"
+"$checker" "$out/viewer-flight.png" 960 540 uncovered flight "$out/viewer-flight.txt"
+echo "viewer screenshots: $out/viewer-glass.png $out/viewer-low.png $out/viewer-panel.png $out/viewer-uncovered.png $out/viewer-flight.png"

@@ -98,8 +98,8 @@ void add_sprites(const FrameState& f, const SceneGeometry& geo, int target, cons
     const glm::dvec3 v = c - glm::dvec3(cam.eye);
     const double z = glm::dot(v, glm::dvec3(cam.forward));
     if (z <= 0) continue;
-    double px = (glm::dot(v, right) / (z * cam.tan_half_vfov * cam.aspect) + 1) * 0.5 * width;
-    double py = (1 - glm::dot(v, up) / (z * cam.tan_half_vfov)) * 0.5 * height;
+    double px = (glm::dot(v, right) / (z * cam.tan_half_vfov * cam.aspect) + 1 + cam.shift.x) * 0.5 * width;
+    double py = (1 - glm::dot(v, up) / (z * cam.tan_half_vfov) - cam.shift.y) * 0.5 * height;
     glm::dvec2 e;
     double t = 0, det = 0;
     LiquidLeg leg;

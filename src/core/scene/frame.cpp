@@ -71,7 +71,10 @@ CameraParams FrameState::camera_for(int width, int height) const {
 }
 
 CameraBasis camera_basis(const FrameState& f, int width, int height) {
-  return camera_basis(f.camera_for(width, height), width, height);
+  if (f.view.whole()) return camera_basis(f.camera_for(width, height), width, height);
+  const int w = std::max(1, int(std::lround(width * f.view.width)));
+  const int h = std::max(1, int(std::lround(height * f.view.height)));
+  return camera_basis(f.camera_for(w, h), width, height, f.view);
 }
 
 FrameState assemble_frame(const SceneParams& p, std::vector<VesselFrame> vessels, int selected) {
@@ -108,6 +111,25 @@ SceneGeometry scene_geometry(const FrameState& f) {
 int pick_object(const FrameState& f, double px, double py, int width, int height) {
   const CameraBasis cam = camera_basis(f, width, height);
   return first_hit(scene_geometry(f), camera_ray(cam, px, py, width, height)).object;
+}
+
+DepthRange depth_range(const FrameState& f, int width, int height) {
+  const glm::dvec3 eye(camera_basis(f, width, height).eye);
+  DepthRange r{1e30, 0};
+  for (const VesselFrame& v : f.vessels) {
+    // The glass's bounding box in its own frame: the eye moved there, the nearest point of
+    // the box is a clamp and the farthest one of its corners.
+    const double b = v.vessel.bound_radius, top = v.vessel.height + v.vessel.rim_minor;
+    const glm::dvec3 lo(-b, 0, -b), hi(b, top, b);
+    const glm::dvec3 e = glm::inverse(v.pose.orientation) * (eye - v.pose.position);
+    r.near = std::min(r.near, glm::length(glm::clamp(e, lo, hi) - e));
+    for (int k = 0; k < 8; ++k) {
+      const glm::dvec3 corner(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+      r.far = std::max(r.far, glm::length(corner - e));
+    }
+  }
+  if (f.vessels.empty()) r = {};
+  return r;
 }
 
 }  // namespace draught

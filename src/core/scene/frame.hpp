@@ -45,6 +45,9 @@ struct FrameState {
   CameraParams camera_for(int width, int height) const;
   std::vector<VesselFrame> vessels;
   int selected = 0;  // index into vessels of the object input drives
+  // The part of the picture the camera frames the scene in; the rest extends it (the
+  // desktop viewer: the part its panel and overlay leave free). The whole picture by default.
+  PictureRect view;
   EnvironmentFrame environment;  // what the surroundings give the renderer (core/environment)
 };
 
@@ -59,8 +62,18 @@ CameraParams frame_camera(const CameraParams& c, const Vessel&);  // one upright
 // The reference intersector's view of the frame (every object, the floor, clip planes).
 SceneGeometry scene_geometry(const FrameState&);
 
-// The camera basis of a width x height picture of the frame (camera_for, then the basis).
+// The camera basis of a width x height picture of the frame (camera_for the part `view` of
+// the picture, then the basis, its lens shifted to that part).
 CameraBasis camera_basis(const FrameState&, int width, int height);
+
+// How far the scene's objects lie from the camera of a width x height picture: the nearest
+// and the farthest point of every object's bounds as it stands now (walls and rim, posed),
+// metres from the eye. A depth picture spreads its greys over this range; the floor and the
+// sky reach to the horizon and would squeeze the glasses into one grey.
+struct DepthRange {
+  double near = 0, far = 0;
+};
+DepthRange depth_range(const FrameState&, int width, int height);
 
 // The object seen at pixel (px, py) of a width x height picture (the first surface along
 // the camera ray, reference intersector), or -1 for the floor and the sky.
