@@ -64,7 +64,9 @@ Bounds standing_bounds(const std::vector<VesselFrame>& vessels) {
 
 // Points on each glass's outer outline (circles up the profile, the rim bead's outside),
 // in the world: `posed` as the glass is in the frame (tilted, spun, shaken), else upright
-// at its place.
+// at its place. A glass tipped past lying (a timeline may tip it to 135 degrees on its
+// foot) goes under the floor, which hides that part: only what is above it counts, and
+// where the outline crosses the floor.
 std::vector<glm::dvec3> outline(const std::vector<VesselFrame>& vessels, bool posed) {
   constexpr int kCircles = 12, kAround = 16;
   std::vector<glm::dvec3> points;
@@ -72,6 +74,7 @@ std::vector<glm::dvec3> outline(const std::vector<VesselFrame>& vessels, bool po
     const Vessel& v = f.vessel;
     if (v.r_outer.empty()) continue;
     const glm::dvec3 at(f.placement.position.x, 0, f.placement.position.z);
+    std::vector<glm::dvec3> grid;  // (kCircles + 2) circles of kAround points
     for (int k = 0; k <= kCircles + 1; ++k) {
       // kCircles + 1: the outside of the rim bead, over its top.
       const bool rim = k > kCircles;
@@ -80,9 +83,19 @@ std::vector<glm::dvec3> outline(const std::vector<VesselFrame>& vessels, bool po
       for (int j = 0; j < kAround; ++j) {
         const double a = 2 * std::numbers::pi * j / kAround;
         const glm::dvec3 local(r * std::cos(a), y, r * std::sin(a));
-        points.push_back(posed ? f.pose.orientation * local + f.pose.position : at + local);
+        grid.push_back(posed ? f.pose.orientation * local + f.pose.position : at + local);
       }
     }
+    auto edge = [&](const glm::dvec3& a, const glm::dvec3& b) {
+      if ((a.y < 0) != (b.y < 0)) points.push_back(glm::mix(a, b, a.y / (a.y - b.y)));
+    };
+    for (int k = 0; k <= kCircles + 1; ++k)
+      for (int j = 0; j < kAround; ++j) {
+        const glm::dvec3& p = grid[size_t(k * kAround + j)];
+        if (p.y >= 0) points.push_back(p);
+        edge(p, grid[size_t(k * kAround + (j + 1) % kAround)]);
+        if (k <= kCircles) edge(p, grid[size_t((k + 1) * kAround + j)]);
+      }
   }
   return points;
 }

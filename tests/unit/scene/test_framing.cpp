@@ -38,7 +38,8 @@ FrameState tilted(const std::string& glass, double tilt, double toward, const st
 }
 
 // The glass's rim and foot circles and its widest circle, moved by its pose, as pixels
-// of a width x height picture (x right, y down).
+// of a width x height picture (x right, y down): the points above the floor (a glass
+// tipped past lying goes through it, and the floor hides that part).
 std::vector<glm::dvec2> glass_pixels(const FrameState& f, int width, int height) {
   const VesselFrame& v = f.vessels.at(0);
   const Vessel& g = v.vessel;
@@ -57,6 +58,7 @@ std::vector<glm::dvec2> glass_pixels(const FrameState& f, int width, int height)
     for (int j = 0; j < 72; ++j) {
       const double a = 2 * std::numbers::pi * j / 72;
       const glm::dvec3 p = v.pose.orientation * glm::dvec3(r * std::cos(a), y, r * std::sin(a)) + v.pose.position;
+      if (p.y < 0) continue;
       const glm::dvec3 d = p - glm::dvec3(cam.eye);
       const double z = glm::dot(d, glm::dvec3(cam.forward));
       if (z <= 0) {
@@ -111,7 +113,7 @@ TEST(Framing, UprightAndSlightlyTiltedGlassesKeepTheStandingCamera) {
 
 TEST(Framing, TheCameraBacksAwayContinuouslyAsTheTiltGrows) {
   const CameraParams upright = make_frame(test::params_with_glass("pint")).camera;
-  double last = camera_distance(upright);
+  double last = camera_distance(upright), lying = 0;
   for (int deg = 0; deg <= 135; ++deg) {
     const CameraParams c = tilted("pint", deg * kDeg, 0).camera;
     const double d = camera_distance(c);
@@ -125,8 +127,9 @@ TEST(Framing, TheCameraBacksAwayContinuouslyAsTheTiltGrows) {
                 0, 1e-6)
         << deg;
     last = d;
+    if (deg == 90) lying = d;
   }
-  EXPECT_GT(last, 1.2 * camera_distance(upright)) << "a pint lying on its side needs a wider picture";
+  EXPECT_GT(lying, 1.2 * camera_distance(upright)) << "a pint lying on its side needs a wider picture";
 }
 
 }  // namespace
