@@ -108,6 +108,7 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
     if (ec) throw InputError("-o " + shown + ": cannot create " + dest.parent_path().string() + ": " + ec.message());
   }
   sweep_stale_temporaries(dest.parent_path());  // of runs killed before they could clean up
+  if (video) sweep_legacy_part(dest);             // and this video's part from older versions
   std::optional<Encoder> encoder;
   std::optional<SequenceFolder> sequence;
   if (video) encoder.emplace(dest, shown, req.width, req.height, fps);

@@ -132,4 +132,18 @@ int sweep_stale_temporaries(const std::filesystem::path& folder) {
   return removed;
 }
 
+bool sweep_legacy_part(const std::filesystem::path& video) {
+  namespace fs = std::filesystem;
+  const std::string ext = video.extension().string();
+  if (ext != ".mp4" && ext != ".gif") return false;
+  fs::path part = video;
+  part += ".part";
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(part, ec);
+  if (ec || !fs::is_regular_file(st)) return false;  // no such part, or a link or folder: not ours
+  const auto written = fs::last_write_time(part, ec);
+  if (ec || fs::file_time_type::clock::now() - written < kLegacyPartAge) return false;
+  return fs::remove(part, ec) && !ec;
+}
+
 }  // namespace draught::cli

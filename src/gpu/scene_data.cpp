@@ -77,6 +77,12 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.wet_height = vf.has_liquid && ny > 1e-6 ? float((vf.liquid.offset + vf.liquid.waves.ring) / ny) : -1.0f;
   r.absorption = vf.liquid_absorption;
   r.has_liquid = vf.has_liquid ? 1 : 0;
+  // The cross-section as the reference intersector has it (normalised; off: 0, 0, 0, 1),
+  // and in the world for the floor, which sees no rotation.
+  const glm::dvec4 clip = scene_geometry(f).vessels[size_t(row)].clip;
+  const glm::dvec3 clip_world = vf.pose.orientation * glm::dvec3(clip);
+  r.clip_world_normal = glm::vec3(clip_world);
+  r.clip_world_offset = float(clip.w + glm::dot(clip_world, vf.pose.position));
   // shape
   const glm::dmat3 rot = glm::mat3_cast(vf.pose.orientation);
   r.rot_x = glm::vec3(rot[0]);
@@ -89,10 +95,8 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.rim_major = float(v.rim_major);
   r.rim_minor = float(v.rim_minor);
   r.cavity_floor_radius = float(v.inner_radius(v.base));
-  // The cross-section as the reference intersector has it (normalised; off: 0, 0, 0, 1).
-  const glm::vec4 clip(scene_geometry(f).vessels[size_t(row)].clip);
   r.clip_normal = glm::vec3(clip);
-  r.clip_offset = clip.w;
+  r.clip_offset = float(clip.w);
   r.knot_row = row;
   const bool head = has_head(vf);
   r.has_head = head ? 1 : 0;

@@ -135,6 +135,22 @@ TEST_F(Animate, MotionShowsAndTiltUntilSpillSpills) {
   EXPECT_GT(differing_pixels(first, tipped), 32 * 32 / 20) << "frame 9 looks like frame 0: nothing moved";
 }
 
+TEST_F(Animate, SpilledIsOfTheLastPourNotASumOverPours) {
+  // Five pours into a glass held at 120 degrees: each spills nearly all of it. The
+  // readout is the spill since the last pour (at most what was poured), not a sum over
+  // the pours, which read "spilled 538.8 % of the glass".
+  write_file(in() / "pours.json",
+             R"({"draught_timeline": 1, "name": "pours", "duration": 6, "actions": [
+                 {"at": 0, "action": "tilt", "angle": 120, "duration": 0.5},
+                 {"at": 1, "action": "pour"}, {"at": 2, "action": "pour"}, {"at": 3, "action": "pour"},
+                 {"at": 4, "action": "pour"}, {"at": 5, "action": "pour"}]})");
+  auto r = animate((in() / "pours.json").string(), {"--size", "16x16", "--fps", "1", "--full", "-o", frames_dir("f")});
+  ASSERT_EQ(r.exit_code, 0) << r.describe();
+  const double spilled = spilled_percent(r.out);
+  EXPECT_GT(spilled, 50.0) << "the last pour spilled most of the drink\n" << r.describe();
+  EXPECT_LE(spilled, 100.0) << r.describe();
+}
+
 TEST_F(Animate, GentleTiltDoesNotSpill) {
   auto r = animate("gentle-tilt", {"--size", "16x16", "--fps", "1", "--full", "-o", frames_dir("f")});
   ASSERT_EQ(r.exit_code, 0) << r.describe();

@@ -4,6 +4,7 @@
 // stream through ffmpeg in passes that do not hold every frame.
 #include "cli_helpers.hpp"
 
+#include <chrono>
 #include <csignal>
 #include <dirent.h>
 
@@ -176,6 +177,26 @@ TEST_F(Outputs, SigkilledRunIsSweptByTheNextOneAndItsFfmpegDies) {
   auto r = render({"-o", (out() / "x.png").string()});
   ASSERT_EQ(r.exit_code, 0) << r.describe();
   EXPECT_EQ(join(list_tree(out())), join({live, "notes.tmp-1", "x.png"}));
+}
+
+TEST_F(Outputs, LegacyPartOfTheSameVideoIsSweptWhenStale) {
+  // Older versions wrote "X.mp4.part" / "X.gif.part", with no PID to tell whether their
+  // writer is alive. A run writing X removes X's own part when nothing wrote it for ten
+  // minutes; a fresh one (a run may still be encoding it) and parts of other names (a
+  // browser's download) stay.
+  namespace chr = std::chrono;
+  const auto hour_ago = fs::file_time_type::clock::now() - chr::hours(1);
+  for (const char* name : {"clip.mp4.part", "anim.gif.part", "other.mp4.part"}) {
+    write_file(out() / name, "half a video from an older version");
+    fs::last_write_time(out() / name, hour_ago);
+  }
+  write_file(out() / "fresh.mp4.part", "being written right now");
+  for (const char* video : {"clip.mp4", "anim.gif", "fresh.mp4"}) {
+    auto r = draught({"render", "--timeline", "gentle-tilt", "--size", "16x16", "--supersample", "1", "--fps", "4",
+                      "--duration", "0.5", "-o", (out() / video).string()});
+    ASSERT_EQ(r.exit_code, 0) << r.describe();
+  }
+  EXPECT_EQ(join(list_tree(out())), join({"anim.gif", "clip.mp4", "fresh.mp4", "fresh.mp4.part", "other.mp4.part"}));
 }
 
 TEST_F(Outputs, OutputNameOf249CharactersWorks) {

@@ -291,6 +291,20 @@ TEST_F(TimelineErrors, ErrorsNameTheOriginalIndexNotTheSortedOne) {
                    {"actions[4].angle", "[0, 135]"});
 }
 
+TEST_F(TimelineErrors, SeveralMistakesAreAllReportedOnePerLine) {
+  // Three mistakes in two actions: every one is reported, each on its own line naming the
+  // file and the field, under a line that counts them.
+  std::string text = replace(kGoodTimeline, "\"angle\": 20", "\"angle\": 200");
+  text = replace(text, "\"amount\": 0.1", "\"amount\": 2");
+  text = replace(text, "\"frequency\": 2", "\"frequency\": 0");
+  expect_both_fail("several.json", text,
+                   {"3 mistakes:", "actions[1].angle", "got 200", "actions[2].frequency", "actions[3].amount", "got 2"});
+  const fs::path f = in() / "several.json";
+  auto r = validate(f.string());
+  for (const char* field : {"actions[1].angle", "actions[2].frequency", "actions[3].amount"})
+    EXPECT_TRUE(contains(r.err, "\n  " + f.string() + ": field '" + field + "': ")) << field << "\n" << r.describe();
+}
+
 // ---------------------------------------------------------------- names and paths
 
 TEST_F(TimelineErrors, NonexistentTimelineNameSaysWhereItLooked) {

@@ -2,7 +2,8 @@
 // every glass casts a soft shadow tinted by its drink, with a caustic in the middle
 // (analytic: each glass is taken as a cylinder of its mean radius), and darkens the
 // floor around its foot (contact shadow). A floor point is shaded by the product of
-// every glass's shadow; the bounds of each glass are tested first.
+// every glass's shadow; the bounds of each glass are tested first. A cross-section
+// (clip.*) takes away the shadow and the contact of what it cuts away.
 #ifndef LIB_ENVIRONMENT_FLOOR_GLSL
 #define LIB_ENVIRONMENT_FLOOR_GLSL
 #include "generated/frame.glsl"
@@ -52,26 +53,44 @@ Hit hit_floor(vec3 o, vec3 d, float tmin) {
 struct ShadowRay {
   bool across;  // false: the light runs along the axis (no shadow from a cylinder)
   float t, dist, y;
+  float speed;  // how fast the ray moves across the axis per unit t
 };
 
 ShadowRay shadow_ray(FloorView v) {
   ShadowRay r;
   float a = dot(v.l_across, v.l_across);
   r.across = a >= 1e-8;
+  r.speed = sqrt(a);
   r.t = -dot(v.across, v.l_across) / a;
   r.dist = length(v.across + r.t * v.l_across);
   r.y = v.along + r.t * v.l_along;
   return r;
 }
 
-// One glass's shadow: a cylinder of the glass's mean radius, tinted by the drink where
-// the light crosses it below the surface, with a caustic in the middle.
-vec3 glass_shadow(ObjectBody body, ShadowRay r) {
+// The part of the shadow ray's chord through the cylinder (around the point nearest the
+// axis, from floor point p) that the cross-section leaves: 1 uncut (or no cut), 0 cut
+// away, so a glass cut away entirely casts no shadow and a half-cut one a fainter one.
+float kept_by_cut(ObjectBody body, vec3 p, ShadowRay r, float half_chord) {
+  float dt = half_chord / max(r.speed, 1e-6);
+  float s0 = dot(body.clip_world_normal, p + (r.t - dt) * frame.light_dir) - body.clip_world_offset;
+  float s1 = dot(body.clip_world_normal, p + (r.t + dt) * frame.light_dir) - body.clip_world_offset;
+  float lo = min(s0, s1), hi = max(s0, s1);
+  if (hi <= 0.0) return 1.0;
+  if (lo >= 0.0) return 0.0;
+  return -lo / (hi - lo);
+}
+
+// One glass's shadow at floor point p: a cylinder of the glass's mean radius, tinted by
+// the drink where the light crosses it below the surface, with a caustic in the middle,
+// as much of it as the cross-section leaves.
+vec3 glass_shadow(ObjectBody body, vec3 p, ShadowRay r) {
   float rad = body.mean_outer_radius;
   if (!r.across || r.t <= 0.0 || r.y > body.height + 0.004) return vec3(1.0);
   float edge = smoothstep(rad * 1.05, rad * 0.9, r.dist);
   if (edge <= 0.0) return vec3(1.0);
   float chord = 2.0 * sqrt(max(rad * rad - r.dist * r.dist, 0.0));
+  edge *= kept_by_cut(body, p, r, 0.5 * chord);
+  if (edge <= 0.0) return vec3(1.0);
   bool wet = body.has_liquid != 0 && r.y < body.wet_height;
   vec3 through = wet ? exp(-body.absorption * chord) : vec3(0.85);
   float x = r.dist / rad;
@@ -81,7 +100,7 @@ vec3 glass_shadow(ObjectBody body, ShadowRay r) {
 
 // Direct light (shadows) and ambient occlusion (contact) at floor point p (world) from
 // every glass. Each glass's bounds decide first whether it can shade p at all (the
-// mean radius and the height are within the bounds); only then are its body's two
+// mean radius and the height are within the bounds); only then are its body's three
 // texels fetched.
 void floor_occlusion(vec3 p, out vec3 direct, out float contact) {
   direct = vec3(1.0);
@@ -97,10 +116,14 @@ void floor_occlusion(vec3 p, out vec3 direct, out float contact) {
     bool shade = r.across && r.t > 0.0 && r.y <= b.bound_length + 0.004 && r.dist < 1.05 * b.bound_radius;
     if (near || shade) {  // (a block, not a continue: llvmpipe runs it faster)
       ObjectBody body = body_of(i);
-      // Darker near the foot (which lifts off the floor when the glass tips).
-      float foot_dist = length(vec2(max(length(v.across) - body.foot_radius, 0.0), v.along));
-      if (near) contact *= 1.0 - 0.55 * exp(-foot_dist / (0.25 * body.foot_radius));
-      if (shade) direct *= glass_shadow(body, r);
+      // Darker near the foot (which lifts off the floor when the glass tips), where the
+      // cross-section leaves the foot: its point nearest p decides, blended over 2 mm.
+      float across = length(v.across);
+      float foot_dist = length(vec2(max(across - body.foot_radius, 0.0), v.along));
+      vec3 foot = b.bound_base + v.across * (min(across, body.foot_radius) / max(across, 1e-9));
+      float foot_kept = 1.0 - smoothstep(-0.002, 0.002, dot(body.clip_world_normal, foot) - body.clip_world_offset);
+      if (near) contact *= 1.0 - 0.55 * foot_kept * exp(-foot_dist / (0.25 * body.foot_radius));
+      if (shade) direct *= glass_shadow(body, p, r);
     }
   }
 }

@@ -31,21 +31,43 @@ double progress(const TimelineAction& a, double t) {
   return a.linear ? x : x * x * (3 - 2 * x);
 }
 
+// Reads a timeline's fields, collecting every mistake it can read past (a number out of
+// range, an unknown key) so that one run reports them all; what it cannot read past (an
+// action that is not an object, an unknown action kind) throws, and the caller collects
+// that one and goes on with the next action.
 struct Reader {
   const std::string& file;
-  [[noreturn]] void fail(const std::string& field, const std::string& msg) const {
-    throw InputError(file + ": field '" + field + "': " + msg);
+  std::vector<std::string>& mistakes;
+  std::string message(const std::string& field, const std::string& msg) const {
+    return file + ": field '" + field + "': " + msg;
   }
+  void note(const std::string& field, const std::string& msg) const { mistakes.push_back(message(field, msg)); }
+  [[noreturn]] void fail(const std::string& field, const std::string& msg) const {
+    throw InputError(message(field, msg));
+  }
+  // Runs one part of the parse; a mistake it throws is noted and the parse goes on.
+  template <class F>
+  void attempt(F&& part) const {
+    try {
+      part();
+    } catch (const InputError& e) {
+      mistakes.push_back(e.what());
+    }
+  }
+  // A bad number is noted; the default (or the range's low end) stands in for it, so the
+  // rest of the file can still be checked.
   double number(const json& obj, const std::string& key, const std::string& field, double lo, double hi,
                 const char* unit, const double* def = nullptr) const {
     if (!obj.contains(key)) {
-      if (def) return *def;
-      fail(field, std::string("missing, expected a number in [") + fmt(lo) + ", " + fmt(hi) + "]" + unit);
+      if (!def) note(field, std::string("missing, expected a number in [") + fmt(lo) + ", " + fmt(hi) + "]" + unit);
+      return def ? *def : lo;
     }
     const json& v = obj[key];
-    if (!v.is_number() || !(v.get<double>() >= lo && v.get<double>() <= hi))
-      fail(field, std::string("expected a number in [") + fmt(lo) + ", " + fmt(hi) + "]" + unit + ", got " +
+    if (!v.is_number() || !(v.get<double>() >= lo && v.get<double>() <= hi)) {
+      note(field, std::string("expected a number in [") + fmt(lo) + ", " + fmt(hi) + "]" + unit + ", got " +
                       short_dump(v));
+      return def ? *def : lo;
+    }
     return v.get<double>();
   }
   std::string string(const json& obj, const std::string& key, const std::string& field) const {
@@ -59,12 +81,25 @@ struct Reader {
   }
 };
 
+// Every mistake noted, as one InputError: a single one word for word, several one per
+// line (the first kMaxListedMistakes, then how many more).
+void throw_mistakes(const std::string& file, const std::vector<std::string>& mistakes) {
+  if (mistakes.empty()) return;
+  if (mistakes.size() == 1) throw InputError(mistakes.front());
+  constexpr size_t kMaxListedMistakes = 20;
+  std::string text = file + ": " + std::to_string(mistakes.size()) + " mistakes:";
+  for (size_t i = 0; i < std::min(mistakes.size(), kMaxListedMistakes); ++i) text += "\n  " + mistakes[i];
+  if (mistakes.size() > kMaxListedMistakes)
+    text += "\n  ... and " + std::to_string(mistakes.size() - kMaxListedMistakes) + " more";
+  throw InputError(text);
+}
+
 void check_keys(const Reader& r, const json& obj, const std::string& where, std::initializer_list<const char*> keys) {
   for (auto& [key, val] : obj.items()) {
     if (std::find_if(keys.begin(), keys.end(), [&, &key = key](const char* k) { return key == k; }) != keys.end()) continue;
     std::string list;
     for (const char* k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
-    r.fail(where + key, "unknown key, expected one of " + list);
+    r.note(where + key, "unknown key, expected one of " + list);
   }
 }
 
@@ -94,7 +129,7 @@ TimelineAction parse_action(const Reader& r, const json& a, const std::string& a
   act.at = r.number(a, "at", at + ".at", 0, 3600, " (seconds)", &zero);
   if (a.contains("ease")) {
     const std::string e = r.string(a, "ease", at + ".ease");
-    if (e != "smooth" && e != "linear") r.fail(at + ".ease", "expected \"smooth\" or \"linear\", got " + quote_input(e));
+    if (e != "smooth" && e != "linear") r.note(at + ".ease", "expected \"smooth\" or \"linear\", got " + quote_input(e));
     act.linear = e == "linear";
   }
   auto duration = [&](double lo, const double* def) {
@@ -196,32 +231,37 @@ ParamValue blended(const TimelineAction& a, const ParamValue& from, double x) {
 
 Timeline parse_timeline(const std::string& text, const std::string& file) {
   const json j = parse_json_file_text(text, file);
-  const Reader r{file};
+  std::vector<std::string> mistakes;
+  const Reader r{file, mistakes};
+  // Not an object, or not a timeline: nothing else in it is worth reporting.
   if (!j.is_object()) throw InputError(file + ": expected a JSON object at the top level");
-  check_keys(r, j, "", {"draught_timeline", "name", "description", "preset", "glass", "duration", "fps", "actions"});
   if (!j.contains("draught_timeline") || j["draught_timeline"] != kTimelineFormat)
     r.fail("draught_timeline", "expected format " + std::to_string(kTimelineFormat) +
                                    (j.contains("draught_timeline") ? ", got " + short_dump(j["draught_timeline"])
                                                                    : " (missing: is this a timeline file?)"));
+  check_keys(r, j, "", {"draught_timeline", "name", "description", "preset", "glass", "duration", "fps", "actions"});
   Timeline t;
   t.file = file;
   for (auto [key, out] : {std::pair{"name", &t.name}, {"description", &t.description}, {"preset", &t.preset},
                           {"glass", &t.glass}})
-    if (j.contains(key)) *out = r.string(j, key, key);
+    if (j.contains(key)) r.attempt([&, key = key, out = out] { *out = r.string(j, key, key); });
   if (!j.contains("actions") || !j["actions"].is_array())
-    r.fail("actions", "expected an array of actions" + (j.contains("actions") ? ", got " + short_dump(j["actions"]) : std::string()));
-  for (size_t i = 0; i < j["actions"].size(); ++i) {
-    t.actions.push_back(parse_action(r, j["actions"][i], "actions[" + std::to_string(i) + "]"));
-    t.actions.back().index = int(i);
-  }
-  std::stable_sort(t.actions.begin(), t.actions.end(), [](auto& a, auto& b) { return a.at < b.at; });
-  t.prepare_tilts();
+    r.note("actions", "expected an array of actions" + (j.contains("actions") ? ", got " + short_dump(j["actions"]) : std::string()));
+  else
+    for (size_t i = 0; i < j["actions"].size(); ++i)
+      r.attempt([&] {
+        t.actions.push_back(parse_action(r, j["actions"][i], "actions[" + std::to_string(i) + "]"));
+        t.actions.back().index = int(i);
+      });
   double end = 0;
   for (auto& a : t.actions) end = std::max(end, a.at + a.duration);
   const double settle = end + 2.0;
   t.duration = r.number(j, "duration", "duration", 0.01, 600, " (seconds)", &settle);
   const double no_fps = 0;
   t.fps = j.contains("fps") ? r.number(j, "fps", "fps", 1, 120, " (frames per second)") : no_fps;
+  throw_mistakes(file, mistakes);
+  std::stable_sort(t.actions.begin(), t.actions.end(), [](auto& a, auto& b) { return a.at < b.at; });
+  t.prepare_tilts();
   return t;
 }
 
@@ -349,21 +389,28 @@ void bind_timeline(Timeline& tl, const Scene& scene) {
   }
   const std::string range = scene.objects.empty() ? std::string("no object (the scene has none)")
                                                   : object_range_text(scene) + " or a name: " + list;
+  // Actions are sorted by time; mistakes are reported in file order.
+  std::vector<std::pair<int, std::string>> found;
   for (auto& a : tl.actions) {
     if (a.object_field.empty()) continue;
+    const std::string field = tl.file + ": field '" + a.object_field + "': ";
     if (!a.object_name.empty()) {
       const auto it = std::find(names.begin(), names.end(), a.object_name);
       if (it == names.end()) {
         const std::string near = nearest_choice(a.object_name, names);
-        throw InputError(tl.file + ": field '" + a.object_field + "': expected an object of the scene, " + range +
-                         "; got \"" + a.object_name + "\"" + (near.empty() ? "" : " (did you mean \"" + near + "\"?)"));
+        found.emplace_back(a.index, field + "expected an object of the scene, " + range + "; got \"" +
+                                        a.object_name + "\"" + (near.empty() ? "" : " (did you mean \"" + near + "\"?)"));
+        continue;
       }
       a.object = int(it - names.begin());
     } else if (a.object >= int(scene.objects.size())) {
-      throw InputError(tl.file + ": field '" + a.object_field + "': expected " + range + ", got " +
-                       std::to_string(a.object));
+      found.emplace_back(a.index, field + "expected " + range + ", got " + std::to_string(a.object));
     }
   }
+  std::stable_sort(found.begin(), found.end(), [](auto& a, auto& b) { return a.first < b.first; });
+  std::vector<std::string> mistakes;
+  for (auto& f : found) mistakes.push_back(f.second);
+  throw_mistakes(tl.file, mistakes);
   tl.prepare_tilts();
 }
 

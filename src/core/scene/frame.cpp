@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 
 namespace draught {
 
@@ -59,10 +61,87 @@ Bounds standing_bounds(const std::vector<VesselFrame>& vessels) {
   }
   return b;
 }
+
+// Points on each glass's outer outline (circles up the profile, the rim bead's outside),
+// in the world: `posed` as the glass is in the frame (tilted, spun, shaken), else upright
+// at its place. A glass tipped past lying (a timeline may tip it to 135 degrees on its
+// foot) goes under the floor, which hides that part: only what is above it counts, and
+// where the outline crosses the floor.
+std::vector<glm::dvec3> outline(const std::vector<VesselFrame>& vessels, bool posed) {
+  constexpr int kCircles = 12, kAround = 16;
+  std::vector<glm::dvec3> points;
+  for (const VesselFrame& f : vessels) {
+    const Vessel& v = f.vessel;
+    if (v.r_outer.empty()) continue;
+    const glm::dvec3 at(f.placement.position.x, 0, f.placement.position.z);
+    std::vector<glm::dvec3> grid;  // (kCircles + 2) circles of kAround points
+    for (int k = 0; k <= kCircles + 1; ++k) {
+      // kCircles + 1: the outside of the rim bead, over its top.
+      const bool rim = k > kCircles;
+      const double y = rim ? v.height + v.rim_minor : v.height * k / kCircles;
+      const double r = rim ? v.rim_major + v.rim_minor : v.outer_radius(y);
+      for (int j = 0; j < kAround; ++j) {
+        const double a = 2 * std::numbers::pi * j / kAround;
+        const glm::dvec3 local(r * std::cos(a), y, r * std::sin(a));
+        grid.push_back(posed ? f.pose.orientation * local + f.pose.position : at + local);
+      }
+    }
+    auto edge = [&](const glm::dvec3& a, const glm::dvec3& b) {
+      if ((a.y < 0) != (b.y < 0)) points.push_back(glm::mix(a, b, a.y / (a.y - b.y)));
+    };
+    for (int k = 0; k <= kCircles + 1; ++k)
+      for (int j = 0; j < kAround; ++j) {
+        const glm::dvec3& p = grid[size_t(k * kAround + j)];
+        if (p.y >= 0) points.push_back(p);
+        edge(p, grid[size_t(k * kAround + (j + 1) % kAround)]);
+        if (k <= kCircles) edge(p, grid[size_t((k + 1) * kAround + j)]);
+      }
+  }
+  return points;
+}
+
+// How far out the furthest point lies in the picture: 1 is the picture's edge (left,
+// right, top or bottom); a point behind the camera is infinitely far out.
+double reach(const CameraParams& c, const std::vector<glm::dvec3>& points, double aspect) {
+  const CameraBasis b = camera_basis(c, 1, 1);  // the directions do not depend on the size
+  const double half_tan = std::tan(glm::radians(double(c.vfov)) * 0.5);
+  double out = 0;
+  for (const glm::dvec3& p : points) {
+    const glm::dvec3 d = p - glm::dvec3(b.eye);
+    const double z = glm::dot(d, glm::dvec3(b.forward));
+    if (z <= 1e-6) return std::numeric_limits<double>::infinity();
+    const double x = glm::dot(d, glm::dvec3(b.right)) / (z * half_tan * aspect);
+    const double y = glm::dot(d, glm::dvec3(b.up)) / (z * half_tan);
+    out = std::max({out, std::abs(x), std::abs(y)});
+  }
+  return out;
+}
 }  // namespace
 
 CameraParams frame_camera(const CameraParams& c, const std::vector<VesselFrame>& vessels, double aspect) {
-  return frame_bounds(c, standing_bounds(vessels), aspect);
+  // The glasses as they stand set the framing, so a moving glass does not make the camera
+  // swim. A glass tilted (or shaken) so far that it would reach out further than its
+  // upright self, and out of the picture, makes the camera back away along its line of
+  // sight just far enough to keep it in (continuously, so an animation does not jump).
+  const CameraParams standing = frame_bounds(c, standing_bounds(vessels), aspect);
+  if (!c.auto_frame) return standing;
+  const std::vector<glm::dvec3> posed = outline(vessels, true);
+  constexpr double kInside = 0.97;  // of the picture's half-size: a sliver of margin
+  const double allowed = std::max(kInside, 1.02 * reach(standing, outline(vessels, false), aspect));
+  if (reach(standing, posed, aspect) <= allowed) return standing;
+  const glm::dvec3 target(standing.target), back = glm::dvec3(standing.eye) - target;
+  auto at = [&](double scale) {
+    CameraParams out = standing;
+    out.eye = glm::vec3(target + back * scale);
+    return out;
+  };
+  double lo = 1, hi = 2;
+  for (int i = 0; i < 16 && reach(at(hi), posed, aspect) > allowed; ++i) lo = hi, hi *= 2;
+  for (int i = 0; i < 32; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (reach(at(mid), posed, aspect) > allowed ? lo : hi) = mid;
+  }
+  return at(hi);
 }
 
 CameraParams FrameState::camera_for(int width, int height) const {

@@ -56,7 +56,9 @@ FrameState assemble_frame(const SceneParams&, std::vector<VesselFrame>, int sele
 // A still frame: every glass upright at rest at its placement, filled to its liquid.fill.
 FrameState make_frame(const Scene&);
 FrameState make_frame(const Params&);  // a single glass
-// The camera that frames everything in the frame, looking along target - eye of `c`.
+// The camera that frames everything in the frame, looking along target - eye of `c`: the
+// glasses as they stand at their places, and if a posed glass (tilted, shaken) would
+// reach out of that picture, backed away along its line of sight until it is inside.
 CameraParams frame_camera(const CameraParams& c, const std::vector<VesselFrame>&, double aspect = 1.0);
 CameraParams frame_camera(const CameraParams& c, const Vessel&);  // one upright glass at the origin
 // The reference intersector's view of the frame (every object, the floor, clip planes).

@@ -61,11 +61,13 @@ void Simulation::set_params(const VesselParams& p) {
 void Simulation::set_fraction(double fraction) {
   if (!std::isfinite(fraction)) return;
   fraction_ = std::clamp(fraction, 0.0, 1.0);
+  spilled_ = 0;  // a new fill: what spills from now on is of this drink
   update_surface();
 }
 
 void Simulation::pour() {
   fraction_ = params_.liquid.fill;
+  spilled_ = 0;  // a new fill: what spills from now on is of this drink
   foam_.pour();
   bubbles_->clear();
   update_surface();

@@ -45,7 +45,9 @@ class Simulation {
   const VesselParams& params() const { return params_; }
   double time() const { return time_; }
   double fraction() const { return fraction_; }
-  double spilled() const { return spilled_; }  // fraction of the cavity lost over the rim
+  // Fraction of the cavity lost over the rim since the glass was last filled (pour,
+  // set_fraction): a refill starts the count again, so it never exceeds what was poured.
+  double spilled() const { return spilled_; }
   const SloshState& slosh() const { return slosh_; }
   const FoamState& foam() const { return foam_; }
   const BubbleField& bubbles() const { return *bubbles_; }

@@ -245,6 +245,27 @@ TEST(Simulation, RefillWhileSloshingStaysBelowTheRim) {
   EXPECT_GE(min_clear, -1e-4) << "plane + waves above the rim after a refill at t = " << at;
 }
 
+TEST(Simulation, SpilledCountsFromTheLastFill) {
+  // Pours into a glass held tipped far past the rim spill almost everything each time;
+  // what is reported is the spill of the drink in the glass now (since the last fill),
+  // never more than was poured, not a sum over the pours (which reached 538.8 %).
+  const Params p = lager_in_pint(0.86f);
+  Simulation sim(p);
+  TipDriver tip([](double t) { return ramp(t, 0.0, 1.0, deg(110)); }, sim.vessel().outer_radius(0));
+  double t = 0;
+  for (int pour = 0; pour < 6; ++pour) {
+    for (const double end = t + 1.5; t < end;) sim.advance(tip, t += kDt);
+    ASSERT_GT(sim.spilled(), 0.5) << "pour " << pour << ": a glass held at 110 degrees spills most of it";
+    ASSERT_LE(sim.spilled(), double(p.liquid.fill) + 1e-12) << "pour " << pour;
+    ASSERT_NEAR(sim.fraction() + sim.spilled(), double(p.liquid.fill), 1e-12) << "pour " << pour;
+    sim.pour();  // it spills at once, but only from the new drink
+    EXPECT_NEAR(sim.fraction() + sim.spilled(), double(p.liquid.fill), 1e-12) << "a pour starts the count again";
+  }
+  sim.advance(tip, t += kDt);
+  sim.set_fraction(0.3);
+  EXPECT_NEAR(sim.fraction() + sim.spilled(), 0.3, 1e-12) << "so does a refill";
+}
+
 TEST(Simulation, TippingSpillsDownToCapacityAndNeverRefills) {
   const Params p = lager_in_pint(0.86f);
   Simulation sim(p);
