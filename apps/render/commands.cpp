@@ -58,6 +58,16 @@ void check_camera(const SceneParams& p, bool camera_given) {
 
 namespace {
 
+// Writes a still to `dest` (the file `out` names, a symbolic link followed) atomically,
+// its folder made and stale temporaries there swept, and says where it went.
+void write_still(const std::filesystem::path& dest, const std::filesystem::path& out, const Image& img) {
+  if (dest.has_parent_path()) std::filesystem::create_directories(dest.parent_path());
+  sweep_stale_temporaries(dest.parent_path());
+  write_png(dest, img);
+  if (dest != out) std::printf("wrote %s (through the symbolic link, to %s)\n", out.c_str(), dest.c_str());
+  else std::printf("wrote %s\n", out.string().c_str());
+}
+
 // A still from the reference path tracer: the same frame, camera and output transform
 // as the GPU's picture; progress on stderr.
 int render_reference_still(const RenderRequest& req, const FrameState& frame, const std::filesystem::path& dest,
@@ -78,15 +88,11 @@ int render_reference_still(const RenderRequest& req, const FrameState& frame, co
       std::fflush(stderr);
     };
   const RadianceImage radiance = render_reference(frame, req.width, req.height, settings);
-  if (dest.has_parent_path()) std::filesystem::create_directories(dest.parent_path());
-  sweep_stale_temporaries(dest.parent_path());
-  write_png(dest, display_image(radiance, frame.params.render));
   if (req.verbose)
     std::fprintf(stderr, "reference: %dx%d at %d paths per pixel in %.1f s (%.0f paths per second)\n", req.width,
                  req.height, req.samples, radiance.seconds,
                  double(req.width) * req.height * req.samples / std::max(radiance.seconds, 1e-9));
-  if (dest != out) std::printf("wrote %s (through the symbolic link, to %s)\n", out.c_str(), dest.c_str());
-  else std::printf("wrote %s\n", out.string().c_str());
+  write_still(dest, out, display_image(radiance, frame.params.render));
   return 0;
 }
 
@@ -129,14 +135,10 @@ int render(const RenderRequest& req) {
     explain_size_error(e, req, view == gpu::DebugView::None ? scene.params.render.supersample : 1);
   }
   auto ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  if (dest.has_parent_path()) std::filesystem::create_directories(dest.parent_path());
-  sweep_stale_temporaries(dest.parent_path());
-  write_png(dest, img);
   if (req.verbose)
     std::fprintf(stderr, "rendered %dx%d (supersample %d) in %.1f ms\n", req.width, req.height,
                  view == gpu::DebugView::None ? scene.params.render.supersample : 1, ms);
-  if (dest != out) std::printf("wrote %s (through the symbolic link, to %s)\n", out.c_str(), dest.c_str());
-  else std::printf("wrote %s\n", out.string().c_str());
+  write_still(dest, out, img);
   return 0;
 }
 

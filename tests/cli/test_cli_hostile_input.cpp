@@ -2,6 +2,7 @@
 // deep and huge JSON, files that are not files, bad flag values, typos. Every case
 // exits 1 with "draught: error: " naming what was wrong and what was expected, never
 // crashes, and writes nothing.
+#include "../support/utf8.hpp"
 #include "cli_helpers.hpp"
 
 #include <sys/stat.h>
@@ -35,17 +36,7 @@ std::string drink_with(const std::string& field_and_value) {
   return R"({ "draught_preset": 1, "kind": "drink", "name": "x", )" + field_and_value + " }";
 }
 
-bool valid_utf8(const std::string& s) {
-  for (size_t i = 0; i < s.size();) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
-    if (n == 0 || i + n > s.size()) return false;
-    for (size_t k = 1; k < n; ++k)
-      if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return false;
-    i += n;
-  }
-  return true;
-}
+using draught::test::valid_utf8;
 
 // ---------------------------------------------------------------- 1. deep nesting
 

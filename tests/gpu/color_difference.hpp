@@ -10,12 +10,13 @@
 
 namespace draught::test {
 
+inline double srgb8_to_linear(std::uint8_t v) {
+  const double c = v / 255.0;
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
 inline glm::dvec3 srgb8_to_lab(std::uint8_t r8, std::uint8_t g8, std::uint8_t b8) {
-  auto lin = [](std::uint8_t v) {
-    const double c = v / 255.0;
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-  };
-  const double r = lin(r8), g = lin(g8), b = lin(b8);
+  const double r = srgb8_to_linear(r8), g = srgb8_to_linear(g8), b = srgb8_to_linear(b8);
   // XYZ relative to the D65 white.
   const double x = (0.4124564 * r + 0.3575761 * g + 0.1804375 * b) / 0.95047;
   const double y = 0.2126729 * r + 0.7151522 * g + 0.0721750 * b;

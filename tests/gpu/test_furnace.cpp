@@ -3,6 +3,7 @@
 // within 2 % of the environment's radiance (compared in linear light, after decoding the
 // 8-bit sRGB output; one code step is at most 0.6 % at these levels). The same scenes pass
 // in the reference path tracer (tests/unit/reference/test_path_tracer.cpp).
+#include "color_difference.hpp"
 #include "gpu_fixture.hpp"
 
 #include <gtest/gtest.h>
@@ -15,11 +16,6 @@ namespace draught::test {
 namespace {
 
 constexpr glm::vec3 kEnv{0.5f, 0.4f, 0.3f};
-
-double srgb8_to_linear(std::uint8_t v) {
-  const double c = v / 255.0;
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
 
 FrameState furnace(float fill, float foam_height) {
   SceneRequest req{"lager", "pint"};
@@ -62,12 +58,6 @@ TEST(Furnace, AnAbsorbingDrinkIsNotInvisible) {  // the tests above can fail
   int x = 0, y = 0;
   EXPECT_GT(worst_error(gpu_instance().renderer->render(f, 64, 64), x, y), 0.3);
 }
-
-}  // namespace
-}  // namespace draught::test
-
-namespace draught::test {
-namespace {
 
 // A head of white foam that only scatters should come out at the environment's
 // brightness within 3 % (the reference's does). The picture's head is not energy

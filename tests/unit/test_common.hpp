@@ -5,7 +5,10 @@
 #include "core/params/preset.hpp"
 #include "core/vessel/vessel.hpp"
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 
 namespace draught::test {
@@ -29,6 +32,14 @@ inline GlassParams simple_glass(Curve profile, float wall, float base, float rim
   g.base_thickness = base;
   g.rim_radius = rim;
   return g;
+}
+
+// Does an error message contain every part? (names the missing one)
+inline ::testing::AssertionResult has(const std::string& message, std::initializer_list<std::string> parts) {
+  for (const auto& p : parts)
+    if (message.find(p) == std::string::npos)
+      return ::testing::AssertionFailure() << "message \"" << message << "\" lacks \"" << p << "\"";
+  return ::testing::AssertionSuccess();
 }
 
 }  // namespace draught::test

@@ -16,6 +16,8 @@
 namespace draught {
 namespace {
 
+using test::has;
+
 namespace fs = std::filesystem;
 
 // A scene preset with these objects (JSON array text) and optional top-level params.
@@ -50,13 +52,6 @@ std::string scene_error(const std::string& text) {
     return std::string("wrong exception type: ") + e.what();
   }
   return "no error";
-}
-
-::testing::AssertionResult has(const std::string& message, std::initializer_list<std::string> parts) {
-  for (const auto& p : parts)
-    if (message.find(p) == std::string::npos)
-      return ::testing::AssertionFailure() << "message \"" << message << "\" lacks \"" << p << "\"";
-  return ::testing::AssertionSuccess();
 }
 
 VesselParams vessel_of(const Scene& s, size_t i) { return as_vessel(s.objects.at(i))->params; }

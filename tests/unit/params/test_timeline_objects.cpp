@@ -19,6 +19,8 @@
 namespace draught {
 namespace {
 
+using test::has;
+
 constexpr double kPi = std::numbers::pi;
 
 std::string timeline_json(const std::string& actions, const std::string& extra = "") {
@@ -46,13 +48,6 @@ std::string bind_error(const std::string& actions, const Scene& scene) {
     return e.what();
   }
   return "no error";
-}
-
-::testing::AssertionResult has(const std::string& message, std::initializer_list<std::string> parts) {
-  for (const auto& p : parts)
-    if (message.find(p) == std::string::npos)
-      return ::testing::AssertionFailure() << "message \"" << message << "\" lacks \"" << p << "\"";
-  return ::testing::AssertionSuccess();
 }
 
 const Scene& flight() {

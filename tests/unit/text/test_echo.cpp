@@ -1,4 +1,5 @@
 // Echoed input in error messages: capped, and never cut inside a UTF-8 character.
+#include "../../support/utf8.hpp"
 #include "core/text/echo.hpp"
 
 #include <gtest/gtest.h>
@@ -8,18 +9,7 @@
 namespace draught {
 namespace {
 
-// Is s well-formed UTF-8 (no truncated or stray sequences)?
-bool valid_utf8(std::string_view s) {
-  for (size_t i = 0; i < s.size();) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
-    if (n == 0 || i + n > s.size()) return false;
-    for (size_t k = 1; k < n; ++k)
-      if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return false;
-    i += n;
-  }
-  return true;
-}
+using test::valid_utf8;
 
 TEST(Echo, Utf8PrefixNeverSplitsACharacter) {
   // 1-, 2-, 3- and 4-byte characters in a row, cut at every length.
