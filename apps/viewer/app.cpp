@@ -177,6 +177,7 @@ class Viewer {
   Editor editor_;
   Window window_;
   gpu::Renderer renderer_;  // after window_: needs its context
+  std::unique_ptr<gpu::RenderTarget> tier_target_;  // low tiers draw here, then scale up
   InputRig rig_;
   std::unique_ptr<SdlGamepadInput> gamepad_;
   std::unique_ptr<SceneSimulation> sim_;
@@ -476,11 +477,18 @@ void Viewer::draw_scene(int width, int height) {
   const DebugView view = kViews[view_];
   if (view == DebugView::None && tier.scale < 1.0f) {
     const int sw = std::max(1, int(width * tier.scale)), sh = std::max(1, int(height * tier.scale));
-    gpu::RenderTarget target(sw, sh, false);  // bound for drawing and reading
+    // One target kept across frames, made again only when the window or the tier resizes it.
+    if (!tier_target_ || tier_target_->width() != sw || tier_target_->height() != sh) {
+      tier_target_.reset();
+      tier_target_ = std::make_unique<gpu::RenderTarget>(sw, sh, false);  // bound for drawing and reading
+    } else {
+      tier_target_->bind();
+    }
     renderer_.draw(f, sw, sh);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glBlitFramebuffer(0, 0, sw, sh, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-    return;  // the target unbinds itself
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return;
   }
   if (view == DebugView::None) {
     renderer_.draw(f, width, height);

@@ -13,7 +13,7 @@
 
 namespace draught::gpu {
 
-RenderTarget::RenderTarget(int w, int h, bool float_target) {
+RenderTarget::RenderTarget(int w, int h, bool float_target) : width_(w), height_(h) {
   glGenTextures(1, &tex_);
   glBindTexture(GL_TEXTURE_2D, tex_);
   glTexStorage2D(GL_TEXTURE_2D, 1, float_target ? GL_RGBA32F : GL_RGBA8, w, h);
@@ -48,6 +48,8 @@ void RenderTarget::release() {
 }
 
 RenderTarget::~RenderTarget() { release(); }
+
+void RenderTarget::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, fbo_); }
 
 namespace {
 // The source with `#define name value` right after its #version line (line numbers kept).

@@ -33,17 +33,22 @@ struct DebugImage {
 };
 
 // An offscreen colour target, bound on creation: RGBA8 for pictures, RGBA32F for debug
-// channels. Unbinds and frees itself when it goes out of scope.
+// channels. Unbinds and frees itself when it goes out of scope; one kept across frames
+// (the viewer's low quality tiers) is bound again with bind().
 class RenderTarget {
  public:
   RenderTarget(int width, int height, bool float_target);
   ~RenderTarget();
   RenderTarget(const RenderTarget&) = delete;
   RenderTarget& operator=(const RenderTarget&) = delete;
+  void bind() const;
+  int width() const { return width_; }
+  int height() const { return height_; }
 
  private:
   void release();
   unsigned fbo_ = 0, tex_ = 0;
+  int width_ = 0, height_ = 0;
 };
 
 class Renderer {
