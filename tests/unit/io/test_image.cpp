@@ -3,12 +3,17 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace draught {
 namespace {
 
 Image block(std::initializer_list<std::uint8_t> grey, std::uint8_t alpha = 255) {
-  Image img{2, 2, {}};
-  for (std::uint8_t g : grey) img.rgba.insert(img.rgba.end(), {g, g, g, alpha});
+  Image img{2, 2, std::vector<std::uint8_t>(16)};
+  size_t i = 0;
+  for (std::uint8_t g : grey)
+    for (std::uint8_t c : {g, g, g, alpha}) img.rgba[i++] = c;
   return img;
 }
 
@@ -38,6 +43,24 @@ TEST(Downsample, AveragesCoverageLinearly) {
   img.rgba[11] = 255;
   img.rgba[15] = 0;
   EXPECT_EQ(downsample(img, 2).rgba[3], 128);
+}
+
+TEST(Downsample, APremultipliedEdgeKeepsItsColour) {
+  // Transparent pictures are premultiplied (the shader writes sRGB of radiance already
+  // weighted by coverage): one opaque orange sample beside three empty ones resolves to
+  // a quarter of its light at a quarter coverage, so un-premultiplied it is orange still,
+  // with no dark fringe and no colour bleeding in from the empty samples.
+  Image img{2, 2, std::vector<std::uint8_t>(16, 0)};
+  const std::uint8_t orange[4] = {255, 140, 30, 255};
+  std::copy_n(orange, 4, img.px(0, 0));
+  const Image out = downsample(img, 2);
+  auto linear = [](int code) {
+    const double c = code / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  ASSERT_EQ(out.rgba[3], 64);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(linear(out.rgba[size_t(c)]) / (out.rgba[3] / 255.0), linear(orange[c]), 0.01) << "channel " << c;
 }
 
 TEST(Downsample, FactorOneIsTheImage) {
