@@ -1,5 +1,6 @@
 // Drink colour against its published definitions: SRM and EBC (ASBC / EBC methods),
-// deLange's average beer spectrum, wine absorbances (Glories' intensity and hue).
+// deLange's average beer spectrum, wine absorbances (Glories' intensity and hue), and the
+// spectrum integrated per sRGB channel (D65, CIE 1931) at the reference path.
 #include "core/liquid/beverage.hpp"
 
 #include "core/params/preset.hpp"
@@ -50,10 +51,38 @@ TEST(Beverage, TheAverageBeerSpectrumFallsWithWavelength) {
   EXPECT_GT(a.b, a.g);
 }
 
-TEST(Beverage, SrmAbsorptionIsLinearInConcentration) {
-  const glm::vec3 sum = srm_to_absorption(4.0f) + srm_to_absorption(9.0f), both = srm_to_absorption(13.0f);
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(sum[c], both[c], 1e-5f * both[c]);
+TEST(Beverage, AbsorptionMatchesTheSpectrumAtTheReferencePath) {
+  // Each channel's Beer-Lambert coefficient gives exactly the spectrally integrated
+  // transmittance at kColourPathMetres; darker beers absorb more in every channel.
+  for (float srm : {2.0f, 4.0f, 13.0f, 40.0f}) {
+    const glm::vec3 t = through(srm_to_absorption(srm), float(kColourPathMetres));
+    const glm::dvec3 exact = channel_transmittance([srm](double nm) { return beer_absorbance(srm, nm); }, kColourPathMetres);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(t[c], exact[c], 1e-4 + 1e-4 * exact[c]) << srm << " " << c;
+  }
+  const glm::vec3 light = srm_to_absorption(4.0f), dark = srm_to_absorption(9.0f);
+  for (int c = 0; c < 3; ++c) EXPECT_LT(light[c], dark[c]);
   EXPECT_EQ(srm_to_absorption(0.0f), glm::vec3(0.0f));
+  EXPECT_EQ(wine_to_absorption(glm::vec3(0.0f)), glm::vec3(0.0f));
+}
+
+TEST(Beverage, AChannelSeesMoreThanOneWavelength) {
+  // A clear liquid passes everything; a liquid black only beyond 600 nm leaves green and
+  // blue nearly whole but takes most of red; one black only below 500 nm takes blue.
+  const glm::dvec3 clear = channel_transmittance([](double) { return 0.0; }, 0.05);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(clear[c], 1.0, 1e-12);
+  const glm::dvec3 no_red = channel_transmittance([](double nm) { return nm > 600 ? 50.0 : 0.0; }, 0.05);
+  EXPECT_LT(no_red.r, 0.6);
+  EXPECT_GT(no_red.r, 0.05);  // sRGB red also sees 560-600 nm
+  EXPECT_GT(no_red.g, 0.9);
+  EXPECT_NEAR(no_red.b, 1.0, 1e-6);
+  const glm::dvec3 no_blue = channel_transmittance([](double nm) { return nm < 500 ? 50.0 : 0.0; }, 0.05);
+  EXPECT_LT(no_blue.b, 0.2);
+  EXPECT_GT(no_blue.g, 0.7);
+  // A window only 650-700 nm wide (the far red a dark wine passes) is seen by red alone.
+  const glm::dvec3 far_red = channel_transmittance([](double nm) { return nm >= 650 && nm <= 700 ? 0.0 : 50.0; }, 0.05);
+  EXPECT_GT(far_red.r, 0.03);
+  EXPECT_GT(far_red.r, 30.0 * far_red.g);
+  EXPECT_LT(far_red.b, 1e-6);
 }
 
 TEST(Beverage, StoutIsNearOpaqueInThePintWithRubyEdges) {
@@ -74,8 +103,46 @@ TEST(Beverage, WineAbsorbanceMeetsItsThreePublishedPoints) {
   EXPECT_FLOAT_EQ(float(wine_absorbance(w, 520)), 5.2f);
   EXPECT_FLOAT_EQ(float(wine_absorbance(w, 620)), 1.3f);
   EXPECT_FLOAT_EQ(float(wine_absorbance(w, 470)), 4.35f);  // halfway, linearly
-  const glm::vec3 a = wine_to_absorption(w);
-  EXPECT_NEAR(a.g, absorbance_per_cm_to_absorption(wine_absorbance(w, kChannelWavelength[1])), 1e-3);
+  // Past 620 nm the band keeps falling, continuously and steeply: the far red gets through.
+  EXPECT_NEAR(wine_absorbance(w, 620.001), 1.3, 1e-3);
+  for (double nm = 620; nm < 730; nm += 10) EXPECT_LT(wine_absorbance(w, nm + 10), wine_absorbance(w, nm)) << nm;
+  EXPECT_LT(wine_absorbance(w, 700), 0.2 * 1.3);
+  EXPECT_GT(wine_absorbance(w, 700), 0.0);
+  // A wine that absorbs no less at 620 than at 520 is held flat.
+  EXPECT_FLOAT_EQ(float(wine_absorbance({1.0f, 0.5f, 0.5f}, 700)), 0.5f);
+}
+
+TEST(Beverage, ABordeauxIsRedThroughOneCentimetre) {
+  // A young Bordeaux-like red, absorbances of 1 cm (a 1 mm cell's reading x 10, as labs
+  // publish them): A420 3.3, A520 5.2, A620 1.5, colour intensity 10, hue 0.63. Through
+  // 1 cm, the spectrum integrated per channel: red passes several percent, green and blue
+  // hardly anything. (One wavelength per channel, read at 611 nm, passed 1.5 % red.)
+  const glm::vec3 bordeaux{3.3f, 5.2f, 1.5f};
+  const glm::dvec3 t = channel_transmittance([&](double nm) { return wine_absorbance(bordeaux, nm); }, 0.01);
+  EXPECT_GT(t.r, 0.03);
+  EXPECT_GT(t.r, 10.0 * t.g);
+  EXPECT_GT(t.r, 10.0 * t.b);
+  // The renderer's coefficients keep that order at 1 cm, and the glass's middle (5 cm) is
+  // near-black: deep garnet, not pure black where the wine is thin.
+  const glm::vec3 a = wine_to_absorption(bordeaux);
+  const glm::vec3 edge = through(a, 0.01f), middle = through(a, 0.05f);
+  EXPECT_GT(edge.r, 0.1f);
+  EXPECT_GT(edge.r, 1.3f * edge.g);
+  EXPECT_GT(edge.g, 10.0f * edge.b);
+  EXPECT_LT(std::max({middle.r, middle.g, middle.b}), 0.01f);
+}
+
+TEST(Beverage, TheLightRedIsRubyThroughItsGlass) {
+  // The red-wine preset (a light young red) across a wine bowl: red clearly passes through
+  // 5 cm where green and blue do not, and a thin edge (1 cm) is bright red.
+  const glm::vec3 a = liquid_absorption(drink("red-wine"));
+  const glm::vec3 bowl = through(a, 0.05f), edge = through(a, 0.01f);
+  EXPECT_GT(bowl.r, 0.03f);
+  EXPECT_GT(bowl.r, 20.0f * bowl.g);
+  EXPECT_GT(bowl.r, 20.0f * bowl.b);
+  EXPECT_GT(edge.r, 0.4f);
+  EXPECT_GT(edge.r, 2.0f * edge.g);
+  EXPECT_GT(edge.g, edge.b);
 }
 
 TEST(Beverage, ShippedWinesHavePublishedIntensityAndHue) {
