@@ -31,8 +31,10 @@ struct GlassParams {
 struct LiquidParams {
   float fill = 0.85f;  // fraction of the cavity volume
   float ior = 1.34f;
-  float srm = 4.0f;    // > 0: absorption derived from the beer colour (SRM); 0: use `absorption`
-  glm::vec3 absorption{1.0f, 4.0f, 20.0f};  // per metre
+  float srm = 4.0f;    // > 0: absorption derived from the beer colour (SRM); 0: use the next
+  float ebc = 0.0f;    // > 0: beer colour in EBC (1.97 x SRM), takes precedence over srm
+  glm::vec3 wine{0.0f};  // wine colour: absorbance of 1 cm at 420, 520, 620 nm (when srm and ebc are 0)
+  glm::vec3 absorption{1.0f, 4.0f, 20.0f};  // per metre, when no colour above is given
   float haze = 0.0f;                         // scattering per metre
   glm::vec3 haze_color{0.95f, 0.85f, 0.6f};  // single-scattering albedo
   float roughness = 0.02f;

@@ -45,6 +45,21 @@ Pose tipped_on_floor(const glm::dquat& q, double foot_radius) {
   return p;
 }
 
+double reach_below_origin(const glm::dquat& q, const Vessel& v) {
+  // A local point p is at world height dot(up, p) (plus the position), up being world up
+  // seen from the glass; a ring of radius r at height y reaches down to up.y y - r |up.xz|.
+  const glm::dvec3 up = glm::inverse(q) * glm::dvec3(0, 1, 0);
+  const double across = std::hypot(up.x, up.z);
+  double lowest = up.y * v.height - v.rim_major * across - v.rim_minor;
+  for (size_t k = 0; k < v.r_outer.size(); ++k) lowest = std::min(lowest, up.y * double(k) * v.dy - v.r_outer[k] * across);
+  return -lowest;
+}
+
+Pose resting_on_floor(Pose p, const Vessel& v) {
+  p.position.y = std::max(p.position.y, reach_below_origin(p.orientation, v));
+  return p;
+}
+
 MotionSample sanitize(const MotionSample& in, double max_rate, double max_accel) {
   MotionSample s = in;
   if (!std::isfinite(s.time)) s.time = 0;

@@ -3,6 +3,8 @@
 // reads only MotionSamples, so any driver can move the drink.
 #pragma once
 
+#include "core/vessel/vessel.hpp"
+
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -36,6 +38,15 @@ Pose tipped_on_floor(const glm::dquat& orientation, double foot_radius);
 
 // Finite, bounded motion: NaN/Inf components become 0 (identity for the orientation),
 // angular velocity is limited to max_rate rad/s and acceleration to max_accel m/s^2.
+// How far the lowest point of the glass lies below its own origin (the middle of the
+// foot) when it is turned by `orientation`: the lowest of the outer profile's rings (the
+// wall is straight between them) and of the rim bead.
+double reach_below_origin(const glm::dquat& orientation, const Vessel&);
+// The pose lifted just enough that no part of the glass is below the floor (y = 0): a
+// glass turned about the middle of its foot (the mouse, the gyro) comes to rest on the
+// edge of its foot; one held above the floor stays there.
+Pose resting_on_floor(Pose, const Vessel&);
+
 MotionSample sanitize(const MotionSample&, double max_rate = 60.0, double max_accel = 200.0);
 
 // The motion sample at time t of a smooth scripted path of poses (a timeline, a glass set

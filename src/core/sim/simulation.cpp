@@ -131,7 +131,8 @@ SloshEnvironment Simulation::environment(const glm::dvec3& accel, double dt) con
 }
 
 void Simulation::step(const MotionSample& raw, double drink_rate) {
-  const MotionSample m = sanitize(raw);
+  MotionSample m = sanitize(raw);
+  m.pose = resting_on_floor(m.pose, vessel_);  // whatever drives it, the glass does not sink into the floor
   const double dt = kStep;
   time_ += dt;
   // Acceleration of the liquid's middle: the glass's own plus what its rotation adds there.

@@ -1,6 +1,5 @@
 // Optics: Snell refraction, Fresnel reflectance, the GGX microfacet terms, and the
 // drink colour model.
-#include "core/liquid/beverage.hpp"
 #include "core/reference/optics.hpp"
 
 #include "test_common.hpp"
@@ -209,58 +208,6 @@ TEST(Ggx, SmithVisibilityMatchesLambdaForm) {
         const double v = g2 / (4 * nv * nl);
         EXPECT_NEAR(smith_visibility(nv, nl, rough), v, 1e-12 * v) << rough << " " << nv << " " << nl;
       }
-}
-
-// ----------------------------------------------------------------- colour --
-
-TEST(Beverage, SrmAbsorptionIsLinear) {
-  const glm::vec3 one = srm_to_absorption(1.0f);
-  EXPECT_EQ(srm_to_absorption(0.0f), glm::vec3(0.0f));
-  for (float srm : {0.5f, 2.0f, 4.0f, 13.0f, 40.0f, 100.0f}) {
-    const glm::vec3 a = srm_to_absorption(srm);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], srm * one[c], 1e-5f * srm * one[c]);
-  }
-  // Additive: SRM a + SRM b absorbs like both.
-  const glm::vec3 sum = srm_to_absorption(4.0f) + srm_to_absorption(9.0f), both = srm_to_absorption(13.0f);
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(sum[c], both[c], 1e-5f * both[c]);
-}
-
-TEST(Beverage, BlueIsAbsorbedMoreThanGreenMoreThanRed) {
-  for (float srm : {1.0f, 4.0f, 13.0f, 40.0f}) {
-    const glm::vec3 a = srm_to_absorption(srm);
-    EXPECT_GT(a.r, 0.0f);
-    EXPECT_GT(a.g, a.r);
-    EXPECT_GT(a.b, a.g);
-  }
-}
-
-TEST(Beverage, ZeroSrmUsesLiquidAbsorption) {
-  LiquidParams l = default_params().liquid;
-  l.absorption = {9.0f, 170.0f, 95.0f};
-  l.srm = 0.0f;
-  EXPECT_EQ(liquid_absorption(l), glm::vec3(9.0f, 170.0f, 95.0f));
-  l.srm = 4.0f;
-  EXPECT_EQ(liquid_absorption(l), srm_to_absorption(4.0f));
-  EXPECT_NE(liquid_absorption(l), l.absorption);
-}
-
-TEST(Beverage, ShippedDrinksHaveSensibleAbsorption) {
-  // Lager (3.5 SRM) is paler than amber ale (13) which is paler than stout (40) in
-  // every channel; wine presets use their explicit absorption.
-  auto drink = [](const char* name) {
-    Params p = default_params();
-    apply_preset(load_preset(test::preset_source_dir() / "drinks" / (std::string(name) + ".json")), p);
-    return p.liquid;
-  };
-  const glm::vec3 lager = liquid_absorption(drink("lager")), ale = liquid_absorption(drink("amber-ale")),
-                  stout = liquid_absorption(drink("stout"));
-  for (int c = 0; c < 3; ++c) {
-    EXPECT_LT(lager[c], ale[c]);
-    EXPECT_LT(ale[c], stout[c]);
-  }
-  const LiquidParams red = drink("red-wine");
-  EXPECT_EQ(red.srm, 0.0f);
-  EXPECT_EQ(liquid_absorption(red), red.absorption);
 }
 
 }  // namespace
