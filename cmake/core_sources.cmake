@@ -18,6 +18,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/foam/head_volume.cpp
   src/core/environment/reflection.cpp
   src/core/environment/studio.cpp
+  src/core/environment/environment_map.cpp
   src/core/bubbles/bubbles.cpp
   src/core/bubbles/bubble_view.cpp
   src/core/reference/intersect.cpp
@@ -26,6 +27,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/sim/simulation.cpp
   src/core/sim/scene_simulation.cpp
   src/core/io/image.cpp
+  src/core/io/hdr_image.cpp
   src/core/io/files.cpp
   src/core/io/temporaries.cpp
   src/core/text/echo.cpp

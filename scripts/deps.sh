@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   g++ cmake make pkg-config
-  libglm-dev nlohmann-json3-dev libstb-dev libcli11-dev
+  libglm-dev nlohmann-json3-dev libstb-dev libtinyexr-dev libcli11-dev
   libgtest-dev libbenchmark-dev
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   libsdl2-dev ffmpeg

@@ -29,15 +29,17 @@ cmake --build build-fuzz -j"$(nproc)" >/dev/null
 declare -A seeds=(
   [preset]="presets/glasses presets/drinks presets/scenes"
   [timeline]="presets/timelines"
+  [hdr_image]="fuzz/seeds/hdr_image fuzz/regressions/hdr_image"
 )
+declare -A dicts=([preset]=fuzz/json.dict [timeline]=fuzz/json.dict [hdr_image]=fuzz/hdr.dict)
 status=0
-for target in preset timeline; do
+for target in preset timeline hdr_image; do
   corpus="build-fuzz/corpus/$target"
   mkdir -p "$corpus" build-fuzz/findings
   log="build-fuzz/fuzz_$target.log"
   # Findings and timeouts exit 1 (libFuzzer's default 77 would read as "skipped").
   # shellcheck disable=SC2086
-  if ./build-fuzz/fuzz_$target "$corpus" ${seeds[$target]} -dict=fuzz/json.dict -max_total_time="$seconds" \
+  if ./build-fuzz/fuzz_$target "$corpus" ${seeds[$target]} -dict="${dicts[$target]}" -max_total_time="$seconds" \
       -max_len=16384 -timeout=10 -rss_limit_mb=2048 -error_exitcode=1 -timeout_exitcode=1 -print_final_stats=1 \
       -artifact_prefix="build-fuzz/findings/$target-" >"$log" 2>&1; then
     runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")

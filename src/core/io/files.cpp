@@ -38,8 +38,10 @@ struct Fd {
 
 }  // namespace
 
-std::string read_text_file(const std::filesystem::path& path) {
-  const std::string limit = "the limit of " + std::to_string(kMaxTextFileBytes >> 20) + " MiB for a text input";
+std::string read_text_file(const std::filesystem::path& path) { return read_whole_file(path, kMaxTextFileBytes, "a text input"); }
+
+std::string read_whole_file(const std::filesystem::path& path, std::uintmax_t max_bytes, const std::string& what) {
+  const std::string limit = "the limit of " + std::to_string(max_bytes >> 20) + " MiB for " + what;
   // O_NONBLOCK: opening a FIFO must not wait for a writer before we can refuse it.
   Fd f{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
   if (f.fd < 0) throw InputError(path.string() + ": cannot open file: " + std::strerror(errno));
@@ -47,15 +49,15 @@ std::string read_text_file(const std::filesystem::path& path) {
   if (::fstat(f.fd, &st) != 0) throw InputError(path.string() + ": cannot read: " + std::strerror(errno));
   if (!S_ISREG(st.st_mode))
     throw InputError(path.string() + ": is " + kind_of(st.st_mode) + ", expected a regular file");
-  if (std::uintmax_t(st.st_size) > kMaxTextFileBytes)
+  if (std::uintmax_t(st.st_size) > max_bytes)
     throw InputError(path.string() + ": " + mib(std::uintmax_t(st.st_size)) + ", larger than " + limit);
   std::string text;
   text.resize(std::size_t(st.st_size));
   std::size_t have = 0;
   for (;;) {  // to the end, which may differ from st_size (a growing file, /proc)
     if (have == text.size()) {
-      if (have > kMaxTextFileBytes) throw InputError(path.string() + ": larger than " + limit);
-      text.resize(std::max<std::size_t>(4096, std::min<std::size_t>(2 * have, kMaxTextFileBytes + 1)));
+      if (have > max_bytes) throw InputError(path.string() + ": larger than " + limit);
+      text.resize(std::max<std::size_t>(4096, std::min<std::size_t>(2 * have, max_bytes + 1)));
     }
     const ssize_t n = ::read(f.fd, text.data() + have, text.size() - have);
     if (n < 0 && errno == EINTR) continue;

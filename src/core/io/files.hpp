@@ -23,6 +23,14 @@ inline constexpr std::uintmax_t kMaxTextFileBytes = 16u << 20;
 // with an InputError naming the file, before a byte is read.
 std::string read_text_file(const std::filesystem::path&);
 
+// The same for any input with its own limit (images: kMaxImageFileBytes); `what` names
+// the kind of input in the error ("an image").
+std::string read_whole_file(const std::filesystem::path&, std::uintmax_t max_bytes, const std::string& what);
+
+// The largest image file read (HDR environments): an uncompressed 8192 x 4096 RGBA
+// float EXR is 512 MiB.
+inline constexpr std::uintmax_t kMaxImageFileBytes = 600u << 20;
+
 // Where a write to `path` lands: `path` itself, or, when it is a symbolic link, the file
 // the chain of links ends at (created if missing). Writes follow links, like a shell's
 // `>`: the link stays a link, and its target gets the new content.
