@@ -19,6 +19,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/environment/reflection.cpp
   src/core/environment/studio.cpp
   src/core/environment/environment_map.cpp
+  src/core/environment/environment_bake.cpp
   src/core/bubbles/bubbles.cpp
   src/core/bubbles/bubble_view.cpp
   src/core/reference/intersect.cpp

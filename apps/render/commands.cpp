@@ -4,7 +4,9 @@
 #include "names.hpp"
 #include "output.hpp"
 
+#include "core/environment/environment_bake.hpp"
 #include "core/io/files.hpp"
+#include "core/io/hdr_image.hpp"
 #include "core/params/json_input.hpp"
 #include "core/text/echo.hpp"
 #include "core/scene/frame.hpp"
@@ -213,6 +215,13 @@ int validate(const std::vector<std::string>& files) {
     }
   }
   return bad ? 1 : 0;
+}
+
+int bake_environment(const std::string& name, int width, const std::string& output) {
+  const HdrImage img = draught::bake_environment(name, default_params(), width);
+  write_radiance_hdr(output, img);
+  std::printf("wrote %s (%d x %d, %s)\n", output.c_str(), img.width, img.height, name.c_str());
+  return 0;
 }
 
 int print_params(bool markdown) {

@@ -40,6 +40,8 @@ int animate(const RenderRequest&, const AnimateRequest&);
 int list_presets();
 int validate(const std::vector<std::string>& files);
 int print_params(bool markdown);
+// Writes environment `name` (studio, bar) as a `width` x width/2 Radiance .hdr.
+int bake_environment(const std::string& name, int width, const std::string& output);
 // `only`: scene names to run (empty: all).
 int bench(int frames, const std::vector<int>& sizes, const std::vector<std::string>& only, bool verbose);
 

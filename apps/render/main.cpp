@@ -66,6 +66,14 @@ int main(int argc, char** argv) {
   bool markdown = false;
   auto* params = app.add_subcommand("params", "Print the parameter table (path, type, default, range, unit, doc)");
   params->add_flag("--markdown", markdown, "As a Markdown table");
+  auto* environment = app.add_subcommand("environment", "Environments draught makes itself");
+  auto* bake = environment->add_subcommand("bake", "Write an environment as an equirectangular Radiance .hdr");
+  std::string env_name, env_width = "1024", env_output;
+  bake->add_option("name", env_name, "studio (the procedural studio with its key softbox) or bar (a warm bar at night)")
+      ->required();
+  bake->add_option("--width", env_width, "Width in pixels, even, 8-8192 (the height is half)")->capture_default_str();
+  bake->add_option("-o,--output", env_output, "The .hdr file to write")->required();
+  environment->require_subcommand(1);
   std::string frames = "20", sizes = "256,512";
   auto* bench = app.add_subcommand("bench", "Render fixed scenes for N frames and print median frame times");
   bench->add_option("-n,--frames", frames, "Frames per scene and size (1-10000)")->capture_default_str();
@@ -127,6 +135,7 @@ int main(int argc, char** argv) {
     if (*presets) return cli::list_presets();
     if (*validate) return cli::validate(files);
     if (*params) return cli::print_params(markdown);
+    if (*bake) return cli::bake_environment(env_name, cli::integer_flag("--width", env_width, 8, 8192), env_output);
     if (*bench) {
       cli::check_device_environment();
       return cli::bench(cli::integer_flag("--frames", frames, 1, 10000),

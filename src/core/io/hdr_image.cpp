@@ -4,6 +4,7 @@
 #include "core/text/echo.hpp"
 
 #include <stb_image.h>
+#include <stb_image_write.h>
 #ifndef DRAUGHT_HAS_EXR  // set by the native build, which links Debian's tinyexr
 #define DRAUGHT_HAS_EXR 0
 #endif
@@ -277,6 +278,22 @@ HdrImage decode_hdr_image(std::string_view bytes, const std::string& name, HdrDe
 
 HdrImage read_hdr_image(const std::filesystem::path& path, HdrDecodeReport* report) {
   return decode_hdr_image(read_whole_file(path, kMaxImageFileBytes, "an image"), path.string(), report);
+}
+
+std::string encode_radiance_hdr(const HdrImage& img) {
+  std::string out;
+  auto sink = [](void* ctx, void* data, int size) {
+    static_cast<std::string*>(ctx)->append(static_cast<const char*>(data), size_t(size));
+  };
+  std::vector<float> px(img.rgb.size() * 3);
+  for (size_t i = 0; i < img.rgb.size(); ++i)
+    for (int c = 0; c < 3; ++c) px[i * 3 + size_t(c)] = img.rgb[i][c];
+  stbi_write_hdr_to_func(sink, &out, img.width, img.height, 3, px.data());
+  return out;
+}
+
+void write_radiance_hdr(const std::filesystem::path& path, const HdrImage& img) {
+  write_file_atomic(path, encode_radiance_hdr(img));
 }
 
 }  // namespace draught

@@ -34,6 +34,11 @@ struct HdrDecodeReport {
 HdrImage decode_hdr_image(std::string_view bytes, const std::string& name, HdrDecodeReport* report = nullptr);
 HdrImage read_hdr_image(const std::filesystem::path&, HdrDecodeReport* report = nullptr);
 
+// The Radiance .hdr bytes of an image (RLE RGBE, as stb_image_write makes them), and
+// the file written atomically.
+std::string encode_radiance_hdr(const HdrImage&);
+void write_radiance_hdr(const std::filesystem::path&, const HdrImage&);
+
 // Whether this build reads OpenEXR (the web build does not: no zlib there).
 bool hdr_image_reads_exr();
 
