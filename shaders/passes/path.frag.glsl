@@ -102,7 +102,7 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
     if (h.m == M_GLASS_INNER && !below) {  // lacing on the wall
       ObjectFoam f = fetch_object_foam(v.row);
       float cover = lacing_cover(v, f, pl);
-      path.radiance += path.thr * cover * foam_light(v, f, to_local_dir(v, path.d), to_local_dir(v, frame.light_dir), 0.001, 0.0);
+      path.radiance += path.thr * cover * lacing_light(v, f, to_local_dir(v, path.d), to_local_dir(v, frame.light_dir));
       path.thr *= 1.0 - cover;
     }
 #endif

@@ -1,8 +1,8 @@
 // The foam head of a vessel: a volume on the liquid surface up to the head's top (where
 // core/foam puts it), marched only along the stretch of a ray inside it. Beer's-law
-// opacity per step, Henyey-Greenstein single scattering of the key light plus
-// multi-scatter terms at halved optical depth, self-shadowing from the distance light
-// travels through the head (no shadow rays), micro-bubble detail from value noise, big
+// opacity per step, light derived from single scattering of the key and the diffusion
+// approximation between the head's faces (head_source; no shadow rays), micro-bubble
+// detail from value noise, big
 // bubbles (placed by core: VesselFrame::big_bubbles) as voids with a denser ring around
 // them, and lacing rings left on the glass. All in the vessel's frame.
 #ifndef LIB_FOAM_HEAD_GLSL
@@ -65,22 +65,68 @@ float hg_phase(float c, float g) {
   return (1.0 - g2) / (4.0 * PI * pow(max(1.0 + g2 - 2.0 * g * c, 1e-4), 1.5));
 }
 
-// Light scattered towards -d at p (per unit scattering), self-shadowed analytically by
-// the foam between p and the outside: through the head's top (depth below it) or
-// through the glass wall beside it (side), whichever is shorter. d, l local.
-vec3 foam_light(Vessel v, ObjectFoam f, vec3 d, vec3 l, float depth, float side) {
-  vec3 n = v.liquid.plane_normal;
-  float sin_l = length(l - n * dot(n, l));
-  float tau_l = f.density * min(depth / max(dot(n, l), 0.15), side / max(sin_l, 0.15));
-  float tau_a = f.density * min(depth, side);
-  float c = dot(l, d), g = f.anisotropy, w = f.multiscatter;
-  // Multiple scattering: two more terms, each with half the weight and anisotropy and a
-  // much smaller optical depth. Foam's bubble films barely absorb, so light diffuses
-  // centimetres into a head that is opaque to a straight ray (tau ~ 20).
-  float key = hg_phase(c, g) * exp(-tau_l);
-  key += w * (0.5 * hg_phase(c, 0.5 * g) * exp(-0.08 * tau_l) + 0.25 * hg_phase(c, 0.25 * g) * exp(-0.02 * tau_l)) * 4.0;
-  float sky = exp(-tau_a) + w * (0.5 * exp(-0.08 * tau_a) + 0.25 * exp(-0.02 * tau_a)) * 2.0;
-  return f.foam_color * (frame.light_color * frame.light_intensity * key + ambient_light() * sky) * 1.25;
+// The light a head receives, per march. Its lighting is derived, not tuned
+// (docs/REFERENCE.md, "The head in the picture"): the key's unscattered light scattered
+// once (Henyey-Greenstein), plus the diffusion approximation's field between the head's
+// three faces: the top (the sky and the key), the side against the glass (the studio and
+// the key through the wall) and the underside (light from below through the drink, which
+// tints it). A white head in even light is then exactly as bright as that light.
+struct HeadLight {
+  vec3 albedo;  // single-scattering albedo (core derives it from foam.color)
+  vec3 kappa;   // diffusion's decay per optical depth: sqrt(3 (1 - a)(1 - a g))
+  float zb;     // the extrapolated boundary beyond each face, in optical depths: 2 / (3 (1 - g))
+  vec3 sky;     // diffuse light arriving on the top and the side
+  vec3 below;   // and on the underside, through the drink
+  vec3 key;     // the key light's irradiance
+  float wall;   // the part of the key the glass wall lets through (two faces, Fresnel at normal incidence)
+};
+
+HeadLight head_light(Vessel v, ObjectFoam f) {
+  HeadLight h;
+  h.albedo = f.foam_color;
+  h.kappa = sqrt(3.0 * max(1.0 - h.albedo, 0.0) * (1.0 - h.albedo * f.anisotropy));
+  h.zb = 2.0 / (3.0 * (1.0 - f.anisotropy));
+  h.sky = ambient_light();
+  h.below = h.sky * exp(-v.body.absorption * f.under_chord);
+  h.key = frame.light_color * frame.light_intensity;
+  float ior = fetch_object_glass(v.row).glass_ior, f0 = (ior - 1.0) / (ior + 1.0);
+  h.wall = (1.0 - f0 * f0) * (1.0 - f0 * f0);
+  return h;
+}
+
+// Light scattered towards -d at p per unit extinction (albedo included): `height` is p's
+// height above the liquid, `top` the head's thickness there; d, l local. Optical depths
+// to the faces are those of the mean density.
+vec3 head_source(Vessel v, ObjectFoam f, HeadLight h, vec3 d, vec3 l, vec3 p, float height, float top) {
+  // The top is the head's (its soft ramp integrated) or the rim's where a dome stands
+  // above the glass; the side the wall's or a cross-section's cut, whichever is nearer.
+  float ramp = 0.12 * top, depth = max(top - height, 0.0);
+  float tau_t = f.density * min(depth > ramp ? depth - 0.5 * ramp : depth * depth / (2.0 * ramp), max(v.body.height - p.y, 0.0));
+  float tau_b = f.density * max(height, 0.0);
+  float r = length(p.xz);
+  float tau_s = f.density * max(min(inner_radius(v, p.y) - r, v.shape.clip_offset - dot(v.shape.clip_normal, p)), 0.0);
+  float cos_t = dot(v.liquid.plane_normal, l), cos_s = r > 1e-6 ? dot(p.xz, l.xz) / r : 0.0;
+  // The key's unscattered light, through the top or through the wall beside p.
+  float direct = max(cos_t > 0.0 ? exp(-tau_t / cos_t) : 0.0, cos_s > 0.0 ? h.wall * exp(-tau_s / cos_s) : 0.0);
+  vec3 single = h.key * hg_phase(dot(l, d), f.anisotropy) * direct;
+  // Diffusion between the faces: each face's incoming radiance (the key's irradiance
+  // counted as a diffuse pi L), weighted by inverse distance to its extrapolated
+  // boundary (exact for two parallel faces), decaying as exp(-kappa tau) with the
+  // semi-infinite medium's Marshak factor 1 / (1 + kappa zb).
+  vec3 top_in = h.sky + h.key * max(cos_t, 0.0) / PI;
+  vec3 side_in = h.sky + h.key * h.wall * max(cos_s, 0.0) / PI;
+  float wt = 1.0 / (tau_t + h.zb), wb = 1.0 / (tau_b + h.zb), ws = 1.0 / (tau_s + h.zb);
+  vec3 diffuse = (wt * exp(-h.kappa * tau_t) * top_in + wb * exp(-h.kappa * tau_b) * h.below +
+                  ws * exp(-h.kappa * tau_s) * side_in) /
+                 ((wt + wb + ws) * (1.0 + h.kappa * h.zb));
+  return h.albedo * (single + diffuse);
+}
+
+// The light a thin film of foam on the wall (lacing) scatters towards -d: a head's side
+// face, lit straight.
+vec3 lacing_light(Vessel v, ObjectFoam f, vec3 d, vec3 l) {
+  HeadLight h = head_light(v, f);
+  return h.albedo * (h.key * hg_phase(dot(l, d), f.anisotropy) + h.sky);
 }
 
 // The part of [t0, t1] along o + t d (local) where the head (or a big bubble's cap) can
@@ -114,6 +160,7 @@ void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec3
   int steps = int(clamp(len * f.density * 0.5, 6.0, 40.0));
   float dt = len / float(steps);
   float t = t0 + dt * march_jitter();
+  HeadLight h = head_light(v, f);
   for (int i = 0; i < 40; ++i) {
     if (i >= steps) break;
     ++g_foam_steps;
@@ -122,10 +169,7 @@ void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec3
     float sigma = foam_density(v, f, p, height, top);
     if (sigma > 0.0) {
       float trans = exp(-sigma * dt);
-      float side = max(inner_radius(v, p.y) - length(p.xz), 0.0);
-      // Wetter, creamier foam low in the head: a little darker than its top.
-      float wet = mix(0.72, 1.0, clamp(height / top, 0.0, 1.0));
-      radiance += thr * wet * foam_light(v, f, d, l, max(top - height, 0.0), side) * (1.0 - trans);
+      radiance += thr * head_source(v, f, h, d, l, p, height, top) * (1.0 - trans);
       thr *= trans;
       if (max(thr.r, max(thr.g, thr.b)) < 1e-3) {
         thr = vec3(0.0);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace draught {
 
@@ -37,6 +38,14 @@ glm::dvec3 foam_single_scattering_albedo(const glm::dvec3& reflectance, double g
     out[c] = (1 - s2) / (1 - s2 * g);
   }
   return out;
+}
+
+double drink_mean_chord(const VesselFrame& vf) {
+  if (!vf.has_liquid || vf.liquid_fraction <= 0) return 0;
+  const double volume = vf.liquid_fraction * vf.vessel.cavity_volume();
+  const double depth = std::max(vf.vessel.fill_height(vf.liquid_fraction) - vf.vessel.base, 1e-6);
+  const double r = std::sqrt(volume / (std::numbers::pi * depth));
+  return 2 * r * depth / (r + depth);  // 4 pi r^2 h / (2 pi r^2 + 2 pi r h)
 }
 
 HeadVolume::HeadVolume(const VesselFrame& vf, const VesselGeometry& geometry) {
