@@ -146,7 +146,10 @@ INSTANTIATE_TEST_SUITE_P(
     Scenes, ReferenceComparison,
     // Today (llvmpipe, 64x64, 256 paths per pixel): glass 1.6 / 4.8, liquid 4.8 / 8.8,
     // head 4.4 / 10.0 (mean / 90th percentile).
-    ::testing::Values(ComparisonCase{"lager-pint", SceneRequest{"lager", "pint"}, 64, 256, {2.5, 7}, {6, 11}, {6, 13}}),
+    ::testing::Values(ComparisonCase{"lager-pint", SceneRequest{"lager", "pint"}, 64, 256, {2.5, 7}, {6, 11}, {6, 13}},
+                      // The heads close up (only the head is checked here).
+                      ComparisonCase{"lager-head", SceneRequest{"lager", "pint", {}, {"eye=0,0.17,0.2", "target=0,0.14,0", "vfov=25"}}, 64, 256, {0, 0}, {0, 0}, {60, 60}},
+                      ComparisonCase{"stout-head", SceneRequest{"stout", "nonic", {}, {"eye=0,0.2,0.3", "target=0,0.14,0", "vfov=22"}}, 64, 256, {0, 0}, {0, 0}, {60, 60}}),
     [](const ::testing::TestParamInfo<ComparisonCase>& i) {
       std::string s = i.param.name;
       std::replace(s.begin(), s.end(), '-', '_');

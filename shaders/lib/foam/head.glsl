@@ -94,6 +94,22 @@ HeadLight head_light(Vessel v, ObjectFoam f) {
   return h;
 }
 
+// The diffusion approximation's field (decay kappa per optical depth) in a head with
+// faces at extrapolated distances u (optical depths; e = exp(kappa u)), each face held at
+// its incoming radiance. Between two parallel faces the share of face i is exactly
+//   sinh(kappa u_j) / sinh(kappa (u_i + u_j)) = 1 / (cosh(kappa u_i) + sinh(kappa u_i) coth(kappa u_j)),
+// generalised to more faces by summing their pulls kappa (coth(kappa u_j) - 1): a lone
+// face gives exp(-kappa u) (the semi-infinite medium, whose Marshak boundary is the
+// exp(-kappa zb) at the face), and with kappa = 0 the shares are inverse-distance
+// weights that sum to 1 (a white head in even light returns that light).
+vec3 face_pull(vec3 kappa, float u, vec3 e) {
+  return mix(2.0 * kappa / max(e * e - 1.0, 1e-30), vec3(1.0 / u) - kappa, lessThan(kappa * u, vec3(5e-4)));
+}
+vec3 face_share(vec3 kappa, float u, vec3 e, vec3 others) {
+  vec3 sinh_k = mix(0.5 * (e - 1.0 / e) / max(kappa, 1e-30), vec3(u), lessThan(kappa * u, vec3(5e-4)));  // sinh(kappa u) / kappa
+  return 1.0 / (0.5 * (e + 1.0 / e) + sinh_k * (kappa + others));
+}
+
 // Light scattered towards -d at p per unit extinction (albedo included): `height` is p's
 // height above the liquid, `top` the head's thickness there; d, l local. Optical depths
 // to the faces are those of the mean density.
@@ -110,15 +126,15 @@ vec3 head_source(Vessel v, ObjectFoam f, HeadLight h, vec3 d, vec3 l, vec3 p, fl
   float direct = max(cos_t > 0.0 ? exp(-tau_t / cos_t) : 0.0, cos_s > 0.0 ? h.wall * exp(-tau_s / cos_s) : 0.0);
   vec3 single = h.key * hg_phase(dot(l, d), f.anisotropy) * direct;
   // Diffusion between the faces: each face's incoming radiance (the key's irradiance
-  // counted as a diffuse pi L), weighted by inverse distance to its extrapolated
-  // boundary (exact for two parallel faces), decaying as exp(-kappa tau) with the
-  // semi-infinite medium's Marshak factor 1 / (1 + kappa zb).
+  // counted as a diffuse pi L) held at its extrapolated boundary, the field the sum of
+  // each face's share (face_share).
   vec3 top_in = h.sky + h.key * max(cos_t, 0.0) / PI;
   vec3 side_in = h.sky + h.key * h.wall * max(cos_s, 0.0) / PI;
-  float wt = 1.0 / (tau_t + h.zb), wb = 1.0 / (tau_b + h.zb), ws = 1.0 / (tau_s + h.zb);
-  vec3 diffuse = (wt * exp(-h.kappa * tau_t) * top_in + wb * exp(-h.kappa * tau_b) * h.below +
-                  ws * exp(-h.kappa * tau_s) * side_in) /
-                 ((wt + wb + ws) * (1.0 + h.kappa * h.zb));
+  float ut = tau_t + h.zb, ub = tau_b + h.zb, us = tau_s + h.zb;
+  vec3 et = exp(min(h.kappa * ut, 60.0)), eb = exp(min(h.kappa * ub, 60.0)), es = exp(min(h.kappa * us, 60.0));
+  vec3 pt = face_pull(h.kappa, ut, et), pb = face_pull(h.kappa, ub, eb), ps = face_pull(h.kappa, us, es);
+  vec3 diffuse = face_share(h.kappa, ut, et, pb + ps) * top_in + face_share(h.kappa, ub, eb, pt + ps) * h.below +
+                 face_share(h.kappa, us, es, pt + pb) * side_in;
   return h.albedo * (single + diffuse);
 }
 
