@@ -42,14 +42,23 @@ float foam_thickness_at(Vessel v, ObjectFoam f, vec2 xz) {
   return f.thickness * max(1.0 + f.dome * (1.0 - 2.0 * u2), 0.1);
 }
 
-// Extinction at p; `height` is p's height above the liquid, `top` the head's thickness there.
+// Bubbles are bigger low in the head (they coarsen as liquid drains out of it): at the
+// liquid 1 + FOAM_GROWTH times their size at the top. A foam's extinction goes as its
+// bubbles' surface per volume, 1 / size, so the wet foam low in the head is the more
+// translucent: the head fades into the drink. Its top is soft over FOAM_SOFT_TOP of its
+// thickness. (As core/foam/head_volume.cpp.)
+const float FOAM_GROWTH = 1.5;
+const float FOAM_SOFT_TOP = 0.12;
+float foam_growth(float height, float top) { return 1.0 + FOAM_GROWTH * (1.0 - height / top); }
+
+// Extinction at p; `height` is p's height above the liquid, `top` the head's thickness
+// there. The twin of core/foam/head_volume.cpp HeadVolume::density.
 float foam_density(Vessel v, ObjectFoam f, vec3 p, float height, float top) {
   if (height < 0.0 || height > top || p.y > v.body.height || length(p.xz) > inner_radius(v, p.y) || clipped(v, p))
     return 0.0;
-  // Bubbles are bigger low in the head (they coarsen as liquid drains out of it).
-  float scale = f.bubble_size * (1.0 + 1.5 * (1.0 - height / top));
-  float d = f.density * max(1.0 + 1.6 * f.detail * (value_noise(p / scale) - 0.5), 0.0);
-  d *= clamp((top - height) / (0.12 * top), 0.0, 1.0);  // a soft top, a crisp underside
+  float grow = foam_growth(height, top);
+  float d = f.density / grow * max(1.0 + 1.6 * f.detail * (value_noise(p / (f.bubble_size * grow)) - 0.5), 0.0);
+  d *= clamp((top - height) / (FOAM_SOFT_TOP * top), 0.0, 1.0);
   for (int i = 0; i < f.big_bubble_count; ++i) {
     BigBubble b = big_bubble(v, i);
     float r = b.radius, dist = length(p - b.centre);
@@ -116,11 +125,15 @@ vec3 face_share(vec3 kappa, float u, vec3 e, vec3 others) {
 vec3 head_source(Vessel v, ObjectFoam f, HeadLight h, vec3 d, vec3 l, vec3 p, float height, float top) {
   // The top is the head's (its soft ramp integrated) or the rim's where a dome stands
   // above the glass; the side the wall's or a cross-section's cut, whichever is nearer.
-  float ramp = 0.12 * top, depth = max(top - height, 0.0);
-  float tau_t = f.density * min(depth > ramp ? depth - 0.5 * ramp : depth * depth / (2.0 * ramp), max(v.body.height - p.y, 0.0));
-  float tau_b = f.density * max(height, 0.0);
+  // (The integrals of foam_density's 1 / growth over height; the soft top taken as if
+  // the bubbles did not grow within it.)
+  float ramp = FOAM_SOFT_TOP * top, depth = max(top - height, 0.0), grow = foam_growth(height, top);
+  float to_top = depth > ramp ? top / FOAM_GROWTH * log(grow / (1.0 + FOAM_GROWTH * FOAM_SOFT_TOP)) + 0.5 * ramp
+                              : depth * depth / (2.0 * ramp);
+  float tau_t = f.density * min(to_top, max(v.body.height - p.y, 0.0));
+  float tau_b = f.density * top / FOAM_GROWTH * log((1.0 + FOAM_GROWTH) / grow);
   float r = length(p.xz);
-  float tau_s = f.density * max(min(inner_radius(v, p.y) - r, v.shape.clip_offset - dot(v.shape.clip_normal, p)), 0.0);
+  float tau_s = f.density / grow * max(min(inner_radius(v, p.y) - r, v.shape.clip_offset - dot(v.shape.clip_normal, p)), 0.0);
   float cos_t = dot(v.liquid.plane_normal, l), cos_s = r > 1e-6 ? dot(p.xz, l.xz) / r : 0.0;
   // The key's unscattered light, through the top or through the wall beside p.
   float direct = max(cos_t > 0.0 ? exp(-tau_t / cos_t) : 0.0, cos_s > 0.0 ? h.wall * exp(-tau_s / cos_s) : 0.0);
@@ -172,8 +185,10 @@ bool foam_interval(Vessel v, ObjectFoam f, vec3 o, vec3 d, inout float t0, inout
 // foam_interval). Adds the light it scatters to `radiance` and attenuates `thr`.
 void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec3 l, inout vec3 radiance,
                 inout vec3 thr) {
+  // Steps of at most 0.7 optical depths of the top's density (a thick head stops the
+  // march within about ten), at least 6 and at most 40 over the stretch.
   float len = t1 - t0;
-  int steps = int(clamp(len * f.density * 0.5, 6.0, 40.0));
+  int steps = int(clamp(ceil(len * f.density / 0.7), 6.0, 40.0));
   float dt = len / float(steps);
   float t = t0 + dt * march_jitter();
   HeadLight h = head_light(v, f);
