@@ -237,6 +237,45 @@ void bubble_caps(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec
   }
 }
 
+// The borders of a Voronoi network of unit cells at q (1 on a border, fading out over a
+// fifth of a cell and `px` cells more; 0 inside a cell).
+float cell_border(vec2 q, float px) {
+  vec2 i = floor(q), fq = q - i;
+  float d1 = 8.0, d2 = 8.0;
+  for (int y = -1; y <= 1; ++y)
+    for (int x = -1; x <= 1; ++x) {
+      vec2 o = vec2(float(x), float(y));
+      vec2 r = o + hash22_cell(ivec2(i + o)) - fq;
+      float d = dot(r, r);
+      d2 = d < d1 ? d1 : min(d2, d);
+      d1 = min(d1, d);
+    }
+  return (1.0 - smoothstep(0.0, 0.2 + px, sqrt(d2) - sqrt(d1))) * (1.0 - smoothstep(0.25, 0.5, px));
+}
+
+// The bubbles the head presses against the glass: Voronoi cells on the inner wall at the
+// head's bubble size, the fine cells of its top giving way to the coarse ones at the
+// liquid (1 + FOAM_GROWTH times larger; two networks blended by height, as one network
+// whose cells grew would shear), whose borders are Plateau channels of the drink. The
+// channels run down through the head into the drink and guide light along them: a
+// border shows light that has crossed the drink in its channel from the liquid up to
+// this height, so it takes the drink's tint over that length (a golden network in a
+// lager's head, a brown one in a stout's). It only absorbs: a head on a clear drink in
+// the furnace is unchanged. The factor returned multiplies the path's throughput (1 off
+// the borders and above the head). An appearance term of the contact with the glass,
+// not part of the medium: the reference does not simulate it (as lacing). p local, on
+// the inner wall; `footprint` the pixel's width there (m): cells under a few pixels fade
+// out rather than alias.
+vec3 head_wall_cells(Vessel v, ObjectFoam f, vec3 p, float footprint) {
+  float height = level_over(v.liquid, p), top = foam_thickness_at(v, f, p.xz);
+  if (height < 0.0 || height > top || p.y > v.body.height) return vec3(1.0);
+  vec2 wall = vec2(atan(p.z, p.x) * length(p.xz), p.y);  // arc length and height (m)
+  float fine = f.bubble_size, coarse = f.bubble_size * (1.0 + FOAM_GROWTH), low = 1.0 - height / top;
+  float border = mix(cell_border(wall / fine, footprint / fine), cell_border(wall / coarse + 17.0, footprint / coarse), low);
+  border *= clamp((top - height) / (FOAM_SOFT_TOP * top), 0.0, 1.0);  // the head's soft top
+  return mix(vec3(1.0), exp(-v.body.absorption * height), border);
+}
+
 // Lacing: thin foam left on the inner wall where the head's top used to be (p local).
 float lacing_cover(Vessel v, ObjectFoam f, vec3 p) {
   float cover = 0.0;
