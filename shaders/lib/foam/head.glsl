@@ -185,10 +185,10 @@ bool foam_interval(Vessel v, ObjectFoam f, vec3 o, vec3 d, inout float t0, inout
 // foam_interval). Adds the light it scatters to `radiance` and attenuates `thr`.
 void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec3 l, inout vec3 radiance,
                 inout vec3 thr) {
-  // Steps of at most 0.7 optical depths of the top's density (a thick head stops the
+  // Steps of at most one optical depth of the top's density (a thick head stops the
   // march within about ten), at least 6 and at most 40 over the stretch.
   float len = t1 - t0;
-  int steps = int(clamp(ceil(len * f.density / 0.7), 6.0, 40.0));
+  int steps = int(clamp(ceil(len * f.density), 6.0, 40.0));
   float dt = len / float(steps);
   float t = t0 + dt * march_jitter();
   HeadLight h = head_light(v, f);
