@@ -102,8 +102,10 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
     if (h.m == M_GLASS_INNER && !below) {  // lacing on the wall
       ObjectFoam f = fetch_object_foam(v.row);
       float cover = lacing_cover(v, f, pl);
-      path.radiance += path.thr * cover * foam_light(v, f, to_local_dir(v, path.d), to_local_dir(v, frame.light_dir), 0.001, 0.0);
-      path.thr *= 1.0 - cover;
+      path.radiance += path.thr * cover * lacing_light(v, f, to_local_dir(v, path.d), to_local_dir(v, frame.light_dir));
+      // and the bubbles the head presses on it, seen at the pixel's width there
+      float footprint = 2.0 * frame.cam_tan_half_vfov * frame.viewport_inv.y * length(p - frame.cam_eye);
+      path.thr *= (1.0 - cover) * head_wall_cells(v, f, pl, footprint);
     }
 #endif
     c = crossing_at(path, h, v, g, below);

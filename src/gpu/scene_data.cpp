@@ -1,5 +1,6 @@
 #include "gpu/scene_data.hpp"
 
+#include "core/foam/head_volume.hpp"
 #include "core/scene/camera.hpp"
 
 #include <GLES3/gl3.h>
@@ -123,8 +124,8 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.dome = float(fo.dome);
   r.density = fp.density;
   r.anisotropy = fp.anisotropy;
-  r.foam_color = fp.color;
-  r.multiscatter = fp.multiscatter;
+  r.foam_color = glm::vec3(foam_single_scattering_albedo(glm::dvec3(fp.color), fp.anisotropy));
+  r.under_chord = float(drink_mean_chord(vf));
   r.bubble_size = fp.bubble_size;
   r.detail = fp.detail;
   const int bubbles = head ? std::min<int>(int(vf.big_bubbles.size()), contract::kMaxBigBubbles) : 0;

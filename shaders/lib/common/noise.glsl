@@ -1,5 +1,5 @@
-// Cheap per-pixel randomness: a hash, value noise (the foam's micro bubbles, lacing)
-// and the march jitter.
+// Cheap per-pixel randomness: a hash, value noise (the foam's micro bubbles, lacing), a
+// cell hash (the bubbles on the glass) and the march jitter.
 #ifndef LIB_COMMON_NOISE_GLSL
 #define LIB_COMMON_NOISE_GLSL
 precision highp float;
@@ -16,6 +16,15 @@ float value_noise(vec3 x) {
   return mix(mix(mix(hash13(i), hash13(i + vec3(1, 0, 0)), f.x), mix(hash13(i + vec3(0, 1, 0)), hash13(i + vec3(1, 1, 0)), f.x), f.y),
              mix(mix(hash13(i + vec3(0, 0, 1)), hash13(i + vec3(1, 0, 1)), f.x), mix(hash13(i + vec3(0, 1, 1)), hash13(i + vec3(1, 1, 1)), f.x), f.y),
              f.z);
+}
+
+// Two uniform numbers for an integer cell (Hoskins' integer hash): decorrelated between
+// neighbours, as a Voronoi pattern's feature points need (hash13 of nearby integers is
+// not: its cells line up in streaks). The picture's own (no C++ twin).
+vec2 hash22_cell(ivec2 c) {
+  uvec2 q = uvec2(c) * uvec2(1597334673u, 3812015801u);
+  q = (q.x ^ q.y) * uvec2(1597334673u, 3812015801u);
+  return vec2(q) * (1.0 / 4294967295.0);
 }
 
 // Per-pixel jitter of a march's start (interleaved gradient noise): no layered banding.

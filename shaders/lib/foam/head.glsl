@@ -1,8 +1,8 @@
 // The foam head of a vessel: a volume on the liquid surface up to the head's top (where
 // core/foam puts it), marched only along the stretch of a ray inside it. Beer's-law
-// opacity per step, Henyey-Greenstein single scattering of the key light plus
-// multi-scatter terms at halved optical depth, self-shadowing from the distance light
-// travels through the head (no shadow rays), micro-bubble detail from value noise, big
+// opacity per step, light derived from single scattering of the key and the diffusion
+// approximation between the head's faces (head_source; no shadow rays), micro-bubble
+// detail from value noise, big
 // bubbles (placed by core: VesselFrame::big_bubbles) as voids with a denser ring around
 // them, and lacing rings left on the glass. All in the vessel's frame.
 #ifndef LIB_FOAM_HEAD_GLSL
@@ -42,14 +42,23 @@ float foam_thickness_at(Vessel v, ObjectFoam f, vec2 xz) {
   return f.thickness * max(1.0 + f.dome * (1.0 - 2.0 * u2), 0.1);
 }
 
-// Extinction at p; `height` is p's height above the liquid, `top` the head's thickness there.
+// Bubbles are bigger low in the head (they coarsen as liquid drains out of it): at the
+// liquid 1 + FOAM_GROWTH times their size at the top. A foam's extinction goes as its
+// bubbles' surface per volume, 1 / size, so the wet foam low in the head is the more
+// translucent: the head fades into the drink. Its top is soft over FOAM_SOFT_TOP of its
+// thickness. (As core/foam/head_volume.cpp.)
+const float FOAM_GROWTH = 1.5;
+const float FOAM_SOFT_TOP = 0.12;
+float foam_growth(float height, float top) { return 1.0 + FOAM_GROWTH * (1.0 - height / top); }
+
+// Extinction at p; `height` is p's height above the liquid, `top` the head's thickness
+// there. The twin of core/foam/head_volume.cpp HeadVolume::density.
 float foam_density(Vessel v, ObjectFoam f, vec3 p, float height, float top) {
   if (height < 0.0 || height > top || p.y > v.body.height || length(p.xz) > inner_radius(v, p.y) || clipped(v, p))
     return 0.0;
-  // Bubbles are bigger low in the head (they coarsen as liquid drains out of it).
-  float scale = f.bubble_size * (1.0 + 1.5 * (1.0 - height / top));
-  float d = f.density * max(1.0 + 1.6 * f.detail * (value_noise(p / scale) - 0.5), 0.0);
-  d *= clamp((top - height) / (0.12 * top), 0.0, 1.0);  // a soft top, a crisp underside
+  float grow = foam_growth(height, top);
+  float d = f.density / grow * max(1.0 + 1.6 * f.detail * (value_noise(p / (f.bubble_size * grow)) - 0.5), 0.0);
+  d *= clamp((top - height) / (FOAM_SOFT_TOP * top), 0.0, 1.0);
   for (int i = 0; i < f.big_bubble_count; ++i) {
     BigBubble b = big_bubble(v, i);
     float r = b.radius, dist = length(p - b.centre);
@@ -65,22 +74,88 @@ float hg_phase(float c, float g) {
   return (1.0 - g2) / (4.0 * PI * pow(max(1.0 + g2 - 2.0 * g * c, 1e-4), 1.5));
 }
 
-// Light scattered towards -d at p (per unit scattering), self-shadowed analytically by
-// the foam between p and the outside: through the head's top (depth below it) or
-// through the glass wall beside it (side), whichever is shorter. d, l local.
-vec3 foam_light(Vessel v, ObjectFoam f, vec3 d, vec3 l, float depth, float side) {
-  vec3 n = v.liquid.plane_normal;
-  float sin_l = length(l - n * dot(n, l));
-  float tau_l = f.density * min(depth / max(dot(n, l), 0.15), side / max(sin_l, 0.15));
-  float tau_a = f.density * min(depth, side);
-  float c = dot(l, d), g = f.anisotropy, w = f.multiscatter;
-  // Multiple scattering: two more terms, each with half the weight and anisotropy and a
-  // much smaller optical depth. Foam's bubble films barely absorb, so light diffuses
-  // centimetres into a head that is opaque to a straight ray (tau ~ 20).
-  float key = hg_phase(c, g) * exp(-tau_l);
-  key += w * (0.5 * hg_phase(c, 0.5 * g) * exp(-0.08 * tau_l) + 0.25 * hg_phase(c, 0.25 * g) * exp(-0.02 * tau_l)) * 4.0;
-  float sky = exp(-tau_a) + w * (0.5 * exp(-0.08 * tau_a) + 0.25 * exp(-0.02 * tau_a)) * 2.0;
-  return f.foam_color * (frame.light_color * frame.light_intensity * key + ambient_light() * sky) * 1.25;
+// The light a head receives, per march. Its lighting is derived, not tuned
+// (docs/REFERENCE.md, "The head in the picture"): the key's unscattered light scattered
+// once (Henyey-Greenstein), plus the diffusion approximation's field between the head's
+// three faces: the top (the sky and the key), the side against the glass (the studio and
+// the key through the wall) and the underside (light from below through the drink, which
+// tints it). A white head in even light is then exactly as bright as that light.
+struct HeadLight {
+  vec3 albedo;  // single-scattering albedo (core derives it from foam.color)
+  vec3 kappa;   // diffusion's decay per optical depth: sqrt(3 (1 - a)(1 - a g))
+  float zb;     // the extrapolated boundary beyond each face, in optical depths: 2 / (3 (1 - g))
+  vec3 sky;     // diffuse light arriving on the top and the side
+  vec3 below;   // and on the underside, through the drink
+  vec3 key;     // the key light's irradiance
+  float wall;   // the part of the key the glass wall lets through (two faces, Fresnel at normal incidence)
+};
+
+HeadLight head_light(Vessel v, ObjectFoam f) {
+  HeadLight h;
+  h.albedo = f.foam_color;
+  h.kappa = sqrt(3.0 * max(1.0 - h.albedo, 0.0) * (1.0 - h.albedo * f.anisotropy));
+  h.zb = 2.0 / (3.0 * (1.0 - f.anisotropy));
+  h.sky = ambient_light();
+  h.below = h.sky * exp(-v.body.absorption * f.under_chord);
+  h.key = frame.light_color * frame.light_intensity;
+  float ior = fetch_object_glass(v.row).glass_ior, f0 = (ior - 1.0) / (ior + 1.0);
+  h.wall = (1.0 - f0 * f0) * (1.0 - f0 * f0);
+  return h;
+}
+
+// The diffusion approximation's field (decay kappa per optical depth) in a head with
+// faces at extrapolated distances u (optical depths; e = exp(kappa u)), each face held at
+// its incoming radiance. Between two parallel faces the share of face i is exactly
+//   sinh(kappa u_j) / sinh(kappa (u_i + u_j)) = 1 / (cosh(kappa u_i) + sinh(kappa u_i) coth(kappa u_j)),
+// generalised to more faces by summing their pulls kappa (coth(kappa u_j) - 1): a lone
+// face gives exp(-kappa u) (the semi-infinite medium, whose Marshak boundary is the
+// exp(-kappa zb) at the face), and with kappa = 0 the shares are inverse-distance
+// weights that sum to 1 (a white head in even light returns that light).
+vec3 face_pull(vec3 kappa, float u, vec3 e) {
+  return mix(2.0 * kappa / max(e * e - 1.0, 1e-30), vec3(1.0 / u) - kappa, lessThan(kappa * u, vec3(5e-4)));
+}
+vec3 face_share(vec3 kappa, float u, vec3 e, vec3 others) {
+  vec3 sinh_k = mix(0.5 * (e - 1.0 / e) / max(kappa, 1e-30), vec3(u), lessThan(kappa * u, vec3(5e-4)));  // sinh(kappa u) / kappa
+  return 1.0 / (0.5 * (e + 1.0 / e) + sinh_k * (kappa + others));
+}
+
+// Light scattered towards -d at p per unit extinction (albedo included): `height` is p's
+// height above the liquid, `top` the head's thickness there; d, l local. Optical depths
+// to the faces are those of the mean density.
+vec3 head_source(Vessel v, ObjectFoam f, HeadLight h, vec3 d, vec3 l, vec3 p, float height, float top) {
+  // The top is the head's (its soft ramp integrated) or the rim's where a dome stands
+  // above the glass; the side the wall's or a cross-section's cut, whichever is nearer.
+  // (The integrals of foam_density's 1 / growth over height; the soft top taken as if
+  // the bubbles did not grow within it.)
+  float ramp = FOAM_SOFT_TOP * top, depth = max(top - height, 0.0), grow = foam_growth(height, top);
+  float to_top = depth > ramp ? top / FOAM_GROWTH * log(grow / (1.0 + FOAM_GROWTH * FOAM_SOFT_TOP)) + 0.5 * ramp
+                              : depth * depth / (2.0 * ramp);
+  float tau_t = f.density * min(to_top, max(v.body.height - p.y, 0.0));
+  float tau_b = f.density * top / FOAM_GROWTH * log((1.0 + FOAM_GROWTH) / grow);
+  float r = length(p.xz);
+  float tau_s = f.density / grow * max(min(inner_radius(v, p.y) - r, v.shape.clip_offset - dot(v.shape.clip_normal, p)), 0.0);
+  float cos_t = dot(v.liquid.plane_normal, l), cos_s = r > 1e-6 ? dot(p.xz, l.xz) / r : 0.0;
+  // The key's unscattered light, through the top or through the wall beside p.
+  float direct = max(cos_t > 0.0 ? exp(-tau_t / cos_t) : 0.0, cos_s > 0.0 ? h.wall * exp(-tau_s / cos_s) : 0.0);
+  vec3 single = h.key * hg_phase(dot(l, d), f.anisotropy) * direct;
+  // Diffusion between the faces: each face's incoming radiance (the key's irradiance
+  // counted as a diffuse pi L) held at its extrapolated boundary, the field the sum of
+  // each face's share (face_share).
+  vec3 top_in = h.sky + h.key * max(cos_t, 0.0) / PI;
+  vec3 side_in = h.sky + h.key * h.wall * max(cos_s, 0.0) / PI;
+  float ut = tau_t + h.zb, ub = tau_b + h.zb, us = tau_s + h.zb;
+  vec3 et = exp(min(h.kappa * ut, 60.0)), eb = exp(min(h.kappa * ub, 60.0)), es = exp(min(h.kappa * us, 60.0));
+  vec3 pt = face_pull(h.kappa, ut, et), pb = face_pull(h.kappa, ub, eb), ps = face_pull(h.kappa, us, es);
+  vec3 diffuse = face_share(h.kappa, ut, et, pb + ps) * top_in + face_share(h.kappa, ub, eb, pt + ps) * h.below +
+                 face_share(h.kappa, us, es, pt + pb) * side_in;
+  return h.albedo * (single + diffuse);
+}
+
+// The light a thin film of foam on the wall (lacing) scatters towards -d: a head's side
+// face, lit straight.
+vec3 lacing_light(Vessel v, ObjectFoam f, vec3 d, vec3 l) {
+  HeadLight h = head_light(v, f);
+  return h.albedo * (h.key * hg_phase(dot(l, d), f.anisotropy) + h.sky);
 }
 
 // The part of [t0, t1] along o + t d (local) where the head (or a big bubble's cap) can
@@ -110,10 +185,13 @@ bool foam_interval(Vessel v, ObjectFoam f, vec3 o, vec3 d, inout float t0, inout
 // foam_interval). Adds the light it scatters to `radiance` and attenuates `thr`.
 void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec3 l, inout vec3 radiance,
                 inout vec3 thr) {
+  // Steps of at most one optical depth of the top's density (a thick head stops the
+  // march within about ten), at least 6 and at most 40 over the stretch.
   float len = t1 - t0;
-  int steps = int(clamp(len * f.density * 0.5, 6.0, 40.0));
+  int steps = int(clamp(ceil(len * f.density), 6.0, 40.0));
   float dt = len / float(steps);
   float t = t0 + dt * march_jitter();
+  HeadLight h = head_light(v, f);
   for (int i = 0; i < 40; ++i) {
     if (i >= steps) break;
     ++g_foam_steps;
@@ -122,10 +200,7 @@ void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec3
     float sigma = foam_density(v, f, p, height, top);
     if (sigma > 0.0) {
       float trans = exp(-sigma * dt);
-      float side = max(inner_radius(v, p.y) - length(p.xz), 0.0);
-      // Wetter, creamier foam low in the head: a little darker than its top.
-      float wet = mix(0.72, 1.0, clamp(height / top, 0.0, 1.0));
-      radiance += thr * wet * foam_light(v, f, d, l, max(top - height, 0.0), side) * (1.0 - trans);
+      radiance += thr * head_source(v, f, h, d, l, p, height, top) * (1.0 - trans);
       thr *= trans;
       if (max(thr.r, max(thr.g, thr.b)) < 1e-3) {
         thr = vec3(0.0);
@@ -160,6 +235,45 @@ void bubble_caps(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec
                        frame.light_color * frame.light_intensity * 2.0 * ggx_specular(nn, -d, l, 0.04));
     thr *= 1.0 - film;
   }
+}
+
+// The borders of a Voronoi network of unit cells at q (1 on a border, fading out over a
+// fifth of a cell and `px` cells more; 0 inside a cell).
+float cell_border(vec2 q, float px) {
+  vec2 i = floor(q), fq = q - i;
+  float d1 = 8.0, d2 = 8.0;
+  for (int y = -1; y <= 1; ++y)
+    for (int x = -1; x <= 1; ++x) {
+      vec2 o = vec2(float(x), float(y));
+      vec2 r = o + hash22_cell(ivec2(i + o)) - fq;
+      float d = dot(r, r);
+      d2 = d < d1 ? d1 : min(d2, d);
+      d1 = min(d1, d);
+    }
+  return (1.0 - smoothstep(0.0, 0.2 + px, sqrt(d2) - sqrt(d1))) * (1.0 - smoothstep(0.25, 0.5, px));
+}
+
+// The bubbles the head presses against the glass: Voronoi cells on the inner wall at the
+// head's bubble size, the fine cells of its top giving way to the coarse ones at the
+// liquid (1 + FOAM_GROWTH times larger; two networks blended by height, as one network
+// whose cells grew would shear), whose borders are Plateau channels of the drink. The
+// channels run down through the head into the drink and guide light along them: a
+// border shows light that has crossed the drink in its channel from the liquid up to
+// this height, so it takes the drink's tint over that length (a golden network in a
+// lager's head, a brown one in a stout's). It only absorbs: a head on a clear drink in
+// the furnace is unchanged. The factor returned multiplies the path's throughput (1 off
+// the borders and above the head). An appearance term of the contact with the glass,
+// not part of the medium: the reference does not simulate it (as lacing). p local, on
+// the inner wall; `footprint` the pixel's width there (m): cells under a few pixels fade
+// out rather than alias.
+vec3 head_wall_cells(Vessel v, ObjectFoam f, vec3 p, float footprint) {
+  float height = level_over(v.liquid, p), top = foam_thickness_at(v, f, p.xz);
+  if (height < 0.0 || height > top || p.y > v.body.height) return vec3(1.0);
+  vec2 wall = vec2(atan(p.z, p.x) * length(p.xz), p.y);  // arc length and height (m)
+  float fine = f.bubble_size, coarse = f.bubble_size * (1.0 + FOAM_GROWTH), low = 1.0 - height / top;
+  float border = mix(cell_border(wall / fine, footprint / fine), cell_border(wall / coarse + 17.0, footprint / coarse), low);
+  border *= clamp((top - height) / (FOAM_SOFT_TOP * top), 0.0, 1.0);  // the head's soft top
+  return mix(vec3(1.0), exp(-v.body.absorption * height), border);
 }
 
 // Lacing: thin foam left on the inner wall where the head's top used to be (p local).

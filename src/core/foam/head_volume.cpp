@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace draught {
 
@@ -15,6 +16,10 @@ constexpr double kRingWidth = 0.45;
 // Beyond this many ring widths a ring adds less than 2e-4 (exp(-9)): it no longer counts
 // towards another bubble's bound.
 constexpr double kRingReach = 3.0;
+// Bubbles at the liquid are 1 + kGrowth times their size at the top; the top is soft over
+// kSoftTop of the thickness (FOAM_GROWTH and FOAM_SOFT_TOP in shaders/lib/foam/head.glsl).
+constexpr double kGrowth = 1.5;
+constexpr double kSoftTop = 0.12;
 }  // namespace
 
 double foam_reflectance(double a, double g) {
@@ -37,6 +42,14 @@ glm::dvec3 foam_single_scattering_albedo(const glm::dvec3& reflectance, double g
     out[c] = (1 - s2) / (1 - s2 * g);
   }
   return out;
+}
+
+double drink_mean_chord(const VesselFrame& vf) {
+  if (!vf.has_liquid || vf.liquid_fraction <= 0) return 0;
+  const double volume = vf.liquid_fraction * vf.vessel.cavity_volume();
+  const double depth = std::max(vf.vessel.fill_height(vf.liquid_fraction) - vf.vessel.base, 1e-6);
+  const double r = std::sqrt(volume / (std::numbers::pi * depth));
+  return 2 * r * depth / (r + depth);  // 4 pi r^2 h / (2 pi r^2 + 2 pi r h)
 }
 
 HeadVolume::HeadVolume(const VesselFrame& vf, const VesselGeometry& geometry) {
@@ -78,10 +91,12 @@ double HeadVolume::density(const glm::dvec3& p) const {
   if (height < 0 || height > top || p.y > vessel_->height || std::hypot(p.x, p.z) > vessel_->inner_radius(p.y) ||
       glm::dot(glm::dvec3(clip_), p) > clip_.w)
     return 0;
-  // Bubbles are bigger low in the head (they coarsen as liquid drains out of it).
-  const double scale = bubble_size_ * (1 + 1.5 * (1 - height / top));
-  double d = density_ * std::max(1 + 1.6 * detail_ * (value_noise(glm::vec3(p / scale)) - 0.5), 0.0);
-  d *= std::clamp((top - height) / (0.12 * top), 0.0, 1.0);  // a soft top, a crisp underside
+  // Bubbles are bigger low in the head (they coarsen as liquid drains out of it), and the
+  // extinction goes as 1 / their size: the wet foam low in the head is the more
+  // translucent. A soft top. (As foam_growth and foam_density in shaders/lib/foam/head.glsl.)
+  const double grow = 1 + kGrowth * (1 - height / top);
+  double d = density_ / grow * std::max(1 + 1.6 * detail_ * (value_noise(glm::vec3(p / (bubble_size_ * grow))) - 0.5), 0.0);
+  d *= std::clamp((top - height) / (kSoftTop * top), 0.0, 1.0);
   for (const PlacedBubble& b : bubbles_) {
     const double dist = glm::length(p - b.centre);
     if (dist < b.radius) return 0;  // inside a big bubble, or the void a popped one left

@@ -23,6 +23,12 @@ struct VesselFrame;
 double foam_reflectance(double single_scattering_albedo, double g);
 glm::dvec3 foam_single_scattering_albedo(const glm::dvec3& reflectance, double g);
 
+// How far light from below travels through the drink to reach the head's underside: the
+// mean chord 4 V / S of a cylinder with the liquid's volume and depth (Cauchy: the mean
+// length of isotropic lines across a convex body, which diffuse light follows). 0 when
+// there is no liquid. The picture's head tints its underside's light by the drink over it.
+double drink_mean_chord(const VesselFrame& vf);
+
 class HeadVolume {
  public:
   // The head of vessel frame `vf` cut by `clip` (a VesselGeometry's); empty() when the

@@ -46,10 +46,10 @@ struct LiquidParams {
 
 struct FoamParams {
   float height = 0.015f;                // head thickness when settled after the pour, metres
-  float density = 1500.0f;              // extinction per metre (micro bubbles scatter light)
+  float density = 1500.0f;              // extinction per metre at the top (lower down it falls as bubbles grow)
   glm::vec3 color{0.97f, 0.95f, 0.9f};  // diffuse reflectance of a deep head (white lager foam, tan stout head)
   float anisotropy = 0.0f;              // Henyey-Greenstein g
-  float multiscatter = 0.7f;            // 0: single scattering only; 1: the full multi-scatter terms
+  float multiscatter = 0.7f;            // deprecated, accepted, no effect (the head's light is derived)
   float age = 45.0f;                    // seconds since the pour, for a still picture
   float rise_time = 2.0f;               // seconds for the head to build during a pour
   float half_life = 150.0f;             // seconds for the head to halve as it collapses

@@ -1,5 +1,6 @@
 // The head as a medium: its colour to single-scattering albedo (diffusion theory), the
-// density field's bound and where along a ray it can be.
+// density field's bound, how it thins low in the head, where along a ray it can be, and
+// how far light from below crosses the drink to it.
 #include "core/foam/head_volume.hpp"
 #include "core/scene/frame.hpp"
 
@@ -77,6 +78,38 @@ TEST(HeadVolume, NoFoamUnderTheLiquidOrOutsideTheCavity) {
   EXPECT_EQ(head.density({0, level - 0.002, 0}), 0);
   EXPECT_GT(head.density({0, level + 0.5 * vf.foam.thickness, 0}) + head.density({0.003, level + 0.4 * vf.foam.thickness, 0.002}), 0);
   EXPECT_EQ(head.density({vf.vessel.bound_radius, level + 0.005, 0}), 0);
+}
+
+// Wet foam low in the head has bigger bubbles and so less extinction (1 / size): its
+// mean density just above the liquid is about 1 / 2.5 of the mean near the top (below
+// its soft edge). Averaged over many points across the head, away from big bubbles.
+TEST(HeadVolume, TheWetFoamLowInTheHeadIsTheMoreTranslucent) {
+  Head h = default_head();
+  h.frame.vessels[0].big_bubbles.clear();
+  const HeadVolume head = h.volume();
+  const VesselFrame& vf = h.frame.vessels[0];
+  const double level = vf.liquid.offset;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.02, 0.02);
+  double low = 0, high = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const double x = u(rng), z = u(rng), top = head.thickness_at(x, z);
+    low += head.density({x, level + 0.02 * top, z});
+    high += head.density({x, level + 0.8 * top, z});
+  }
+  EXPECT_NEAR(low / high, (1 + 1.5 * 0.2) / (1 + 1.5 * 0.98), 0.08);
+}
+
+// Light from below reaches the head's underside across the drink: a chord of a few
+// centimetres in a pint, none without liquid.
+TEST(HeadVolume, LightFromBelowCrossesCentimetresOfTheDrink) {
+  const Head h = default_head();
+  const double chord = drink_mean_chord(h.frame.vessels[0]);
+  EXPECT_GT(chord, 0.03);
+  EXPECT_LT(chord, 0.12);
+  Params p = test::params_with_glass("pint");
+  p.liquid.fill = 0;
+  EXPECT_EQ(drink_mean_chord(make_frame(p).vessels[0]), 0);
 }
 
 TEST(HeadVolume, NoHeadWithoutLiquid) {
