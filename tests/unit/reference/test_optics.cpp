@@ -155,6 +155,28 @@ TEST(Fresnel, TextbookFormulaAtRandomAngles) {
   }
 }
 
+TEST(Fresnel, ReflectedAndTransmittedPowerSumToOne) {
+  // Energy per interface: R = F and the transmitted power from the Fresnel transmission
+  // amplitudes, T = (n2 cos tt) / (n1 cos ti) t^2 per polarisation (the beam's change of
+  // cross-section and speed), add up to 1 at every angle and for every pair of the
+  // renderer's media (air 1, drinks 1.33-1.36, glass 1.5-1.52), both ways.
+  for (const auto& [a, b] : {std::pair{1.0, 1.52}, std::pair{1.0, 1.333}, std::pair{1.333, 1.52}, std::pair{1.36, 1.5}})
+    for (const auto& [n1, n2] : {std::pair{a, b}, std::pair{b, a}})
+      for (double ti = 0.0; ti < 0.5 * kPi; ti += 0.01) {
+        const double st = n1 / n2 * std::sin(ti);
+        const double ci = std::cos(ti);
+        const double F = fresnel_dielectric(ci, n1, n2);
+        if (st >= 1) {
+          EXPECT_EQ(F, 1.0);  // total internal reflection: nothing is transmitted
+          continue;
+        }
+        const double ct = std::sqrt(1 - st * st);
+        const double ts = 2 * n1 * ci / (n1 * ci + n2 * ct), tp = 2 * n1 * ci / (n1 * ct + n2 * ci);
+        const double T = n2 * ct / (n1 * ci) * 0.5 * (ts * ts + tp * tp);
+        EXPECT_NEAR(F + T, 1.0, 1e-12) << n1 << " -> " << n2 << " at " << ti;
+      }
+}
+
 TEST(Fresnel, Reciprocity) {
   // Light going back along the refracted path sees the same reflectance.
   for (double ti = 0.0; ti < 1.5; ti += 0.05) {
