@@ -122,9 +122,14 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
           floor_weight = path.thr * c.F;
         } else {
           // Inside a glass or drink the reflection is absorbed on its way out.
-          vec3 seen = studio_seen(r, rough);
-          if (path.medium != MEDIUM_AIR)
-            seen *= medium_transmittance(v, g, path.medium, reflected_reach(v, h.m, path.medium, pl, to_local_dir(v, r), to_local_dir(v, c.n)));
+          vec3 seen;
+          if (path.medium == MEDIUM_AIR) {
+            seen = studio_seen(r, rough);
+          } else {
+            vec3 out_dir;
+            vec3 tr = reflected_light(v, g, h.m, path.medium, below, pl, to_local_dir(v, r), to_local_dir(v, c.n), out_dir);
+            seen = tr * studio_seen(to_world_dir(v, out_dir), rough);
+          }
           path.radiance += path.thr * c.F * seen;
         }
       }

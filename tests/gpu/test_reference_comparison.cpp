@@ -144,9 +144,15 @@ TEST_P(ReferenceComparison, RegionsAgreeWithinTheirBounds) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, ReferenceComparison,
-    // Today (llvmpipe, 64x64, 256 paths per pixel): glass 1.6 / 4.8, liquid 4.8 / 8.8,
-    // head 4.4 / 10.0 (mean / 90th percentile).
-    ::testing::Values(ComparisonCase{"lager-pint", SceneRequest{"lager", "pint"}, 64, 256, {2.5, 7}, {6, 11}, {6, 13}}),
+    // Today (llvmpipe, 64x64, 256 paths per pixel), mean / 90th percentile:
+    // lager-pint: glass 0.9 / 1.7, liquid 4.1 / 7.8, head 4.3 / 10.3. Most of the liquid's
+    // difference is the floor seen through the drink (the picture's floor shadow is an
+    // analytic cylinder, ARCHITECTURE.md) and the rising bubbles the reference does not
+    // draw; without the floor and the bubbles (the glass and the drink's own optics):
+    // glass 0.8 / 2.6, liquid 0.5 / 0.8 (the head is left to the first case).
+    ::testing::Values(ComparisonCase{"lager-pint", SceneRequest{"lager", "pint"}, 64, 256, {1.5, 3}, {5, 9}, {6, 13}},
+                      ComparisonCase{"lager-pint-optics", SceneRequest{"lager", "pint", {"env.floor=false", "bubbles.carbonation=0"}},
+                                     64, 256, {1.5, 3.5}, {1, 1.5}, {0, 0}}),
     [](const ::testing::TestParamInfo<ComparisonCase>& i) {
       std::string s = i.param.name;
       std::replace(s.begin(), s.end(), '-', '_');

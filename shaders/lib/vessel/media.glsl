@@ -4,6 +4,7 @@
 #include "generated/constants.glsl"
 #include "lib/scene/objects.glsl"
 #include "lib/vessel/intersect.glsl"
+#include "lib/liquid/body.glsl"
 
 // The medium on the far side of surface m for a path now in `from`; `below`: whether
 // the point lies under the liquid's surface (it decides what is behind the inner wall
@@ -23,30 +24,91 @@ float medium_ior(Vessel v, ObjectGlass g, int medium) {
   return medium == MEDIUM_GLASS ? g.glass_ior : (medium == MEDIUM_LIQUID ? v.liquid.ior : 1.0);
 }
 
-// How far light reflected inside a medium travels in it before it leaves: the path
-// follows only the refracted part of an interface, and the reflected part is a look-up
-// of the surroundings, which must first be absorbed along the way it would go (else
-// internal reflections add the studio untinted: too bright, pinkish). p: the surface
-// point, r: the reflected direction, n: the surface's normal (all local); m: the
-// surface. In the drink: to the nearest of the cavity's wall (the cylinder of its radius
-// at p), its floor and the surface plane. In the glass: across the wall, the base or the
-// rim bead's tube. Not a twin: the reference follows these paths.
-float reflected_reach(Vessel v, int m, int medium, vec3 p, vec3 r, vec3 n) {
-  if (medium == MEDIUM_LIQUID) {
-    float R = inner_radius(v, p.y);
-    float A = dot(r.xz, r.xz), B = dot(p.xz, r.xz), C = dot(p.xz, p.xz) - R * R;
-    float t = A > 1e-12 ? (-B + sqrt(max(B * B - A * C, 0.0))) / A : INF;
-    float dn = dot(v.liquid.plane_normal, r);
-    if (dn > 1e-6) t = min(t, max(v.liquid.plane_offset - dot(v.liquid.plane_normal, p), 0.0) / dn);
-    if (r.y < -1e-6) t = min(t, max(p.y - v.shape.base, 0.0) / -r.y);
-    return max(t, 0.0);
+// Where the ray o + t r (local) crosses the cavity: within its cylinder (the radius at
+// o's height), above its floor and, with `drink`, below the surface plane. span: the
+// part inside, n_out: the outward normal where it leaves (the wall's, tilted by its
+// slope there; the plane's; the floor's). False when it misses.
+bool cavity_span(Vessel v, vec3 o, vec3 r, bool drink, out vec2 span, out vec3 n_out) {
+  float R = inner_radius(v, clamp(o.y, v.shape.base, v.body.height));
+  span = vec2(0.0, INF);
+  float A = dot(r.xz, r.xz), B = dot(o.xz, r.xz), C = dot(o.xz, o.xz) - R * R;
+  if (A > 1e-12) {
+    float disc = B * B - A * C;
+    if (disc < 0.0) return false;
+    float sq = sqrt(disc);
+    span = vec2(max((-B - sq) / A, 0.0), (-B + sq) / A);
+  } else if (C > 0.0) {
+    return false;
   }
-  if (medium != MEDIUM_GLASS) return 0.0;
+  vec3 q = o + span.y * r;
+  int k = clamp(int(q.y * v.shape.inv_dy), 0, SEGMENTS - 1);
+  vec4 kn = segment_knots(v, k);
+  n_out = normalize(vec3(q.x, -(kn.w - kn.y) * v.shape.inv_dy * length(q.xz), q.z));
+  if (drink) {
+    float dn = dot(v.liquid.plane_normal, r), under = v.liquid.plane_offset - dot(v.liquid.plane_normal, o);
+    if (dn > 1e-6 && under / dn < span.y) {
+      span.y = under / dn;
+      n_out = v.liquid.plane_normal;
+    } else if (dn < -1e-6) {
+      span.x = max(span.x, under / dn);
+    } else if (abs(dn) <= 1e-6 && under < 0.0) {
+      return false;
+    }
+  }
+  if (r.y < -1e-6 && (o.y - v.shape.base) / -r.y < span.y) {
+    span.y = (o.y - v.shape.base) / -r.y;
+    n_out = vec3(0.0, -1.0, 0.0);
+  } else if (r.y > 1e-6) {
+    span.x = max(span.x, (v.shape.base - o.y) / r.y);
+  } else if (abs(r.y) <= 1e-6 && o.y < v.shape.base) {
+    return false;
+  }
+  return span.x < span.y;
+}
+
+// The direction light going along r in a medium of index eta (over the air's) leaves in
+// through a surface of outward normal n_out, as if through parallel faces: light
+// crosses a glass wall into the air as from the drink straight into the air. Under
+// total internal reflection, the reflection.
+vec3 leave_through(vec3 r, vec3 n_out, float eta) {
+  vec3 n = dot(r, n_out) > 0.0 ? -n_out : n_out;
+  vec3 t = refract(r, n, eta);
+  return dot(t, t) > 0.0 ? t : reflect(r, n);
+}
+
+// Light reflected inside a medium at surface m (point p, reflected direction r, the
+// normal n facing the reflected side; all local): what reaches the eye of it per unit of
+// what it sees once out, and the direction `out` it leaves in. The path follows only the
+// refracted part of an interface, and the reflected part is a look-up of the
+// surroundings, which must first be absorbed along the way it would go and looked up
+// where it would leave (else internal reflections add the studio untinted, in
+// directions the tapered walls bend away: too bright, pinkish). In the drink: across it
+// to the cavity's wall, floor or surface. In the glass: across the wall, the base or the
+// rim bead's tube, and where it turns inwards (off the outer wall or the foot's
+// underside) across the cavity and its drink to the far side. Not a twin: the reference
+// follows these paths (docs/REFERENCE.md measures the difference).
+vec3 reflected_light(Vessel v, ObjectGlass g, int m, int medium, bool below, vec3 p, vec3 r, vec3 n, out vec3 out_dir) {
+  out_dir = r;
+  vec2 span;
+  vec3 n_out;
+  if (medium == MEDIUM_LIQUID) {
+    if (!cavity_span(v, p, r, true, span, n_out)) return vec3(1.0);
+    out_dir = leave_through(r, n_out, v.liquid.ior);
+    return medium_transmittance(v, g, MEDIUM_LIQUID, span.y - span.x);
+  }
+  if (medium != MEDIUM_GLASS) return vec3(1.0);
   float across = abs(dot(r, n));
-  if (m == M_RIM) return 2.0 * v.shape.rim_minor * across;  // a chord of the bead's tube
+  if (m == M_RIM) return medium_transmittance(v, g, MEDIUM_GLASS, 2.0 * v.shape.rim_minor * across);  // a chord of the tube
   float thick = m == M_GLASS_BOTTOM || m == M_CAVITY_FLOOR ? v.shape.base
                                                            : (outer_radius(v, p.y) - inner_radius(v, p.y)) * length(n.xz);
-  return min(thick / max(across, 1e-3), v.body.height);
+  vec3 tr = medium_transmittance(v, g, MEDIUM_GLASS, min(thick / max(across, 1e-3), v.body.height));
+  if ((m == M_GLASS_OUTER || m == M_GLASS_BOTTOM) && cavity_span(v, p, r, below, span, n_out)) {
+    if (below) tr *= medium_transmittance(v, g, MEDIUM_LIQUID, span.y - span.x);
+  } else {
+    n_out = -n;  // out through the face opposite the one it reflected off
+  }
+  out_dir = leave_through(r, n_out, g.glass_ior);
+  return tr;
 }
 
 #endif  // LIB_VESSEL_MEDIA_GLSL
