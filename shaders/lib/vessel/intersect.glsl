@@ -75,8 +75,9 @@ Hit hit_wall(Vessel v, vec3 o, vec3 d, bool inner, float tmin) {
   // float round-off opens there: each segment reaches a hair (1e-4 of its height) into
   // its neighbours; adjacent cones meet at the shared knot, so the surface is the same.
   float crack = 1e-4 * v.shape.dy;
-  int k = k0;
-  for (int i = 0; i < count; ++i, k += stp) {
+  int k = k0, hit_k = -1;
+  float hit_t = INF;
+  for (int i = 0; i < count && hit_k < 0; ++i, k += stp) {
     ++g_cost;
     vec4 kn = segment_knots(v, k);
     float r0 = inner ? kn.y : kn.x;
@@ -94,12 +95,18 @@ Hit hit_wall(Vessel v, vec3 o, vec3 d, bool inner, float tmin) {
       if (p.y < ylo || p.y > yhi) continue;
       float r = length(p.xz);
       if (inside_torus(v, r, p.y) || clipped(v, p)) continue;
-      float slope = wall_slope(v, k, (p.y - y0) * v.shape.inv_dy, inner);
-      vec3 nrm = r > 0.0 ? normalize(vec3(p.x / r, -slope, p.z / r)) : vec3(0.0, -1.0, 0.0);
-      return Hit(t, inner ? -nrm : nrm, inner ? M_GLASS_INNER : M_GLASS_OUTER, v.row);
+      hit_t = t;
+      hit_k = k;
+      break;
     }
   }
-  return no_hit();
+  if (hit_k < 0) return no_hit();
+  // The normal once, after the walk (llvmpipe pays for all of a loop's body each trip).
+  vec3 p = o + hit_t * d;
+  float r = length(p.xz);
+  float slope = wall_slope(v, hit_k, p.y * v.shape.inv_dy - float(hit_k), inner);
+  vec3 nrm = r > 0.0 ? normalize(vec3(p.x / r, -slope, p.z / r)) : vec3(0.0, -1.0, 0.0);
+  return Hit(hit_t, inner ? -nrm : nrm, inner ? M_GLASS_INNER : M_GLASS_OUTER, v.row);
 }
 
 // The rim bead: a torus around the axis at the wall top; only where it is outside the body.

@@ -29,7 +29,12 @@ float medium_ior(Vessel v, ObjectGlass g, int medium) {
 // part inside, n_out: the outward normal where it leaves (the wall's, tilted by its
 // slope there; the plane's; the floor's). False when it misses.
 bool cavity_span(Vessel v, vec3 o, vec3 r, bool drink, out vec2 span, out vec3 n_out) {
-  float R = inner_radius(v, clamp(o.y, v.shape.base, v.body.height));
+  // One knot fetch: the wall's radius and slope at o's height (the slope stands for the
+  // slope where the ray leaves; it matters for the tilt, which changes slowly).
+  float s = clamp(clamp(o.y, v.shape.base, v.body.height) * v.shape.inv_dy, 0.0, float(SEGMENTS));
+  int k = min(int(s), SEGMENTS - 1);
+  vec4 kn = segment_knots(v, k);
+  float R = mix(kn.y, kn.w, s - float(k)), slope = (kn.w - kn.y) * v.shape.inv_dy;
   span = vec2(0.0, INF);
   float A = dot(r.xz, r.xz), B = dot(o.xz, r.xz), C = dot(o.xz, o.xz) - R * R;
   if (A > 1e-12) {
@@ -41,9 +46,7 @@ bool cavity_span(Vessel v, vec3 o, vec3 r, bool drink, out vec2 span, out vec3 n
     return false;
   }
   vec3 q = o + span.y * r;
-  int k = clamp(int(q.y * v.shape.inv_dy), 0, SEGMENTS - 1);
-  vec4 kn = segment_knots(v, k);
-  n_out = normalize(vec3(q.x, -(kn.w - kn.y) * v.shape.inv_dy * length(q.xz), q.z));
+  n_out = normalize(vec3(q.x, -slope * length(q.xz), q.z));
   if (drink) {
     float dn = dot(v.liquid.plane_normal, r), under = v.liquid.plane_offset - dot(v.liquid.plane_normal, o);
     if (dn > 1e-6 && under / dn < span.y) {
@@ -99,8 +102,11 @@ vec3 reflected_light(Vessel v, ObjectGlass g, int m, int medium, bool below, vec
   if (medium != MEDIUM_GLASS) return vec3(1.0);
   float across = abs(dot(r, n));
   if (m == M_RIM) return medium_transmittance(v, g, MEDIUM_GLASS, 2.0 * v.shape.rim_minor * across);  // a chord of the tube
-  float thick = m == M_GLASS_BOTTOM || m == M_CAVITY_FLOOR ? v.shape.base
-                                                           : (outer_radius(v, p.y) - inner_radius(v, p.y)) * length(n.xz);
+  float thick = v.shape.base;
+  if (m != M_GLASS_BOTTOM && m != M_CAVITY_FLOOR) {  // a wall: across it, from its knot at p
+    vec4 kn = segment_knots(v, clamp(int(p.y * v.shape.inv_dy), 0, SEGMENTS - 1));
+    thick = (kn.x - kn.y) * length(n.xz);
+  }
   vec3 tr = medium_transmittance(v, g, MEDIUM_GLASS, min(thick / max(across, 1e-3), v.body.height));
   if ((m == M_GLASS_OUTER || m == M_GLASS_BOTTOM) && cavity_span(v, p, r, below, span, n_out)) {
     if (below) tr *= medium_transmittance(v, g, MEDIUM_LIQUID, span.y - span.x);
