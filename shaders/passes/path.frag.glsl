@@ -76,8 +76,8 @@ void go_on(inout Path path, Hit h, Crossing c, vec3 p) {
 
 // ---- stage: shade an interface ----
 
-// The light gathered at the surface h (the path's segment up to it, the key light's
-// highlight, the reflected surroundings) and the path onwards. v: the records of h's
+// The light gathered at the surface h (the path's segment up to it, the reflected
+// surroundings, absorbed on their way out when the path is inside) and the path onwards. v: the records of h's
 // object (inside a glass or drink that is also the path's). False: the path ended (it
 // reached the floor).
 bool shade_interface(inout Path path, Hit h, Vessel v) {
@@ -109,9 +109,9 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
     }
 #endif
     c = crossing_at(path, h, v, g, below);
-    // Key light highlight (GGX), on the side the path arrives from.
+    // The key light is the studio's softbox, seen in the reflection (blurred by the
+    // surface's roughness) or through the refraction: no highlight on top of it.
     float rough = h.m == M_LIQUID_SURFACE || h.m == M_CLIP_LIQUID ? v.liquid.roughness : g.glass_roughness;
-    path.radiance += path.thr * frame.light_color * frame.light_intensity * c.F * ggx_specular(c.n, -path.d, frame.light_dir, rough);
     if (c.F < 1.0) {
       // The reflection sees the surroundings: the floor or the studio from the air, the
       // studio from inside a glass.
@@ -123,7 +123,16 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
           floor_dist = t;
           floor_weight = path.thr * c.F;
         } else {
-          path.radiance += path.thr * c.F * studio_sky(r);
+          // Inside a glass or drink the reflection is absorbed on its way out.
+          vec3 seen;
+          if (path.medium == MEDIUM_AIR) {
+            seen = studio_seen(r, rough);
+          } else {
+            vec3 out_dir;
+            vec3 tr = reflected_light(v, g, h.m, path.medium, below, pl, to_local_dir(v, r), to_local_dir(v, c.n), out_dir);
+            seen = tr * studio_seen(to_world_dir(v, out_dir), rough);
+          }
+          path.radiance += path.thr * c.F * seen;
         }
       }
       path.thr *= 1.0 - c.F;

@@ -144,11 +144,17 @@ TEST_P(ReferenceComparison, RegionsAgreeWithinTheirBounds) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, ReferenceComparison,
-    // Today (llvmpipe, 64x64, 256 paths per pixel): glass 1.6 / 4.8, liquid 4.8 / 8.8,
-    // head 2.7 / 6.2 (mean / 90th percentile; 16 pixels); the heads close up (only the
-    // head checked there, bounds 0: not checked; 48x48): lager 2.5 / 5.8, stout 3.5 / 6.6.
+    // Today (llvmpipe, 256 paths per pixel), mean / 90th percentile, 64x64:
+    // lager-pint: glass 1.0 / 1.7, liquid 4.7 / 9.3, head 2.9 / 5.8 (16 pixels). Most of the
+    // liquid's difference is the floor seen through the drink (the picture's floor shadow
+    // is an analytic cylinder, ARCHITECTURE.md) and the rising bubbles the reference does
+    // not draw; without the floor and the bubbles (the glass and the drink's own optics):
+    // glass 0.8 / 2.4, liquid 0.5 / 0.8. The heads close up (only the head checked there,
+    // bounds 0: not checked; 48x48): lager 2.3 / 5.2, stout 3.4 / 6.6.
     ::testing::Values(
-        ComparisonCase{"lager-pint", SceneRequest{"lager", "pint"}, 64, 256, {2.5, 7}, {6, 11}, {4, 8}},
+        ComparisonCase{"lager-pint", SceneRequest{"lager", "pint"}, 64, 256, {1.5, 3}, {5.5, 10.5}, {4, 8}},
+        ComparisonCase{"lager-pint-optics", SceneRequest{"lager", "pint", {"env.floor=false", "bubbles.carbonation=0"}},
+                       64, 256, {1.5, 3.5}, {1, 1.5}, {0, 0}},
         ComparisonCase{"lager-head", SceneRequest{"lager", "pint", {}, {"eye=0,0.17,0.2", "target=0,0.14,0", "vfov=25"}},
                        48, 256, {0, 0}, {0, 0}, {3.5, 7}},
         ComparisonCase{"stout-head", SceneRequest{"stout", "nonic", {}, {"eye=0,0.2,0.3", "target=0,0.14,0", "vfov=22"}},

@@ -231,8 +231,7 @@ void bubble_caps(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec
     float F = fresnel_dielectric(abs(dot(nn, d)), 1.0, v.liquid.ior);
     float film = 2.0 * F / (1.0 + F);  // two faces of the film
     vec3 refl = reflect(d, nn);
-    radiance += thr * (film * studio_sky(to_world_dir(v, refl)) +
-                       frame.light_color * frame.light_intensity * 2.0 * ggx_specular(nn, -d, l, 0.04));
+    radiance += thr * film * studio_sky(to_world_dir(v, refl));  // the key softbox is in the sky
     thr *= 1.0 - film;
   }
 }

@@ -34,27 +34,30 @@ bool inside_body(Vessel v, float r, float y) {
   return y < v.shape.base || r >= inner_radius(v, y);
 }
 
-// Slab ylo..yhi and cylinder r <= rad along the ray, as [t0, t1].
+// Slab ylo..yhi and cylinder r <= rad along the ray, as [t0, t1]: the vessel's axis is
+// y, so this is cylinder_span (lib/scene/objects.glsl) about that axis, from tmin.
 bool clip_to_bounds(vec3 o, vec3 d, float ylo, float yhi, float rad, float tmin, out vec2 tr) {
-  tr = vec2(tmin, INF);
-  if (abs(d.y) < 1e-9) {
-    if (o.y < ylo || o.y > yhi) return false;
-  } else {
-    float a = (ylo - o.y) / d.y, b = (yhi - o.y) / d.y;
-    tr.x = max(tr.x, min(a, b));
-    tr.y = min(tr.y, max(a, b));
-  }
-  float A = dot(d.xz, d.xz), B = dot(o.xz, d.xz), C = dot(o.xz, o.xz) - rad * rad;
-  if (A < 1e-12) {
-    if (C > 0.0) return false;
-  } else {
-    float disc = B * B - A * C;
-    if (disc < 0.0) return false;
-    float s = sqrt(disc);
-    tr.x = max(tr.x, (-B - s) / A);
-    tr.y = min(tr.y, (-B + s) / A);
-  }
+  if (!cylinder_span(o, d, vec3(0.0, ylo, 0.0), vec3(0.0, 1.0, 0.0), rad, yhi - ylo, tr)) return false;
+  tr.x = max(tr.x, tmin);
   return tr.x <= tr.y;
+}
+
+// The wall's slope dr/dy at fraction f of segment k, for its normal: each knot's slope is
+// the mean of the two segments it joins (a crease, normals more than acos(CREASE_COS)
+// apart, keeps each segment's own), interpolated along the segment, so normals are
+// continuous along a curved bowl (no contour bands) on the exact frustum. Twin of
+// Vessel::wall_slope (core/vessel/vessel.cpp). Only the hit pays the two extra fetches.
+float knot_slope(float other, float own) {
+  float c = (1.0 + other * own) * inversesqrt((1.0 + other * other) * (1.0 + own * own));
+  return c >= CREASE_COS ? 0.5 * (other + own) : own;
+}
+float wall_slope(Vessel v, int k, float f, bool inner) {
+  vec4 here = segment_knots(v, k), lo = segment_knots(v, max(k - 1, 0)), hi = segment_knots(v, min(k + 1, SEGMENTS - 1));
+  vec3 rise = inner ? vec3(lo.w - lo.y, here.w - here.y, hi.w - hi.y) : vec3(lo.z - lo.x, here.z - here.x, hi.z - hi.x);
+  vec3 s = rise * v.shape.inv_dy;
+  float below = k > 0 ? knot_slope(s.x, s.y) : s.y;
+  float above = k < SEGMENTS - 1 ? knot_slope(s.z, s.y) : s.y;
+  return mix(below, above, clamp(f, 0.0, 1.0));
 }
 
 // Walks the frustum segments the ray crosses, in the order it crosses them, and
@@ -72,8 +75,9 @@ Hit hit_wall(Vessel v, vec3 o, vec3 d, bool inner, float tmin) {
   // float round-off opens there: each segment reaches a hair (1e-4 of its height) into
   // its neighbours; adjacent cones meet at the shared knot, so the surface is the same.
   float crack = 1e-4 * v.shape.dy;
-  int k = k0;
-  for (int i = 0; i < count; ++i, k += stp) {
+  int k = k0, hit_k = -1;
+  float hit_t = INF;
+  for (int i = 0; i < count && hit_k < 0; ++i, k += stp) {
     ++g_cost;
     vec4 kn = segment_knots(v, k);
     float r0 = inner ? kn.y : kn.x;
@@ -91,11 +95,18 @@ Hit hit_wall(Vessel v, vec3 o, vec3 d, bool inner, float tmin) {
       if (p.y < ylo || p.y > yhi) continue;
       float r = length(p.xz);
       if (inside_torus(v, r, p.y) || clipped(v, p)) continue;
-      vec3 nrm = r > 0.0 ? normalize(vec3(p.x / r, -s, p.z / r)) : vec3(0.0, -1.0, 0.0);
-      return Hit(t, inner ? -nrm : nrm, inner ? M_GLASS_INNER : M_GLASS_OUTER, v.row);
+      hit_t = t;
+      hit_k = k;
+      break;
     }
   }
-  return no_hit();
+  if (hit_k < 0) return no_hit();
+  // The normal once, after the walk (llvmpipe pays for all of a loop's body each trip).
+  vec3 p = o + hit_t * d;
+  float r = length(p.xz);
+  float slope = wall_slope(v, hit_k, p.y * v.shape.inv_dy - float(hit_k), inner);
+  vec3 nrm = r > 0.0 ? normalize(vec3(p.x / r, -slope, p.z / r)) : vec3(0.0, -1.0, 0.0);
+  return Hit(hit_t, inner ? -nrm : nrm, inner ? M_GLASS_INNER : M_GLASS_OUTER, v.row);
 }
 
 // The rim bead: a torus around the axis at the wall top; only where it is outside the body.

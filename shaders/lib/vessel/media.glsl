@@ -3,6 +3,8 @@
 #define LIB_VESSEL_MEDIA_GLSL
 #include "generated/constants.glsl"
 #include "lib/scene/objects.glsl"
+#include "lib/vessel/intersect.glsl"
+#include "lib/liquid/body.glsl"
 
 // The medium on the far side of surface m for a path now in `from`; `below`: whether
 // the point lies under the liquid's surface (it decides what is behind the inner wall
@@ -20,6 +22,99 @@ int medium_across(int m, int from, bool below) {
 // Index of refraction of a medium of vessel v with glass g (air 1).
 float medium_ior(Vessel v, ObjectGlass g, int medium) {
   return medium == MEDIUM_GLASS ? g.glass_ior : (medium == MEDIUM_LIQUID ? v.liquid.ior : 1.0);
+}
+
+// Where the ray o + t r (local) crosses the cavity: within its cylinder (the radius at
+// o's height), above its floor and, with `drink`, below the surface plane. span: the
+// part inside, n_out: the outward normal where it leaves (the wall's, tilted by its
+// slope there; the plane's; the floor's). False when it misses.
+bool cavity_span(Vessel v, vec3 o, vec3 r, bool drink, out vec2 span, out vec3 n_out) {
+  // One knot fetch: the wall's radius and slope at o's height (the slope stands for the
+  // slope where the ray leaves; it matters for the tilt, which changes slowly).
+  float s = clamp(clamp(o.y, v.shape.base, v.body.height) * v.shape.inv_dy, 0.0, float(SEGMENTS));
+  int k = min(int(s), SEGMENTS - 1);
+  vec4 kn = segment_knots(v, k);
+  float R = mix(kn.y, kn.w, s - float(k)), slope = (kn.w - kn.y) * v.shape.inv_dy;
+  span = vec2(0.0, INF);
+  float A = dot(r.xz, r.xz), B = dot(o.xz, r.xz), C = dot(o.xz, o.xz) - R * R;
+  if (A > 1e-12) {
+    float disc = B * B - A * C;
+    if (disc < 0.0) return false;
+    float sq = sqrt(disc);
+    span = vec2(max((-B - sq) / A, 0.0), (-B + sq) / A);
+  } else if (C > 0.0) {
+    return false;
+  }
+  vec3 q = o + span.y * r;
+  n_out = normalize(vec3(q.x, -slope * length(q.xz), q.z));
+  if (drink) {
+    float dn = dot(v.liquid.plane_normal, r), under = v.liquid.plane_offset - dot(v.liquid.plane_normal, o);
+    if (dn > 1e-6 && under / dn < span.y) {
+      span.y = under / dn;
+      n_out = v.liquid.plane_normal;
+    } else if (dn < -1e-6) {
+      span.x = max(span.x, under / dn);
+    } else if (abs(dn) <= 1e-6 && under < 0.0) {
+      return false;
+    }
+  }
+  if (r.y < -1e-6 && (o.y - v.shape.base) / -r.y < span.y) {
+    span.y = (o.y - v.shape.base) / -r.y;
+    n_out = vec3(0.0, -1.0, 0.0);
+  } else if (r.y > 1e-6) {
+    span.x = max(span.x, (v.shape.base - o.y) / r.y);
+  } else if (abs(r.y) <= 1e-6 && o.y < v.shape.base) {
+    return false;
+  }
+  return span.x < span.y;
+}
+
+// The direction light going along r in a medium of index eta (over the air's) leaves in
+// through a surface of outward normal n_out, as if through parallel faces: light
+// crosses a glass wall into the air as from the drink straight into the air. Under
+// total internal reflection, the reflection.
+vec3 leave_through(vec3 r, vec3 n_out, float eta) {
+  vec3 n = dot(r, n_out) > 0.0 ? -n_out : n_out;
+  vec3 t = refract(r, n, eta);
+  return dot(t, t) > 0.0 ? t : reflect(r, n);
+}
+
+// Light reflected inside a medium at surface m (point p, reflected direction r, the
+// normal n facing the reflected side; all local): what reaches the eye of it per unit of
+// what it sees once out, and the direction `out` it leaves in. The path follows only the
+// refracted part of an interface, and the reflected part is a look-up of the
+// surroundings, which must first be absorbed along the way it would go and looked up
+// where it would leave (else internal reflections add the studio untinted, in
+// directions the tapered walls bend away: too bright, pinkish). In the drink: across it
+// to the cavity's wall, floor or surface. In the glass: across the wall, the base or the
+// rim bead's tube, and where it turns inwards (off the outer wall or the foot's
+// underside) across the cavity and its drink to the far side. Not a twin: the reference
+// follows these paths (docs/REFERENCE.md measures the difference).
+vec3 reflected_light(Vessel v, ObjectGlass g, int m, int medium, bool below, vec3 p, vec3 r, vec3 n, out vec3 out_dir) {
+  out_dir = r;
+  vec2 span;
+  vec3 n_out;
+  if (medium == MEDIUM_LIQUID) {
+    if (!cavity_span(v, p, r, true, span, n_out)) return vec3(1.0);
+    out_dir = leave_through(r, n_out, v.liquid.ior);
+    return medium_transmittance(v, g, MEDIUM_LIQUID, span.y - span.x);
+  }
+  if (medium != MEDIUM_GLASS) return vec3(1.0);
+  float across = abs(dot(r, n));
+  if (m == M_RIM) return medium_transmittance(v, g, MEDIUM_GLASS, 2.0 * v.shape.rim_minor * across);  // a chord of the tube
+  float thick = v.shape.base;
+  if (m != M_GLASS_BOTTOM && m != M_CAVITY_FLOOR) {  // a wall: across it, from its knot at p
+    vec4 kn = segment_knots(v, clamp(int(p.y * v.shape.inv_dy), 0, SEGMENTS - 1));
+    thick = (kn.x - kn.y) * length(n.xz);
+  }
+  vec3 tr = medium_transmittance(v, g, MEDIUM_GLASS, min(thick / max(across, 1e-3), v.body.height));
+  if ((m == M_GLASS_OUTER || m == M_GLASS_BOTTOM) && cavity_span(v, p, r, below, span, n_out)) {
+    if (below) tr *= medium_transmittance(v, g, MEDIUM_LIQUID, span.y - span.x);
+  } else {
+    n_out = -n;  // out through the face opposite the one it reflected off
+  }
+  out_dir = leave_through(r, n_out, g.glass_ior);
+  return tr;
 }
 
 #endif  // LIB_VESSEL_MEDIA_GLSL

@@ -27,7 +27,7 @@ std::vector<ParamDesc> make_table() {
       ROW(VesselParams, glass, rim_radius, Float, 0.0002f, 0.02f, "m",
           "Radius of the torus bead at the rim (kept between half and twice the wall thickness)"),
       ROW(VesselParams, glass, ior, Float, 1.0f, 2.5f, "", "Index of refraction of the glass"),
-      ROW(VesselParams, glass, roughness, Float, 0.005f, 1.0f, "", "GGX roughness of the glass surfaces (highlights)"),
+      ROW(VesselParams, glass, roughness, Float, 0.005f, 1.0f, "", "Roughness of the glass surfaces: how much they blur the key softbox's reflection"),
       ROW(VesselParams, glass, absorption, Vec3, 0.0f, 1000.0f, "1/m",
           "Beer-Lambert absorption of the glass (soda-lime is slightly green)"),
       // liquid
@@ -44,7 +44,7 @@ std::vector<ParamDesc> make_table() {
       ROW(VesselParams, liquid, haze, Float, 0.0f, 2000.0f, "1/m", "Cloudiness: scattering coefficient per metre"),
       ROW(VesselParams, liquid, haze_color, Color, 0.0f, 1.0f, "",
           "Single-scattering albedo of the haze"),
-      ROW(VesselParams, liquid, roughness, Float, 0.005f, 1.0f, "", "GGX roughness of the liquid surface"),
+      ROW(VesselParams, liquid, roughness, Float, 0.005f, 1.0f, "", "Roughness of the liquid surface: how much it blurs the key softbox's reflection"),
       ROW(VesselParams, liquid, slosh_stiffness, Float, 0.25f, 4.0f, "",
           "Scales the sloshing frequency squared (1: a real drink in this glass)"),
       ROW(VesselParams, liquid, slosh_damping, Float, 0.005f, 1.0f, "",

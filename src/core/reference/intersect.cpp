@@ -163,7 +163,8 @@ Hit hit_wall(const Vessel& v, bool inner, const Ray& ray, double tmin) {
       glm::dvec3 p = ray.at(ts[i]);
       double r = std::hypot(p.x, p.z);
       if (p.y < ylo || p.y > yhi || v.inside_torus(r, p.y)) continue;
-      const double s = (knots[size_t(k) + 1] - knots[size_t(k)]) / v.dy;
+      // The smooth normal of the profile (Vessel::wall_slope), on the exact frustum.
+      const double s = v.wall_slope(inner, k, p.y / v.dy - k);
       glm::dvec3 n = r > 0 ? glm::normalize(glm::dvec3(p.x / r, -s, p.z / r)) : glm::dvec3(0, -1, 0);
       return {ts[i], inner ? -n : n, inner ? Material::GlassInner : Material::GlassOuter};
     }

@@ -26,17 +26,4 @@ std::optional<glm::dvec3> refract_dir(const glm::dvec3& i, const glm::dvec3& n, 
 
 glm::dvec3 reflect_dir(const glm::dvec3& i, const glm::dvec3& n) { return i - 2 * glm::dot(n, i) * n; }
 
-double ggx_distribution(double NoH, double roughness) {
-  const double a2 = std::pow(roughness, 4.0);  // alpha = roughness^2
-  const double d = NoH * NoH * (a2 - 1) + 1;
-  return a2 / (std::numbers::pi * d * d);
-}
-
-double smith_visibility(double NoV, double NoL, double roughness) {
-  const double a2 = std::pow(roughness, 4.0);
-  const double gv = NoL * std::sqrt(NoV * NoV * (1 - a2) + a2);
-  const double gl = NoV * std::sqrt(NoL * NoL * (1 - a2) + a2);
-  return 0.5 / std::max(gv + gl, 1e-12);
-}
-
 }  // namespace draught

@@ -16,9 +16,4 @@ double fresnel_dielectric(double cos_i, double n1, double n2);
 std::optional<glm::dvec3> refract_dir(const glm::dvec3& i, const glm::dvec3& n, double eta);
 glm::dvec3 reflect_dir(const glm::dvec3& i, const glm::dvec3& n);
 
-// GGX (Trowbridge-Reitz) normal distribution and Smith height-correlated
-// visibility; specular = D * V * F * NoL.
-double ggx_distribution(double NoH, double roughness);
-double smith_visibility(double NoV, double NoL, double roughness);
-
 }  // namespace draught

@@ -125,7 +125,10 @@ class Tracer {
     const glm::dvec3 eye = ray.o;
     for (;;) {
       const Hit h = first_hit(geo_, ray, kEps);
-      double t_end = h.valid() ? h.t : kInf;
+      // A path inside a glass or drink that meets none of its surfaces has slipped out
+      // (a grazing turn about a smooth normal can leave the frustum's side): it leaves
+      // into the studio from where it is, as the picture's does.
+      const double t_end = h.valid() ? h.t : (medium == MediumKind::Air ? kInf : 0.0);
       // The medium along the segment: absorption, or a scattering event before its end.
       if (medium == MediumKind::Glass) {
         thr *= glm::exp(-media_[size_t(obj)].glass_absorption * t_end);

@@ -17,6 +17,14 @@ double lerp_knots(const std::vector<double>& k, double dy, double y) {
   return k[size_t(i)] * (1 - f) + k[size_t(i) + 1] * f;
 }
 
+// A segment's slope at its knot with a neighbour: the mean of the two (uniform knots:
+// the central difference), unless their normals (1, -own) and (1, -other) meet at a
+// crease; then its own.
+double knot_slope(double other, double own) {
+  const double c = (1 + other * own) / std::sqrt((1 + other * other) * (1 + own * own));
+  return c >= contract::kCreaseCos ? 0.5 * (other + own) : own;
+}
+
 double frustum_volume(double r0, double r1, double h) {
   return std::numbers::pi * h / 3.0 * (r0 * r0 + r0 * r1 + r1 * r1);
 }
@@ -24,6 +32,18 @@ double frustum_volume(double r0, double r1, double h) {
 
 double Vessel::outer_radius(double y) const { return lerp_knots(r_outer, dy, y); }
 double Vessel::inner_radius(double y) const { return lerp_knots(r_inner, dy, y); }
+
+double Vessel::wall_slope(bool inner, int k, double f) const {
+  const std::vector<double>& r = inner ? r_inner : r_outer;
+  const int last = kSegments - 1;
+  k = std::clamp(k, 0, last);
+  auto seg = [&](int i) { return (r[size_t(i) + 1] - r[size_t(i)]) / dy; };
+  const double s = seg(k);
+  const double below = k > 0 ? knot_slope(seg(k - 1), s) : s;
+  const double above = k < last ? knot_slope(seg(k + 1), s) : s;
+  f = std::clamp(f, 0.0, 1.0);
+  return below * (1 - f) + above * f;
+}
 
 bool Vessel::inside_torus(double r, double y) const {
   const double a = r - rim_major, b = y - height;

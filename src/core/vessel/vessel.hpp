@@ -21,6 +21,12 @@ struct Vessel {
 
   double outer_radius(double y) const;   // linear inside a segment
   double inner_radius(double y) const;
+  // The wall's slope dr/dy for its normal at fraction f (0..1) of segment k: each knot's
+  // slope is the mean of the two segments it joins (where they meet at a crease, more
+  // than acos(CREASE_COS) apart, each keeps its own), interpolated along the segment.
+  // Normals are then continuous along a curved bowl (no contour bands) while the surface
+  // stays the exact frustum. GLSL twin: wall_slope in shaders/lib/vessel/intersect.glsl.
+  double wall_slope(bool inner, int k, double f) const;
   double cavity_volume() const;               // from base to height
   double cavity_volume_below(double h) const;  // exact for the segmented profile
   double fill_height(double fraction) const;   // inverse of the above, fraction of the cavity

@@ -2,11 +2,16 @@
 // brute-force integrals.
 #include "core/vessel/vessel.hpp"
 
+#include "core/vessel/profile.hpp"
+
 #include "test_common.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <vector>
 #include <numbers>
 
 namespace draught {
@@ -153,6 +158,86 @@ TEST_P(PresetGlassVolume, InnerWallIsOuterMinusThicknessClampedAtZero) {
 
 INSTANTIATE_TEST_SUITE_P(Presets, PresetGlassVolume,
                          ::testing::Values("pint", "nonic", "wine", "flute", "tulip", "weizen"));
+
+// The angle in degrees between the profile normals (1, -a) and (1, -b) of two slopes.
+double normal_angle(double a, double b) {
+  return std::acos(std::clamp((1 + a * b) / std::sqrt((1 + a * a) * (1 + b * b)), -1.0, 1.0)) * 180 / kPi;
+}
+
+class CurvedBowlNormals : public ::testing::TestWithParam<const char*> {};
+
+// The shading slope is one value at every knot, seen from either segment: the normal has
+// no step where the frustum segments meet (the contour bands of one normal per segment).
+TEST_P(CurvedBowlNormals, SlopeIsContinuousAcrossEveryKnot) {
+  const Vessel v = test::preset_vessel(GetParam());
+  double worst_step = 0, worst_segment_step = 0;
+  for (bool inner : {false, true})
+    for (int k = 1; k < Vessel::kSegments; ++k) {
+      const double below = v.wall_slope(inner, k - 1, 1.0), above = v.wall_slope(inner, k, 0.0);
+      const auto& r = inner ? v.r_inner : v.r_outer;
+      const double s0 = (r[size_t(k)] - r[size_t(k) - 1]) / v.dy, s1 = (r[size_t(k) + 1] - r[size_t(k)]) / v.dy;
+      if (normal_angle(s0, s1) > std::acos(double(contract::kCreaseCos)) * 180 / kPi) continue;  // a crease
+      worst_step = std::max(worst_step, std::fabs(below - above));
+      worst_segment_step = std::max(worst_segment_step, normal_angle(s0, s1));
+    }
+  EXPECT_LT(worst_step, 1e-12) << "the normal jumps at a knot (slope step)";
+  // The bowl is curved: one normal per segment would jump by this much.
+  EXPECT_GT(worst_segment_step, 0.3);
+}
+
+// Away from creases the smooth normal follows the designer's curve (the profile's own
+// slope, by a fine central difference) more closely than one normal per segment does.
+// (Where the curve's curvature jumps, at its control points, neither is exact.)
+TEST_P(CurvedBowlNormals, SlopeFollowsTheProfileCurve) {
+  const Params p = test::params_with_glass(GetParam());
+  const Vessel v = build_vessel(p.glass);
+  const ProfileCurve curve(p.glass.profile);
+  std::vector<double> err, err_segment;
+  for (int k = 2; k + 2 < Vessel::kSegments; ++k)
+    for (double f : {0.0, 0.25, 0.5, 0.75}) {
+      const double y = (k + f) * v.dy, h = 1e-6;
+      const double truth = (curve.radius(y + h) - curve.radius(y - h)) / (2 * h);
+      const double a = (v.r_outer[size_t(k)] - v.r_outer[size_t(k) - 1]) / v.dy;
+      const double b = (v.r_outer[size_t(k) + 1] - v.r_outer[size_t(k)]) / v.dy;
+      const double c = (v.r_outer[size_t(k) + 2] - v.r_outer[size_t(k) + 1]) / v.dy;
+      if (std::max(normal_angle(a, b), normal_angle(b, c)) > 5) continue;  // near a crease or a sharp turn
+      err.push_back(normal_angle(v.wall_slope(false, k, f), truth));
+      err_segment.push_back(normal_angle(b, truth));
+    }
+  ASSERT_GT(err.size(), 250u);
+  auto mean = [](const std::vector<double>& e) {
+    double s = 0;
+    for (double x : e) s += x;
+    return s / double(e.size());
+  };
+  auto p90 = [](std::vector<double> e) {
+    std::nth_element(e.begin(), e.begin() + ptrdiff_t(e.size() * 9 / 10), e.end());
+    return e[e.size() * 9 / 10];
+  };
+  std::printf("%s: degrees from the curve's normal: smooth mean %.3f p90 %.3f, per segment mean %.3f p90 %.3f\n",
+              GetParam(), mean(err), p90(err), mean(err_segment), p90(err_segment));
+  EXPECT_LT(mean(err), 0.5 * mean(err_segment));
+  EXPECT_LT(p90(err), 0.5 * p90(err_segment));
+  EXPECT_LT(p90(err), 0.25);
+}
+
+// A crease (the wine glass's foot meeting its stem) stays sharp: each side keeps its own
+// segment's slope there.
+TEST(CurvedBowlNormals, CreasesKeepEachSegmentsOwnSlope) {
+  const Vessel v = test::preset_vessel("wine");
+  int creases = 0;
+  for (int k = 1; k < Vessel::kSegments; ++k) {
+    const double s0 = (v.r_outer[size_t(k)] - v.r_outer[size_t(k) - 1]) / v.dy;
+    const double s1 = (v.r_outer[size_t(k) + 1] - v.r_outer[size_t(k)]) / v.dy;
+    if (normal_angle(s0, s1) <= std::acos(double(contract::kCreaseCos)) * 180 / kPi + 1) continue;
+    ++creases;
+    EXPECT_DOUBLE_EQ(v.wall_slope(false, k - 1, 1.0), s0) << "knot " << k;
+    EXPECT_DOUBLE_EQ(v.wall_slope(false, k, 0.0), s1) << "knot " << k;
+  }
+  EXPECT_GT(creases, 0) << "the wine glass's foot meets its stem at a crease";
+}
+
+INSTANTIATE_TEST_SUITE_P(Bowls, CurvedBowlNormals, ::testing::Values("wine", "tulip", "flute"));
 
 TEST(VesselBuild, RimRadiusIsClampedBetweenHalfAndTwiceTheWall) {
   const float wall = 0.003f;
