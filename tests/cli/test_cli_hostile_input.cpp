@@ -128,7 +128,7 @@ TEST_F(Hostile, UnknownVerbSuggestsTheNearest) {
   expect_error(r, {"draught: error: unknown command \"rendr\" (did you mean 'render'?)", "presets, validate"});
   EXPECT_FALSE(contains(r.err, "subcommand is required")) << r.describe();
   expect_error(draught({"coffee"}),
-               {"unknown command \"coffee\"; expected render, presets, validate, params or bench"});
+               {"unknown command \"coffee\"; expected render, presets, validate, params, environment or bench"});
 }
 
 TEST_F(Hostile, UnknownFlagSuggestsTheNearest) {
@@ -143,7 +143,7 @@ TEST_F(Hostile, UnknownFlagSuggestsTheNearest) {
 TEST_F(Hostile, MissingValueAndMissingFiles) {
   expect_error(render({"--fps"}), {"draught: error: --fps: expected a value after it", "Frames per second"});
   expect_error(draught({"validate"}), {"validate: expected one or more preset or timeline files"});
-  expect_error(draught({}), {"expected a command: render, presets, validate, params or bench"});
+  expect_error(draught({}), {"expected a command: render, presets, validate, params, environment or bench"});
 }
 
 TEST_F(Hostile, BadNumbersNameFlagValueAndRange) {
