@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <string>
+#include <unistd.h>
 
 namespace draught::test {
 
@@ -41,5 +42,24 @@ inline ::testing::AssertionResult has(const std::string& message, std::initializ
       return ::testing::AssertionFailure() << "message \"" << message << "\" lacks \"" << p << "\"";
   return ::testing::AssertionSuccess();
 }
+
+// A fresh, empty folder per test (dir_), named after the suite's prefix, the process and
+// the test, removed afterwards.
+class TempDirTest : public ::testing::Test {
+ protected:
+  explicit TempDirTest(std::string prefix) : prefix_(std::move(prefix)) {}
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           (prefix_ + "-" + std::to_string(::getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::filesystem::path dir_;
+
+ private:
+  std::string prefix_;
+};
 
 }  // namespace draught::test

@@ -3,6 +3,8 @@
 #include "core/io/files.hpp"
 #include "core/io/temporaries.hpp"
 
+#include "test_common.hpp"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -16,15 +18,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class Files : public ::testing::Test {
+class Files : public test::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("draught-files-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  Files() : TempDirTest("draught-files") {}
   std::vector<std::string> listing() const {
     std::vector<std::string> names;
     for (auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
@@ -39,7 +35,6 @@ class Files : public ::testing::Test {
     }
     return "";
   }
-  fs::path dir_;
 };
 
 bool has(const std::string& s, const std::string& needle) { return s.find(needle) != std::string::npos; }

@@ -50,15 +50,9 @@ std::string error_of(std::string_view bytes, const std::string& name = "env.hdr"
   return "";
 }
 
-class HdrImageFiles : public ::testing::Test {
+class HdrImageFiles : public test::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("draught-hdr-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  HdrImageFiles() : TempDirTest("draught-hdr") {}
   // An RGBA float EXR of the pattern (tinyexr writes it), read back as bytes.
   std::string exr_bytes(int w, int h, const std::vector<float>& rgba) {
     const fs::path p = dir_ / "image.exr";
@@ -66,7 +60,6 @@ class HdrImageFiles : public ::testing::Test {
     EXPECT_EQ(SaveEXR(rgba.data(), w, h, 4, 0, p.c_str(), &err), TINYEXR_SUCCESS) << (err ? err : "");
     return read_whole_file(p, kMaxImageFileBytes, "an image");
   }
-  fs::path dir_;
 };
 
 TEST(HdrImage, ARadianceFileDecodesToItsLinearValues) {
