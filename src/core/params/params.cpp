@@ -16,7 +16,43 @@ namespace {
 // compile), the range, unit and doc. Defaults come from the structs' initializers.
 #define ROW DRAUGHT_PARAM_ROW
 
+std::vector<ParamDesc> make_object_and_env_rows();
+std::vector<ParamDesc> make_camera_and_render_rows();
+
+// The rows of one area light's group (light, strips, backlight): the same fields.
+template <auto Group>
+void add_light_rows(std::vector<ParamDesc>& rows, const std::string& g, const std::string& what) {
+  using L = LightParams;
+  rows.push_back(param_row<ParamType::Enum, Group, &L::shape>(g + ".shape", 0, 0, "",
+      "rect: a rectangular softbox facing the scene; sphere: a round lamp (diameter " + g + ".width)",
+      std::vector<std::string>{"rect", "sphere"}));
+  rows.push_back(param_row<ParamType::Vec3, Group, &L::direction>(g + ".direction", -1.0f, 1.0f, "",
+      "Direction from the scene's centre towards " + what + " (normalised)"));
+  rows.push_back(param_row<ParamType::Float, Group, &L::distance>(g + ".distance", 0.05f, 20.0f, "m",
+      "Distance of " + what + " from the scene's centre"));
+  rows.push_back(param_row<ParamType::Float, Group, &L::width>(g + ".width", 0.005f, 10.0f, "m", "Width of " + what));
+  rows.push_back(param_row<ParamType::Float, Group, &L::height>(g + ".height", 0.005f, 10.0f, "m",
+      "Height of " + what + " (rect)"));
+  rows.push_back(param_row<ParamType::Color, Group, &L::color>(g + ".color", 0.0f, 1.0f, "", "Colour of " + what));
+  rows.push_back(param_row<ParamType::Float, Group, &L::power>(g + ".power", 0.0f, 1000.0f, "W",
+      "Power of " + what + ": radiant flux of a Lambertian emitter (0: off)"));
+}
+
 std::vector<ParamDesc> make_table() {
+  std::vector<ParamDesc> rows = make_object_and_env_rows();
+  add_light_rows<&SceneParams::light>(rows, "light", "the key light");
+  rows.push_back(ROW(SceneParams, light, intensity, Float, 0.0f, 100.0f, "",
+                     "Deprecated, has no effect: the key light's power is light.power (W)"));
+  rows.push_back(ROW(SceneParams, light, size, Float, 0.5f, 60.0f, "deg",
+                     "Deprecated, has no effect: the key light's size is light.width and light.height (m)"));
+  add_light_rows<&SceneParams::strips>(rows, "strips", "each strip softbox (the right one mirrors the left)");
+  add_light_rows<&SceneParams::backlight>(rows, "backlight", "the backlight");
+  const std::vector<ParamDesc> rest = make_camera_and_render_rows();
+  rows.insert(rows.end(), rest.begin(), rest.end());
+  return rows;
+}
+
+std::vector<ParamDesc> make_object_and_env_rows() {
   return {
       // glass
       ROW(VesselParams, glass, profile, Curve, 0.0005f, 0.6f, "m",
@@ -87,16 +123,23 @@ std::vector<ParamDesc> make_table() {
       ROW(SceneParams, env, ground, Color, 0.0f, 100.0f, "", "Studio colour below the horizon"),
       ROW(SceneParams, env, strip_intensity, Float, 0.0f, 100.0f, "", "Brightness of the two vertical strip lights"),
       ROW(SceneParams, env, backdrop_glow, Float, 0.0f, 100.0f, "", "Brightness of the glow behind the glass"),
-      ROW(SceneParams, env, floor, Bool, 0.0f, 1.0f, "", "Show a checker floor at y = 0 with the glass's shadow"),
+      ROW(SceneParams, env, floor, Bool, 0.0f, 1.0f, "", "A floor at y = 0 (env.backdrop) with the glasses' shadows"),
+      ROW(SceneParams, env, backdrop, Enum, 0, 0, "",
+          "sweep: a seamless paper sweep curving up into a wall behind the scene (the packshot studio); "
+          "checker: a checker floor to the horizon (a test environment)",
+          (std::vector<std::string>{"sweep", "checker"})),
+      ROW(SceneParams, env, sweep_color, Color, 0.0f, 1.0f, "", "Albedo of the sweep's paper"),
+      ROW(SceneParams, env, sweep_distance, Float, 0.05f, 10.0f, "m",
+          "How far behind the scene's centre the sweep's floor starts to curve up into its wall"),
+      ROW(SceneParams, env, sweep_radius, Float, 0.01f, 5.0f, "m", "Radius of the sweep's curve from floor to wall"),
       ROW(SceneParams, env, checker_size, Float, 0.001f, 10.0f, "m", "Edge length of one floor checker square"),
       ROW(SceneParams, env, floor_a, Color, 0.0f, 1.0f, "", "Floor albedo, light squares"),
       ROW(SceneParams, env, floor_b, Color, 0.0f, 1.0f, "", "Floor albedo, dark squares"),
-      // key light
-      ROW(SceneParams, light, direction, Vec3, -1.0f, 1.0f, "",
-          "Direction towards the key light (normalised)"),
-      ROW(SceneParams, light, color, Color, 0.0f, 1.0f, "", "Key light colour"),
-      ROW(SceneParams, light, intensity, Float, 0.0f, 100.0f, "", "Key light intensity"),
-      ROW(SceneParams, light, size, Float, 0.5f, 60.0f, "deg", "Angular radius of the key softbox"),
+  };
+}
+
+std::vector<ParamDesc> make_camera_and_render_rows() {
+  return {
       // camera
       ROW(SceneParams, camera, auto_frame, Bool, 0.0f, 1.0f, "",
           "Frame the whole glass automatically, looking from the direction of eye - target"),

@@ -71,6 +71,8 @@ struct BubbleParams {
 };
 
 enum class EnvMode { Studio = 0, Constant = 1 };
+enum class Backdrop { Sweep = 0, Checker = 1 };
+enum class LightShape { Rect = 0, Sphere = 1 };
 enum class Tonemap { None = 0, Aces = 1 };
 
 struct EnvParams {
@@ -82,17 +84,52 @@ struct EnvParams {
   float strip_intensity = 3.0f;
   float backdrop_glow = 2.0f;
   bool floor = true;
+  int backdrop = int(Backdrop::Sweep);  // Backdrop: what the floor is
+  glm::vec3 sweep_color{0.80f, 0.79f, 0.77f};  // the sweep's paper albedo
+  float sweep_distance = 0.35f;  // m behind the scene's centre where the floor starts to curve up
+  float sweep_radius = 0.30f;    // m: radius of the curve into the wall
   float checker_size = 0.04f;
   glm::vec3 floor_a{0.58f, 0.56f, 0.53f};
   glm::vec3 floor_b{0.44f, 0.42f, 0.40f};
 };
 
+// One area light of the studio (core/environment/lights.hpp): placed `distance` metres
+// from the scene's centre in `direction`, facing it, emitting `power` watts.
 struct LightParams {
-  glm::vec3 direction{-0.55f, 0.75f, 0.45f};  // towards the light
+  int shape = int(LightShape::Rect);          // LightShape
+  glm::vec3 direction{-0.55f, 0.75f, 0.45f};  // from the scene's centre towards the light
+  float distance = 1.0f;                      // m from the scene's centre
+  float width = 0.6f;                         // m (a sphere's diameter)
+  float height = 0.6f;                        // m (rect only)
   glm::vec3 color{1.0f, 0.97f, 0.92f};
-  float intensity = 2.5f;
-  float size = 12.0f;  // angular radius, degrees
+  float power = 3.0f;  // W, radiant flux of a Lambertian emitter
+  float intensity = 2.5f;  // deprecated, accepted, no effect (light.power)
+  float size = 12.0f;      // deprecated, accepted, no effect (light.width, light.height)
 };
+
+// The studio's strip softboxes: a pair, the right one the left one mirrored across x = 0.
+inline LightParams default_strips() {
+  LightParams l;
+  l.direction = {-0.97f, 0.12f, -0.2f};
+  l.distance = 0.6f;
+  l.width = 0.12f;
+  l.height = 0.9f;
+  l.color = {1.0f, 1.0f, 1.0f};
+  l.power = 2.0f;
+  return l;
+}
+
+// The backlight: a panel behind the scene facing it, seen through the drinks.
+inline LightParams default_backlight() {
+  LightParams l;
+  l.direction = {0.0f, 0.1f, -1.0f};
+  l.distance = 0.45f;
+  l.width = 0.5f;
+  l.height = 0.35f;
+  l.color = {1.0f, 0.98f, 0.95f};
+  l.power = 2.0f;
+  return l;
+}
 
 struct CameraParams {
   bool auto_frame = true;  // place the camera to frame the scene; eye/target then only give the direction
@@ -127,7 +164,9 @@ struct VesselParams {
 // The groups that belong to the scene as a whole: surroundings, light, camera, output.
 struct SceneParams {
   EnvParams env;
-  LightParams light;
+  LightParams light;  // the key light
+  LightParams strips = default_strips();
+  LightParams backlight = default_backlight();
   CameraParams camera;
   RenderParams render;
 };
