@@ -120,7 +120,7 @@ std::vector<ParamValue> out_of_range(const ParamDesc& d) {
 
 TEST(ParamTable, PathsAreUniqueAndGrouped) {
   std::set<std::string> seen;
-  const std::set<std::string> groups = {"glass", "liquid", "foam", "bubbles", "env", "light", "camera", "clip", "render"};
+  const std::set<std::string> groups = {"glass", "liquid", "foam", "bubbles", "env", "light", "strips", "backlight", "camera", "clip", "render"};
   for (const auto& d : param_table()) {
     EXPECT_TRUE(seen.insert(d.path).second) << "duplicate path " << d.path;
     const auto dot = d.path.find('.');
