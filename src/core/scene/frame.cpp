@@ -163,7 +163,22 @@ FrameState assemble_frame(const SceneParams& p, std::vector<VesselFrame> vessels
   f.selected = std::clamp(selected, 0, std::max(0, int(f.vessels.size()) - 1));
   f.camera = frame_camera(p.camera, f.vessels);
   f.environment = environment_frame(p.env);
+  f.lights = light_rig(p, scene_aim(f.vessels));
   return f;
+}
+
+glm::dvec3 scene_aim(const std::vector<VesselFrame>& vessels) {
+  if (vessels.empty()) return glm::dvec3(0.0);
+  glm::dvec2 lo(1e30), hi(-1e30);
+  double top = 0;
+  for (const VesselFrame& v : vessels) {
+    const glm::dvec2 at(v.placement.position.x, v.placement.position.z);
+    lo = glm::min(lo, at);
+    hi = glm::max(hi, at);
+    top = std::max(top, double(v.placement.position.y) + v.vessel.height);
+  }
+  const glm::dvec2 mid = 0.5 * (lo + hi);
+  return {mid.x, 0.5 * top, mid.y};
 }
 
 FrameState make_frame(const Scene& s) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/bubbles/bubbles.hpp"
+#include "core/environment/lights.hpp"
 #include "core/environment/reflection.hpp"
 #include "core/foam/foam.hpp"
 #include "core/params/params.hpp"
@@ -49,7 +50,13 @@ struct FrameState {
   // desktop viewer: the part its panel and overlay leave free). The whole picture by default.
   PictureRect view;
   EnvironmentFrame environment;  // what the surroundings give the renderer (core/environment)
+  LightRig lights;               // the studio's area lights, placed around scene_aim
 };
+
+// The scene's centre the studio's lights (and the sweep) are placed around: the middle of
+// the glasses' placements across the floor, at half the tallest glass's height. Placements,
+// not poses: a glass tipped by the hand does not move the lights.
+glm::dvec3 scene_aim(const std::vector<VesselFrame>&);
 
 // The frame of these vessels in a scene with these parameters (the camera framed).
 FrameState assemble_frame(const SceneParams&, std::vector<VesselFrame>, int selected = 0);

@@ -134,3 +134,24 @@ TEST(Framing, TheCameraBacksAwayContinuouslyAsTheTiltGrows) {
 
 }  // namespace
 }  // namespace draught
+
+namespace draught {
+namespace {
+
+TEST(Framing, TheStudioIsPlacedAroundTheMiddleOfTheGlassesAsTheyStand) {
+  Scene s = single_glass_scene(default_params());
+  s.objects.push_back(s.objects[0]);
+  s.objects[0].placement.position = {-0.1f, 0, 0.02f};
+  s.objects[1].placement.position = {0.3f, 0, -0.04f};
+  const FrameState f = make_frame(s);
+  const glm::dvec3 aim = scene_aim(f.vessels);
+  EXPECT_NEAR(aim.x, 0.1, 1e-6);
+  EXPECT_NEAR(aim.z, -0.01, 1e-6);
+  EXPECT_NEAR(aim.y, 0.5 * f.vessels[0].vessel.height, 1e-9);
+  ASSERT_EQ(f.lights.lights.size(), 4u);
+  EXPECT_EQ(f.lights.aim, aim);
+  EXPECT_NEAR(glm::distance(f.lights.lights[0].center, aim), f.params.light.distance, 1e-5);
+}
+
+}  // namespace
+}  // namespace draught
