@@ -163,7 +163,9 @@ FrameState assemble_frame(const SceneParams& p, std::vector<VesselFrame> vessels
   f.selected = std::clamp(selected, 0, std::max(0, int(f.vessels.size()) - 1));
   f.camera = frame_camera(p.camera, f.vessels);
   f.environment = environment_frame(p.env);
-  f.lights = light_rig(p, scene_aim(f.vessels));
+  const glm::dvec3 aim = scene_aim(f.vessels);
+  f.lights = light_rig(p, aim);
+  f.backdrop = backdrop_surface(p.env, aim);
   return f;
 }
 

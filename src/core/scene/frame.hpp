@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/bubbles/bubbles.hpp"
+#include "core/environment/backdrop.hpp"
 #include "core/environment/lights.hpp"
 #include "core/environment/reflection.hpp"
 #include "core/foam/foam.hpp"
@@ -51,6 +52,7 @@ struct FrameState {
   PictureRect view;
   EnvironmentFrame environment;  // what the surroundings give the renderer (core/environment)
   LightRig lights;               // the studio's area lights, placed around scene_aim
+  BackdropSurface backdrop;      // what the scene stands on (the sweep around scene_aim)
 };
 
 // The scene's centre the studio's lights (and the sweep) are placed around: the middle of
