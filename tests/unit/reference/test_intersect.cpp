@@ -481,7 +481,7 @@ struct TestScene {
 // rest of the cavity below the plane.
 Region classify(const SceneGeometry& scene, const dvec3& p) {
   const VesselGeometry& s = scene.vessels.front();
-  const bool floor = scene.floor;
+  const bool floor = scene.backdrop.present;  // the endless checker floor y = 0
   const Vessel& v = *s.vessel;
   const double r = std::hypot(p.x, p.z), y = p.y;
   const bool body = y >= 0 && y <= v.height && r <= v.outer_radius(y) && (y < v.base || r >= v.inner_radius(y));
@@ -642,7 +642,8 @@ TestScene pint_scene(double liquid_offset, dvec3 liquid_n = {0, 1, 0}, bool floo
   vg.liquid.n = glm::normalize(liquid_n);
   vg.liquid.offset = liquid_offset;
   s.g.vessels = {vg};
-  s.g.floor = floor;
+  s.g.backdrop.present = floor;
+  s.g.backdrop.kind = Backdrop::Checker;
   return s;
 }
 
