@@ -260,20 +260,27 @@ class Tracer {
     return true;
   }
 
-  // The heads along the world ray over [0, t_end] in order of entry, as (t0, t1, object).
+  // The heads along the world ray over [0, t_end] in order of entry, as (t0, t1, object);
+  // on the stack (a scene has at most kMaxSceneObjects), as this runs for every segment.
   struct Stretch {
     double t0, t1;
     int obj;
   };
-  std::vector<Stretch> heads_along(const Ray& ray, double t_end) const {
-    std::vector<Stretch> out;
+  struct Stretches {
+    std::array<Stretch, kMaxSceneObjects> at;
+    int count = 0;
+    const Stretch* begin() const { return at.data(); }
+    const Stretch* end() const { return at.data() + count; }
+  };
+  Stretches heads_along(const Ray& ray, double t_end) const {
+    Stretches out;
     for (size_t i = 0; i < heads_.size(); ++i) {
       if (heads_[i].empty()) continue;
       const VesselMedia& m = media_[i];
       double t0 = 0, t1 = t_end;
-      if (heads_[i].interval(m.local_point(ray.o), m.local_dir(ray.d), t0, t1)) out.push_back({t0, t1, int(i)});
+      if (heads_[i].interval(m.local_point(ray.o), m.local_dir(ray.d), t0, t1)) out.at[size_t(out.count++)] = {t0, t1, int(i)};
     }
-    std::sort(out.begin(), out.end(), [](const Stretch& a, const Stretch& b) { return a.t0 < b.t0; });
+    std::sort(out.at.begin(), out.at.begin() + out.count, [](const Stretch& a, const Stretch& b) { return a.t0 < b.t0; });
     return out;
   }
 
@@ -281,7 +288,7 @@ class Tracer {
   // the heads before it.
   AirEvent air_segment(const Ray& ray, double t_end, Rng& rng) const {
     AirEvent e;
-    const std::vector<Stretch> stretches = heads_along(ray, t_end);
+    const Stretches stretches = heads_along(ray, t_end);
     double end = t_end;
     for (const Stretch& s : stretches) {
       const VesselMedia& m = media_[size_t(s.obj)];
