@@ -610,6 +610,11 @@ std::string check_first_hit(const SceneGeometry& scene, const Ray& ray, double t
       else if (r >= v.inner_radius(p.y)) err << "liquid hit outside the cavity";
       else if (glm::length(hit.n - s.liquid.n) > 1e-12) err << "liquid normal is not the plane normal";
       break;
+    case Material::ClipGlass:
+    case Material::ClipLiquid:
+      if (std::fabs(glm::dot(dvec3(s.clip), p) - s.clip.w) > 1e-9) err << "cut-face hit off the clip plane";
+      else if (!parallel(dvec3(s.clip))) err << "cut-face normal not the clip plane's";
+      break;
     case Material::Floor:
       if (std::fabs(p.y) > 1e-12 || r <= v.r_outer.front()) err << "floor hit not on the floor";
       else if (glm::length(hit.n - dvec3(0, 1, 0)) > 1e-12) err << "floor normal not up";
