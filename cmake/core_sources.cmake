@@ -19,6 +19,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/environment/reflection.cpp
   src/core/environment/studio.cpp
   src/core/environment/lights.cpp
+  src/core/environment/sky_irradiance.cpp
   src/core/environment/backdrop.cpp
   src/core/environment/environment_map.cpp
   src/core/environment/environment_bake.cpp

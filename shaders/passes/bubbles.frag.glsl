@@ -21,12 +21,12 @@ void main() {
   // Liquid to gas: total reflection beyond sin = 1 / n_liquid.
   float sin_i = sqrt(min(q2, 1.0)), sin_c = 1.0 / v_liquid_ior;
   float F = sin_i >= sin_c ? 1.0 : mix(0.02, 1.0, pow(sin_i / sin_c, 6.0));
-  // What the bubble mirrors (core/environment), and the key light's glint where the
-  // light's direction falls on the impostor.
+  // What the bubble mirrors (core/environment: the lights, the backdrop, the sky), and
+  // the glint of the light giving the most light where its direction falls on the impostor.
   vec3 reflected = frame.bubble_env * F;
-  vec2 glint_at = 0.45 * vec2(dot(frame.light_dir, frame.cam_right), -dot(frame.light_dir, frame.cam_up));
+  vec2 glint_at = 0.45 * vec2(dot(frame.glint_dir, frame.cam_right), -dot(frame.glint_dir, frame.cam_up));
   float glint = exp(-dot(v_q - glint_at, v_q - glint_at) * 40.0);
-  vec3 c = v_tint * (reflected + frame.light_color * frame.light_intensity * 0.8 * glint) * frame.exposure;
+  vec3 c = v_tint * (reflected + frame.glint * 0.8 * glint) * frame.exposure;
   c = frame.tonemap == 1 ? aces_filmic(c) : c;
   float alpha = edge * clamp(max(F, glint) * 0.85 + 0.08 * cos_i, 0.0, 1.0);
   frag_color = vec4(linear_to_srgb(c) * alpha, alpha);

@@ -18,6 +18,8 @@
 #include "lib/liquid/body.glsl"
 #include "lib/foam/head.glsl"
 #include "lib/environment/studio.glsl"
+#include "lib/environment/lights.glsl"
+#include "lib/environment/backdrop.glsl"
 #include "lib/environment/floor.glsl"
 #include "lib/output/tonemap.glsl"
 
@@ -36,9 +38,12 @@ float max3(vec3 v) { return max(v.r, max(v.g, v.b)); }
 
 // ---- stage: the surroundings ----
 
-// What a ray sees past every object: the floor or the studio from the air; from inside
-// a glass or a drink (a path that ran out of events) the studio.
-vec3 surroundings(vec3 o, vec3 d, int medium) { return medium == MEDIUM_AIR ? background(o, d) : studio_sky(d); }
+// What a ray sees past every object, from its own point: the nearest of a light's front
+// and the backdrop, else the sky, from the air; from inside a glass or a drink (a path
+// that ran out of events) the lights and the sky.
+vec3 surroundings(vec3 o, vec3 d, int medium) {
+  return medium == MEDIUM_AIR ? background(o, d, 0.0) : lights_and_sky(o, d, 0.0);
+}
 
 // ---- the geometry of an interface (shared by the picture and the path-event view) ----
 
@@ -88,12 +93,17 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
   path.thr *= medium_transmittance(v, g, path.medium, h.t);
   // The floor is shaded at most once per interface, from one place (its shading loops
   // over every glass): where the path ends on it, or where the reflection meets it.
-  vec3 floor_at = p, floor_weight = vec3(0.0);
+  vec3 floor_at = p, floor_n = h.n, floor_weight = vec3(0.0);
   float floor_dist = length(p - frame.cam_eye);
   bool on_floor = h.m == M_FLOOR;
   Crossing c;
   if (on_floor) {
-    floor_weight = path.thr;
+    // A light's front between the path's point and the backdrop (the backlight behind
+    // the glasses) is seen in front of it.
+    float tl;
+    vec4 light = lights_seen(path.o, path.d, 0.0, h.t, tl);
+    path.radiance += path.thr * light.a * light.rgb;
+    floor_weight = path.thr * (1.0 - light.a);
     path.thr = vec3(0.0);
   } else {
     vec3 pl = to_local_point(v, p);
@@ -102,43 +112,46 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
     if (h.m == M_GLASS_INNER && !below) {  // lacing on the wall
       ObjectFoam f = fetch_object_foam(v.row);
       float cover = lacing_cover(v, f, pl);
-      path.radiance += path.thr * cover * lacing_light(v, f, to_local_dir(v, path.d), to_local_dir(v, frame.light_dir));
+      path.radiance += path.thr * cover * lacing_light(v, f, to_local_dir(v, path.d));
       // and the bubbles the head presses on it, seen at the pixel's width there
       float footprint = 2.0 * frame.cam_tan_half_vfov * frame.viewport_inv.y * length(p - frame.cam_eye);
       path.thr *= (1.0 - cover) * head_wall_cells(v, f, pl, footprint);
     }
 #endif
     c = crossing_at(path, h, v, g, below);
-    // The key light is the studio's softbox, seen in the reflection (blurred by the
-    // surface's roughness) or through the refraction: no highlight on top of it.
+    // The lights are seen in the reflection (blurred by the surface's roughness) or
+    // through the refraction, along the ray from its point: no highlight on top.
     float rough = h.m == M_LIQUID_SURFACE || h.m == M_CLIP_LIQUID ? v.liquid.roughness : g.glass_roughness;
     if (c.F < 1.0) {
-      // The reflection sees the surroundings: the floor or the studio from the air, the
-      // studio from inside a glass.
+      // The reflection sees the surroundings: a light, the backdrop or the sky from the
+      // air; the lights and the sky from inside a glass.
       if (frame.transparent == 0 || path.medium != MEDIUM_AIR) {
         vec3 r = reflect(path.d, c.n);
-        float t;
-        if (path.medium == MEDIUM_AIR && floor_along(p, r, t)) {
-          floor_at = p + t * r;
-          floor_dist = t;
-          floor_weight = path.thr * c.F;
+        if (path.medium == MEDIUM_AIR) {
+          float tb, tl;
+          vec3 nb;
+          bool on_backdrop = intersect(backdrop_surface(), p, r, 0.0, tb, nb);
+          vec4 light = lights_seen(p, r, rough, tb, tl);
+          path.radiance += path.thr * c.F * light.a * light.rgb;
+          if (on_backdrop) {  // shaded once, below
+            floor_at = p + tb * r;
+            floor_n = nb;
+            floor_dist = tb;
+            floor_weight = path.thr * c.F * (1.0 - light.a);
+          } else {
+            path.radiance += path.thr * c.F * (1.0 - light.a) * studio_backdrop(r);
+          }
         } else {
           // Inside a glass or drink the reflection is absorbed on its way out.
-          vec3 seen;
-          if (path.medium == MEDIUM_AIR) {
-            seen = studio_seen(r, rough);
-          } else {
-            vec3 out_dir;
-            vec3 tr = reflected_light(v, g, h.m, path.medium, below, pl, to_local_dir(v, r), to_local_dir(v, c.n), out_dir);
-            seen = tr * studio_seen(to_world_dir(v, out_dir), rough);
-          }
-          path.radiance += path.thr * c.F * seen;
+          vec3 out_dir;
+          vec3 tr = reflected_light(v, g, h.m, path.medium, below, pl, to_local_dir(v, r), to_local_dir(v, c.n), out_dir);
+          path.radiance += path.thr * c.F * tr * lights_and_sky(p, to_world_dir(v, out_dir), rough);
         }
       }
       path.thr *= 1.0 - c.F;
     }
   }
-  if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_dist);
+  if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_n, floor_dist);
   if (on_floor) return false;
   go_on(path, h, c, p);
   return true;
@@ -180,7 +193,7 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
     if (frame.transparent != 0) {
       float m = min(path.thr.r, min(path.thr.g, path.thr.b));
       see_through = m;
-      path.radiance += (path.thr - vec3(m)) * ambient_light();
+      path.radiance += (path.thr - vec3(m)) * sky_light();
     } else {
       path.radiance += path.thr * surroundings(path.o, path.d, path.medium);
     }

@@ -28,10 +28,22 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
   b.max_events = p.render.max_events;
   b.viewport_size = {width, height};
   b.viewport_inv = {1.0f / width, 1.0f / height};
-  b.light_dir = glm::length(p.light.direction) > 1e-6f ? glm::normalize(p.light.direction) : glm::vec3(0, 1, 0);
-  b.light_intensity = p.light.intensity;
-  b.light_color = p.light.color;
-  b.light_cos_radius = std::cos(glm::radians(p.light.size));
+  // The studio's rig (at most MAX_LIGHTS lights: key, strips, backlight) and backdrop.
+  const int lights = std::min<int>(int(f.lights.lights.size()), contract::kMaxLights);
+  b.light_count = lights;
+  for (int i = 0; i < lights; ++i) {
+    const AreaLight& l = f.lights.lights[size_t(i)];
+    b.light_center[i] = {glm::vec3(l.center), float(l.radius)};
+    b.light_normal[i] = {glm::vec3(l.normal), float(int(l.shape))};
+    b.light_half_u[i] = {glm::vec3(l.half_u), 0.0f};
+    b.light_half_v[i] = {glm::vec3(l.half_v), 0.0f};
+    b.light_radiance[i] = {glm::vec3(l.radiance), 0.0f};
+  }
+  for (int i = 0; i < 9; ++i) b.sky_sh[i] = {glm::vec3(f.environment.sky.coef[size_t(i)]), 0.0f};
+  b.backdrop_kind = int(f.backdrop.kind);
+  b.sweep_z_curve = float(f.backdrop.z_curve);
+  b.sweep_radius = float(f.backdrop.radius);
+  b.sweep_albedo = glm::vec3(f.backdrop.sweep_albedo);
   b.env_mode = p.env.mode;
   b.strip_intensity = p.env.strip_intensity;
   b.backdrop_glow = p.env.backdrop_glow;
@@ -49,6 +61,8 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
   b.floor_b = p.env.floor_b;
   b.debug_event = debug_event;
   b.bubble_env = f.environment.reflected;
+  b.glint_dir = f.environment.glint_dir;
+  b.glint = f.environment.glint;
   return b;
 }
 
@@ -113,6 +127,15 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.haze_color = vp.liquid.haze_color;
   r.haze = vp.liquid.haze;
   r.roughness = vp.liquid.roughness;
+  // Each light as a distant light from the glass's middle: what the head and the haze
+  // receive (small lights far from small glasses: the irradiance barely varies over one).
+  const glm::dvec3 middle = vf.pose.position + vf.pose.orientation * glm::dvec3(0, 0.5 * v.height, 0);
+  const int lights = std::min<int>(int(f.lights.lights.size()), contract::kMaxLights);
+  for (int i = 0; i < lights; ++i) {
+    const AreaLight& l = f.lights.lights[size_t(i)];
+    const glm::dvec3 to = glm::normalize(l.center - middle);
+    r.lit_by[i] = {glm::vec3(to), float(l.irradiance_factor(middle, to))};
+  }
   // glass
   r.glass_absorption = vp.glass.absorption;
   r.glass_ior = vp.glass.ior;

@@ -1,11 +1,12 @@
-// The surroundings: a procedural photo studio (gradient sky, key softbox, two vertical
-// strip lights, a glow behind the scene) or a constant colour. Directions in the world.
+// The sky around the studio: a dim gradient (with, for the checker test environment,
+// two strip lights and a glow painted into it) or a constant colour, directions in the
+// world; and its irradiance. The studio's real lights are lib/environment/lights.glsl.
 #ifndef LIB_ENVIRONMENT_STUDIO_GLSL
 #define LIB_ENVIRONMENT_STUDIO_GLSL
 #include "generated/frame.glsl"
 #include "lib/common/math.glsl"
 
-// Everything the studio shows but the key softbox. Twin of Studio::sky
+// The sky's radiance in direction d. Twin of Studio::sky
 // (core/environment/studio.cpp).
 vec3 studio_backdrop(vec3 d) {
   if (frame.env_mode == 1) return frame.env_color;
@@ -28,29 +29,19 @@ vec3 studio_backdrop(vec3 d) {
   return sky;
 }
 
-// The key softbox: the only place the key light exists (no highlight is added on top,
-// so it is counted once). A disc of angular radius light.size whose radiance is
-// intensity / (pi sin^2 radius): intensity is the irradiance it gives a surface facing
-// it, as the reference's KeyLight (core/environment/studio.hpp). Its edge is spread
-// symmetrically in cosine, which keeps its solid angle and so its light: a hair against
-// aliasing, more where a rough surface (GGX roughness) blurs its reflection.
-vec3 key_softbox(vec3 d, float roughness) {
-  float c = frame.light_cos_radius, sin2 = 1.0 - c * c;
-  if (frame.light_intensity <= 0.0 || sin2 <= 0.0) return vec3(0.0);
-  float a = roughness * roughness;  // GGX alpha: the reflected lobe is about 2 alpha wide
-  float w = min(max(0.004, 2.0 * a * sqrt(sin2)), 1.0 - c);
-  return frame.light_color * (frame.light_intensity / (PI * sin2)) * smoothstep(c - w, c + w, dot(d, frame.light_dir));
+// The sky's irradiance on a surface of unit normal n: nine spherical-harmonic
+// coefficients core projected Studio::sky onto (Ramamoorthi and Hanrahan). Twin of
+// SkyIrradiance::at (core/environment/sky_irradiance.cpp).
+vec3 sky_irradiance(vec3 n) {
+  vec3 e = frame.sky_sh[0].rgb * 0.282095;
+  e += 0.488603 * (frame.sky_sh[1].rgb * n.y + frame.sky_sh[2].rgb * n.z + frame.sky_sh[3].rgb * n.x);
+  e += 1.092548 * (frame.sky_sh[4].rgb * n.x * n.y + frame.sky_sh[5].rgb * n.y * n.z + frame.sky_sh[7].rgb * n.x * n.z);
+  e += frame.sky_sh[6].rgb * (0.315392 * (3.0 * n.z * n.z - 1.0)) + frame.sky_sh[8].rgb * (0.546274 * (n.x * n.x - n.y * n.y));
+  return max(e, vec3(0.0));
 }
 
-// What the studio shows in direction d, seen in a surface of the given roughness
-// (0: directly).
-vec3 studio_seen(vec3 d, float roughness) { return studio_backdrop(d) + key_softbox(d, roughness); }
-vec3 studio_sky(vec3 d) { return studio_seen(d, 0.0); }
-
-// Mean light arriving from the upper hemisphere (for the floor and the haze).
-vec3 ambient_light() {
-  if (frame.env_mode == 1) return frame.env_color;
-  return 0.5 * (frame.sky_top + frame.sky_horizon);
-}
+// The diffuse radiance that gives a surface facing up the sky's irradiance (the heads'
+// and the haze's even light).
+vec3 sky_light() { return sky_irradiance(vec3(0.0, 1.0, 0.0)) / PI; }
 
 #endif  // LIB_ENVIRONMENT_STUDIO_GLSL

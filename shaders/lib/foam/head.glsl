@@ -1,6 +1,7 @@
 // The foam head of a vessel: a volume on the liquid surface up to the head's top (where
 // core/foam puts it), marched only along the stretch of a ray inside it. Beer's-law
-// opacity per step, light derived from single scattering of the key and the diffusion
+// opacity per step, light derived from single scattering of the studio's lights (each a
+// distant light from the glass's middle: objects.def lit_by) and the diffusion
 // approximation between the head's faces (head_source; no shadow rays), micro-bubble
 // detail from value noise, big
 // bubbles (placed by core: VesselFrame::big_bubbles) as voids with a denser ring around
@@ -13,7 +14,7 @@
 #include "lib/scene/objects.glsl"
 #include "lib/vessel/intersect.glsl"
 #include "lib/liquid/surface.glsl"
-#include "lib/environment/studio.glsl"
+#include "lib/environment/lights.glsl"
 
 // Compiled in only for frames with a head (gpu/renderer.cpp builds the variants).
 #ifndef FOAM_HEAD
@@ -86,8 +87,10 @@ struct HeadLight {
   float zb;     // the extrapolated boundary beyond each face, in optical depths: 2 / (3 (1 - g))
   vec3 sky;     // diffuse light arriving on the top and the side
   vec3 below;   // and on the underside, through the drink
-  vec3 key;     // the key light's irradiance
-  float wall;   // the part of the key the glass wall lets through (two faces, Fresnel at normal incidence)
+  float wall;   // the part of a light the glass wall lets through (two faces, Fresnel at normal incidence)
+  int count;    // the rig's lights, each a distant light from the glass's middle:
+  vec3 key[MAX_LIGHTS];  // its irradiance (facing it)
+  vec3 l[MAX_LIGHTS];    // the direction towards it (local)
 };
 
 HeadLight head_light(Vessel v, ObjectFoam f) {
@@ -95,9 +98,14 @@ HeadLight head_light(Vessel v, ObjectFoam f) {
   h.albedo = f.foam_color;
   h.kappa = sqrt(3.0 * max(1.0 - h.albedo, 0.0) * (1.0 - h.albedo * f.anisotropy));
   h.zb = 2.0 / (3.0 * (1.0 - f.anisotropy));
-  h.sky = ambient_light();
+  h.sky = sky_light();
   h.below = h.sky * exp(-v.body.absorption * f.under_chord);
-  h.key = frame.light_color * frame.light_intensity;
+  h.count = frame.light_count;
+  for (int i = 0; i < MAX_LIGHTS; ++i) {
+    vec4 lit = i < h.count ? object_lit_by(v.row, i) : vec4(0.0, 1.0, 0.0, 0.0);
+    h.key[i] = frame.light_radiance[i].rgb * lit.w;
+    h.l[i] = to_local_dir(v, lit.xyz);
+  }
   float ior = fetch_object_glass(v.row).glass_ior, f0 = (ior - 1.0) / (ior + 1.0);
   h.wall = (1.0 - f0 * f0) * (1.0 - f0 * f0);
   return h;
@@ -122,7 +130,7 @@ vec3 face_share(vec3 kappa, float u, vec3 e, vec3 others) {
 // Light scattered towards -d at p per unit extinction (albedo included): `height` is p's
 // height above the liquid, `top` the head's thickness there; d, l local. Optical depths
 // to the faces are those of the mean density.
-vec3 head_source(Vessel v, ObjectFoam f, HeadLight h, vec3 d, vec3 l, vec3 p, float height, float top) {
+vec3 head_source(Vessel v, ObjectFoam f, HeadLight h, vec3 d, vec3 p, float height, float top) {
   // The top is the head's (its soft ramp integrated) or the rim's where a dome stands
   // above the glass; the side the wall's or a cross-section's cut, whichever is nearer.
   // (The integrals of foam_density's 1 / growth over height; the soft top taken as if
@@ -134,15 +142,23 @@ vec3 head_source(Vessel v, ObjectFoam f, HeadLight h, vec3 d, vec3 l, vec3 p, fl
   float tau_b = f.density * top / FOAM_GROWTH * log((1.0 + FOAM_GROWTH) / grow);
   float r = length(p.xz);
   float tau_s = f.density / grow * max(min(inner_radius(v, p.y) - r, v.shape.clip_offset - dot(v.shape.clip_normal, p)), 0.0);
-  float cos_t = dot(v.liquid.plane_normal, l), cos_s = r > 1e-6 ? dot(p.xz, l.xz) / r : 0.0;
-  // The key's unscattered light, through the top or through the wall beside p.
-  float direct = max(cos_t > 0.0 ? exp(-tau_t / cos_t) : 0.0, cos_s > 0.0 ? h.wall * exp(-tau_s / cos_s) : 0.0);
-  vec3 single = h.key * hg_phase(dot(l, d), f.anisotropy) * direct;
-  // Diffusion between the faces: each face's incoming radiance (the key's irradiance
+  // Each light's unscattered light, through the top or through the wall beside p, and
+  // what it gives the top and the side faces.
+  vec3 single = vec3(0.0), top_key = vec3(0.0), side_key = vec3(0.0);
+  for (int i = 0; i < MAX_LIGHTS; ++i) {
+    if (i >= h.count) break;
+    vec3 l = h.l[i];
+    float cos_t = dot(v.liquid.plane_normal, l), cos_s = r > 1e-6 ? dot(p.xz, l.xz) / r : 0.0;
+    float direct = max(cos_t > 0.0 ? exp(-tau_t / cos_t) : 0.0, cos_s > 0.0 ? h.wall * exp(-tau_s / cos_s) : 0.0);
+    single += h.key[i] * hg_phase(dot(l, d), f.anisotropy) * direct;
+    top_key += h.key[i] * max(cos_t, 0.0);
+    side_key += h.key[i] * max(cos_s, 0.0);
+  }
+  // Diffusion between the faces: each face's incoming radiance (a light's irradiance
   // counted as a diffuse pi L) held at its extrapolated boundary, the field the sum of
   // each face's share (face_share).
-  vec3 top_in = h.sky + h.key * max(cos_t, 0.0) / PI;
-  vec3 side_in = h.sky + h.key * h.wall * max(cos_s, 0.0) / PI;
+  vec3 top_in = h.sky + top_key / PI;
+  vec3 side_in = h.sky + side_key * h.wall / PI;
   float ut = tau_t + h.zb, ub = tau_b + h.zb, us = tau_s + h.zb;
   vec3 et = exp(min(h.kappa * ut, 60.0)), eb = exp(min(h.kappa * ub, 60.0)), es = exp(min(h.kappa * us, 60.0));
   vec3 pt = face_pull(h.kappa, ut, et), pb = face_pull(h.kappa, ub, eb), ps = face_pull(h.kappa, us, es);
@@ -153,9 +169,14 @@ vec3 head_source(Vessel v, ObjectFoam f, HeadLight h, vec3 d, vec3 l, vec3 p, fl
 
 // The light a thin film of foam on the wall (lacing) scatters towards -d: a head's side
 // face, lit straight.
-vec3 lacing_light(Vessel v, ObjectFoam f, vec3 d, vec3 l) {
+vec3 lacing_light(Vessel v, ObjectFoam f, vec3 d) {
   HeadLight h = head_light(v, f);
-  return h.albedo * (h.key * hg_phase(dot(l, d), f.anisotropy) + h.sky);
+  vec3 lit = h.sky;
+  for (int i = 0; i < MAX_LIGHTS; ++i) {
+    if (i >= h.count) break;
+    lit += h.key[i] * hg_phase(dot(h.l[i], d), f.anisotropy);
+  }
+  return h.albedo * lit;
 }
 
 // The part of [t0, t1] along o + t d (local) where the head (or a big bubble's cap) can
@@ -183,7 +204,7 @@ bool foam_interval(Vessel v, ObjectFoam f, vec3 o, vec3 d, inout float t0, inout
 
 // Marches the head along o + t d for t in [t0, t1] (a stretch through air, already cut to
 // foam_interval). Adds the light it scatters to `radiance` and attenuates `thr`.
-void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec3 l, inout vec3 radiance,
+void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, inout vec3 radiance,
                 inout vec3 thr) {
   // Steps of at most one optical depth of the top's density (a thick head stops the
   // march within about ten), at least 6 and at most 40 over the stretch.
@@ -200,7 +221,7 @@ void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec3
     float sigma = foam_density(v, f, p, height, top);
     if (sigma > 0.0) {
       float trans = exp(-sigma * dt);
-      radiance += thr * head_source(v, f, h, d, l, p, height, top) * (1.0 - trans);
+      radiance += thr * head_source(v, f, h, d, p, height, top) * (1.0 - trans);
       thr *= trans;
       if (max(thr.r, max(thr.g, thr.b)) < 1e-3) {
         thr = vec3(0.0);
@@ -213,7 +234,7 @@ void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec3
 
 // A big bubble's cap is a thin film of the drink: it mirrors the surroundings at grazing
 // angles (Fresnel from air into the liquid's index, both faces).
-void bubble_caps(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec3 l, inout vec3 radiance,
+void bubble_caps(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, inout vec3 radiance,
                  inout vec3 thr) {
   for (int i = 0; i < f.big_bubble_count; ++i) {
     BigBubble b = big_bubble(v, i);
@@ -231,7 +252,7 @@ void bubble_caps(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, vec
     float F = fresnel_dielectric(abs(dot(nn, d)), 1.0, v.liquid.ior);
     float film = 2.0 * F / (1.0 + F);  // two faces of the film
     vec3 refl = reflect(d, nn);
-    radiance += thr * film * studio_sky(to_world_dir(v, refl));  // the key softbox is in the sky
+    radiance += thr * film * lights_and_sky(to_world_point(v, p), to_world_dir(v, refl), 0.0);
     thr *= 1.0 - film;
   }
 }
@@ -312,9 +333,9 @@ void foam_along(vec3 o, vec3 d, float t_end, inout vec3 radiance, inout vec3 thr
     if (next < 0) return;
     Vessel v = load_vessel(next);
     ObjectFoam f = fetch_object_foam(v.row);
-    vec3 lo = to_local_point(v, o), ld = to_local_dir(v, d), l = to_local_dir(v, frame.light_dir);
-    bubble_caps(v, f, lo, ld, next_t0, next_t1, l, radiance, thr);
-    march_foam(v, f, lo, ld, next_t0, next_t1, l, radiance, thr);
+    vec3 lo = to_local_point(v, o), ld = to_local_dir(v, d);
+    bubble_caps(v, f, lo, ld, next_t0, next_t1, radiance, thr);
+    march_foam(v, f, lo, ld, next_t0, next_t1, radiance, thr);
     if (max(thr.r, max(thr.g, thr.b)) < 1e-3 || !more) return;  // (no second pass for one head)
     done = next_t1;
   }

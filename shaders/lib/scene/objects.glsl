@@ -117,6 +117,7 @@ mat3 rotation(Vessel v) { return mat3(v.shape.rot_x, v.shape.rot_y, v.shape.rot_
 vec3 to_world_dir(Vessel v, vec3 d) { return rotation(v) * d; }
 vec3 to_local_dir(Vessel v, vec3 d) { return d * rotation(v); }
 vec3 to_local_point(Vessel v, vec3 p) { return (p - v.shape.position) * rotation(v); }
+vec3 to_world_point(Vessel v, vec3 p) { return v.shape.position + rotation(v) * p; }
 
 // The vessel's cross-section: what lies beyond the clip plane is cut away.
 bool clipped(Vessel v, vec3 p) { return dot(v.shape.clip_normal, p) > v.shape.clip_offset; }

@@ -162,10 +162,10 @@ FrameState assemble_frame(const SceneParams& p, std::vector<VesselFrame> vessels
   f.vessels = std::move(vessels);
   f.selected = std::clamp(selected, 0, std::max(0, int(f.vessels.size()) - 1));
   f.camera = frame_camera(p.camera, f.vessels);
-  f.environment = environment_frame(p.env);
   const glm::dvec3 aim = scene_aim(f.vessels);
   f.lights = light_rig(p, aim);
   f.backdrop = backdrop_surface(p.env, aim);
+  f.environment = environment_frame(p, f.lights, f.backdrop);
   return f;
 }
 

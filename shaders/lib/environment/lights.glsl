@@ -1,0 +1,158 @@
+// The studio's area lights in the picture: the rig of at most MAX_LIGHTS rects
+// (softboxes, front side only) and spheres in frame.light_*. Twins of
+// core/environment/lights.cpp (AreaLight::intersect, AreaLight::irradiance_factor) and
+// what a ray sees of them (lights_seen). Lights are emitters only: they cast no shadow.
+#ifndef LIB_ENVIRONMENT_LIGHTS_GLSL
+#define LIB_ENVIRONMENT_LIGHTS_GLSL
+#include "generated/constants.glsl"
+#include "generated/frame.glsl"
+#include "lib/common/math.glsl"
+#include "lib/environment/studio.glsl"
+
+struct AreaLight {
+  bool sphere;
+  vec3 center, normal, half_u, half_v;
+  float radius;
+  vec3 radiance;
+};
+
+AreaLight area_light(int i) {
+  vec4 c = frame.light_center[i], n = frame.light_normal[i];
+  return AreaLight(n.w > 0.5, c.xyz, n.xyz, frame.light_half_u[i].xyz, frame.light_half_v[i].xyz, c.w,
+                   frame.light_radiance[i].rgb);
+}
+
+// The nearer t > tmin where a ray meets a sphere from outside it.
+bool light_hit_sphere(vec3 c, float r, vec3 o, vec3 d, float tmin, out float t) {
+  vec3 oc = o - c;
+  float b = dot(oc, d), cc = dot(oc, oc) - r * r;
+  t = INF;
+  if (cc <= 0.0) return false;  // inside: a lamp is not seen from within
+  float disc = b * b - cc;
+  if (disc < 0.0) return false;
+  t = -b - sqrt(disc);
+  return t > tmin;
+}
+
+// The nearest t > tmin where the ray o + t d (d unit) meets the light's emitting side.
+// Twin of AreaLight::intersect.
+bool intersect(AreaLight l, vec3 o, vec3 d, float tmin, out float t) {
+  if (l.sphere) return light_hit_sphere(l.center, l.radius, o, d, tmin, t);
+  t = INF;
+  float denom = dot(d, l.normal);
+  if (denom >= 0.0) return false;  // parallel, or its back
+  t = dot(l.center - o, l.normal) / denom;
+  if (!(t > tmin)) return false;
+  vec3 q = o + t * d - l.center;
+  return abs(dot(q, l.half_u)) <= dot(l.half_u, l.half_u) && abs(dot(q, l.half_v)) <= dot(l.half_v, l.half_v);
+}
+
+// Lambert's term of one edge a -> b of a polygon seen from the origin: the angle it
+// subtends times the cosine of its plane's normal with n.
+float lambert_edge(vec3 a, vec3 b, vec3 n) {
+  a = normalize(a);
+  b = normalize(b);
+  vec3 c = cross(a, b);
+  float len = length(c);
+  return len < 1e-12 ? 0.0 : atan(len, dot(a, b)) * dot(n, c) / len;
+}
+
+// The irradiance the whole light gives point x of a surface of unit normal n, per unit
+// radiance, with nothing in between (pi times the form factor): a rect's polygon clipped
+// to the surface's hemisphere (Lambert), a sphere by Snyder's formula, the horizon
+// included. Zero behind a rect. Twin of AreaLight::irradiance_factor.
+float irradiance_factor(AreaLight l, vec3 x, vec3 n) {
+  if (l.sphere) {
+    vec3 w = l.center - x;
+    float d2 = dot(w, w);
+    if (d2 <= l.radius * l.radius) return PI;
+    float sin2 = l.radius * l.radius / d2, cos_t = dot(n, w) * inversesqrt(d2);
+    if (cos_t * cos_t > sin2) return PI * sin2 * max(cos_t, 0.0);
+    float sin_t = sqrt(max(0.0, 1.0 - cos_t * cos_t));
+    float xx = sqrt(1.0 / sin2 - 1.0);
+    float y = clamp(-xx * cos_t / max(sin_t, 1e-12), -1.0, 1.0);
+    float s = sin_t * sqrt(1.0 - y * y);
+    return max(0.0, (cos_t * acos(y) - xx * s) * sin2 + atan(s / xx));
+  }
+  if (dot(x - l.center, l.normal) <= 0.0) return 0.0;  // behind the softbox
+  vec3 c0 = l.center - l.half_u - l.half_v - x, c1 = l.center + l.half_u - l.half_v - x;
+  vec3 c2 = l.center + l.half_u + l.half_v - x, c3 = l.center - l.half_u + l.half_v - x;
+  vec4 h = vec4(dot(n, c0), dot(n, c1), dot(n, c2), dot(n, c3));
+  float sum = 0.0;
+  if (all(greaterThanEqual(h, vec4(0.0)))) {
+    // Wholly above the horizon (the usual case): the four edges as they are.
+    sum = lambert_edge(c0, c1, n) + lambert_edge(c1, c2, n) + lambert_edge(c2, c3, n) + lambert_edge(c3, c0, n);
+  } else {
+    // Clipped to the plane n . v = 0 (Sutherland-Hodgman): at most five corners.
+    vec3 c[4] = vec3[4](c0, c1, c2, c3);
+    vec3 poly[5];
+    int count = 0;
+    for (int i = 0; i < 4; ++i) {
+      vec3 a = c[i], b = c[(i + 1) % 4];
+      float da = h[i], db = h[(i + 1) % 4];
+      if (da >= 0.0) poly[count++] = a;
+      if ((da >= 0.0) != (db >= 0.0)) poly[count++] = a + (b - a) * (da / (da - db));
+    }
+    if (count < 3) return 0.0;
+    for (int i = 0; i < 5; ++i) {
+      if (i >= count) break;
+      sum += lambert_edge(poly[i], poly[(i + 1) % count], n);
+    }
+  }
+  return 0.5 * abs(sum);
+}
+
+// How much of a box [-1, 1] at coordinate s is seen with its edge spread over +-w
+// (symmetric about the edge, so the box's area is kept).
+float soft_box(float s, float w) { return 1.0 - smoothstep(1.0 - w, 1.0 + w, abs(s)); }
+
+// The nearest light front the ray o + t d (d unit) meets before t_max: rgb its radiance,
+// a the part of the pixel's ray it covers (its edges spread by the GGX roughness of the
+// surface that sent the ray, symmetrically so its solid angle and its light are kept; a
+// hair at least, against aliasing). t: where, INF for none. Behind a partly covering
+// front the caller sees what lies beyond it with 1 - a.
+vec4 lights_seen(vec3 o, vec3 d, float roughness, float t_max, out float t) {
+  t = INF;
+  vec4 seen = vec4(0.0);
+  float a = roughness * roughness;  // GGX alpha: the reflected lobe is about 2 alpha wide
+  float spread = max(0.0015, 2.0 * a);  // radians either side of an edge
+  for (int i = 0; i < MAX_LIGHTS; ++i) {
+    if (i >= frame.light_count) break;
+    AreaLight l = area_light(i);
+    float ti, cover;
+    if (l.sphere) {
+      vec3 w = l.center - o;
+      float d2 = dot(w, w);
+      ti = dot(w, d);
+      if (d2 <= l.radius * l.radius || ti <= 0.0) continue;
+      float sin2 = l.radius * l.radius / d2, cos_r = sqrt(1.0 - sin2);
+      float edge = min(spread * sqrt(sin2), 1.0 - cos_r);
+      cover = smoothstep(cos_r - edge, cos_r + edge, ti * inversesqrt(d2));
+      ti -= l.radius;
+    } else {
+      float denom = dot(d, l.normal);
+      if (denom >= 0.0) continue;  // its back
+      ti = dot(l.center - o, l.normal) / denom;
+      if (ti <= 0.0) continue;
+      vec3 q = o + ti * d - l.center;
+      float lu = length(l.half_u), lv = length(l.half_v);
+      cover = soft_box(dot(q, l.half_u) / (lu * lu), spread * ti / lu) *
+              soft_box(dot(q, l.half_v) / (lv * lv), spread * ti / lv);
+    }
+    if (cover > 0.0 && ti < t && ti < t_max) {
+      t = ti;
+      seen = vec4(l.radiance, cover);
+    }
+  }
+  return seen;
+}
+
+// What a ray from o sees of the surroundings without the backdrop (from inside a glass
+// or a drink, where the way out is not traced): a light's front, else the sky.
+vec3 lights_and_sky(vec3 o, vec3 d, float roughness) {
+  float tl;
+  vec4 light = lights_seen(o, d, roughness, INF, tl);
+  return light.rgb * light.a + studio_backdrop(d) * (1.0 - light.a);
+}
+
+#endif  // LIB_ENVIRONMENT_LIGHTS_GLSL
