@@ -151,7 +151,7 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
       path.thr *= 1.0 - c.F;
     }
   }
-  if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_n, floor_dist);
+  if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_n, floor_dist, on_floor);
   if (on_floor) return false;
   go_on(path, h, c, p);
   return true;
