@@ -111,6 +111,18 @@ float irradiance_factor(AreaLight l, vec3 x, vec3 n) {
   return 0.5 * abs(sum);
 }
 
+// The irradiance factor of a light seen as a point at its centre: its solid angle (area
+// over distance squared, foreshortened) times the cosine at x, for the backdrop a glass
+// mirrors (a few per cent of a pixel: the exact polygon would cost the most there).
+float irradiance_factor_far(AreaLight l, vec3 x, vec3 n) {
+  vec3 w = l.center - x;
+  float d2 = dot(w, w), inv = inversesqrt(d2);
+  float cos_s = max(dot(n, w) * inv, 0.0);
+  if (l.sphere) return PI * l.radius * l.radius / max(d2, l.radius * l.radius) * cos_s;
+  float area = 4.0 * length(l.half_u) * length(l.half_v);
+  return area * max(-dot(l.normal, w) * inv, 0.0) * cos_s / d2;
+}
+
 // How much of a box [-1, 1] at coordinate s is seen with its edge spread over +-w
 // (symmetric about the edge, so the box's area is kept).
 float soft_box(float s, float w) { return 1.0 - smoothstep(1.0 - w, 1.0 + w, abs(s)); }
@@ -130,8 +142,7 @@ vec4 lights_seen(vec3 o, vec3 d, float roughness, float t_max, out float t) {
     // Bounds first: the sphere around the light (and its spread edge) the ray must pass.
     vec4 c = frame.light_center[i];
     vec3 w = c.xyz - o;
-    float along = dot(w, d), bound = c.w + length(frame.light_half_u[i].xyz) + length(frame.light_half_v[i].xyz);
-    bound = bound * (1.0 + 2.0 * spread) + 2.0 * spread * max(along, 0.0);
+    float along = dot(w, d), bound = frame.light_half_u[i].w * (1.0 + 2.0 * spread) + 2.0 * spread * max(along, 0.0);
     if (along < -bound || dot(w, w) - along * along > bound * bound) continue;
     AreaLight l = area_light(i);
     float ti, cover;
