@@ -103,7 +103,7 @@ struct LightParams {
   float width = 0.6f;                       // m (a sphere's diameter)
   float height = 0.6f;                      // m (rect only)
   glm::vec3 color{1.0f, 0.97f, 0.92f};
-  float power = 3.0f;  // W, radiant flux of a Lambertian emitter
+  float power = 6.0f;  // W, radiant flux of a Lambertian emitter
   float intensity = 2.5f;  // deprecated, accepted, no effect (light.power)
   float size = 12.0f;      // deprecated, accepted, no effect (light.width, light.height)
 };
@@ -133,7 +133,7 @@ inline LightParams default_backlight() {
   l.width = 0.085f;
   l.height = 0.16f;
   l.color = {1.0f, 0.98f, 0.95f};
-  l.power = 0.15f;
+  l.power = 0.17f;
   return l;
 }
 
@@ -152,7 +152,7 @@ struct ClipParams {
 
 struct RenderParams {
   int tonemap = int(Tonemap::Aces);  // Tonemap
-  float exposure = 1.3f;
+  float exposure = 1.15f;
   bool transparent = false;
   int supersample = 2;
   int max_events = 12;
