@@ -151,7 +151,7 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
       path.thr *= 1.0 - c.F;
     }
   }
-  if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_n, floor_dist);
+  if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_n, floor_dist, on_floor);
   if (on_floor) return false;
   go_on(path, h, c, p);
   return true;
@@ -249,6 +249,35 @@ vec4 debug_medium_rule() {
   int m = int(gl_FragCoord.x), y = int(gl_FragCoord.y);
   return vec4(float(medium_across(m, y % 3, y >= 3)), 0.0, 0.0, 1.0);
 }
+// The studio alone along the camera ray, for the twins' tests (tests/gpu/test_lights.cpp
+// against core's AreaLight and BackdropSurface). LightHit: (t of the nearest light
+// front, 0 for none; its index, -1; t of the backdrop, 0 for none; its albedo's green).
+// Backdrop: (t, normal). LightIrradiance: irradiance_factor of lights 0..3 at the
+// backdrop point for its normal.
+vec4 debug_studio(vec3 eye, vec3 dir, int view) {
+  BackdropSurface b = backdrop_surface();
+  float tb;
+  vec3 nb;
+  bool on_backdrop = intersect(b, eye, dir, 0.0, tb, nb);
+  if (view == VIEW_BACKDROP) return on_backdrop ? vec4(tb, nb) : vec4(0.0);
+  if (view == VIEW_LIGHT_IRRADIANCE) {
+    vec4 f = vec4(0.0);
+    for (int i = 0; i < MAX_LIGHTS; ++i)
+      if (on_backdrop && i < frame.light_count) f[i] = irradiance_factor(area_light(i), eye + tb * dir, nb);
+    return f;
+  }
+  float tl = INF;
+  int nearest = -1;
+  for (int i = 0; i < MAX_LIGHTS; ++i) {
+    float t;
+    if (i < frame.light_count && intersect(area_light(i), eye, dir, 0.0, t) && t < tl) {
+      tl = t;
+      nearest = i;
+    }
+  }
+  return vec4(nearest >= 0 ? tl : 0.0, float(nearest), on_backdrop ? tb : 0.0,
+              on_backdrop ? albedo(b, eye + tb * dir).g : 0.0);
+}
 #endif  // DEBUG_VIEWS
 
 // ---- output ----
@@ -264,6 +293,10 @@ void main() {
   }
   if (view == VIEW_DEPTH || view == VIEW_NORMAL || view == VIEW_MATERIAL) {
     frag_color = debug_first_surface(frame.cam_eye, dir, view);
+    return;
+  }
+  if (view == VIEW_LIGHT_HIT || view == VIEW_BACKDROP || view == VIEW_LIGHT_IRRADIANCE) {
+    frag_color = debug_studio(frame.cam_eye, dir, view);
     return;
   }
   if (view == VIEW_PATH_EVENT) {

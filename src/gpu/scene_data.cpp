@@ -35,7 +35,8 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
     const AreaLight& l = f.lights.lights[size_t(i)];
     b.light_center[i] = {glm::vec3(l.center), float(l.radius)};
     b.light_normal[i] = {glm::vec3(l.normal), float(int(l.shape))};
-    b.light_half_u[i] = {glm::vec3(l.half_u), 0.0f};
+    const double bound = l.shape == LightShape::Sphere ? l.radius : glm::length(l.half_u) + glm::length(l.half_v);
+    b.light_half_u[i] = {glm::vec3(l.half_u), float(bound)};
     b.light_half_v[i] = {glm::vec3(l.half_v), 0.0f};
     b.light_radiance[i] = {glm::vec3(l.radiance), 0.0f};
   }
@@ -44,6 +45,7 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
   b.sweep_z_curve = float(f.backdrop.z_curve);
   b.sweep_radius = float(f.backdrop.radius);
   b.sweep_albedo = glm::vec3(f.backdrop.sweep_albedo);
+  b.sky_light = glm::vec3(f.environment.sky.at({0, 1, 0}) / 3.14159265358979);
   b.env_mode = p.env.mode;
   b.strip_intensity = p.env.strip_intensity;
   b.backdrop_glow = p.env.backdrop_glow;

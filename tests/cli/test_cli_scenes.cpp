@@ -106,13 +106,13 @@ TEST_F(Scenes, ValidateReportsBadScenesWithFileAndField) {
   write_file(drink, R"({ "kind": "scene", "name": "d", "objects": [
       { "name": "a", "drink": "lager" }, { "name": "b", "drink": "lagr", "position": [0.3, 0, 0] } ] })");
   write_file(scope, R"({ "kind": "scene", "name": "s", "objects": [
-      { "name": "a", "drink": "lager", "params": { "light": { "intensity": 3 } } } ] })");
+      { "name": "a", "drink": "lager", "params": { "light": { "power": 3 } } } ] })");
   auto r = draught({"validate", overlap.string(), drink.string(), scope.string(), kFlight});
   EXPECT_EQ(r.exit_code, 1) << r.describe();
   EXPECT_TRUE(contains(r.err, overlap.string() + ": objects[0] 'a' and objects[1] 'b' overlap")) << r.describe();
   EXPECT_TRUE(contains(r.err, drink.string() + ": field 'objects[1].drink': expected one of")) << r.describe();
   EXPECT_TRUE(contains(r.err, "(did you mean \"lager\"?)")) << r.describe();
-  EXPECT_TRUE(contains(r.err, scope.string() + ": field 'objects[0].params.light.intensity'")) << r.describe();
+  EXPECT_TRUE(contains(r.err, scope.string() + ": field 'objects[0].params.light.power'")) << r.describe();
   EXPECT_TRUE(contains(r.out, kFlight + ": ok")) << "the good file is still checked\n" << r.describe();
 }
 

@@ -29,6 +29,15 @@ inline Gpu& gpu_instance() {
 
 inline FrameState scene_frame(const SceneRequest& req) { return make_frame(resolve_scene(req)); }
 
+// The frame standing on the test environment's checker floor (presets/scenes/checker-studio.json)
+// instead of the sweep: the plane y = 0, all the reference intersector (core/reference)
+// knows of the floor, for tests that compare hits with it.
+inline FrameState on_checker_floor(FrameState f) {
+  f.params.env.backdrop = int(Backdrop::Checker);
+  f.backdrop.kind = Backdrop::Checker;
+  return f;
+}
+
 // The frame at time t of a shipped timeline (presets/timelines/), in the timeline's scene
 // (seen through `camera` when given: "eye=..." "target=..." as --camera).
 inline FrameState timeline_frame(const std::string& name, double t, const std::vector<std::string>& camera = {}) {

@@ -18,13 +18,13 @@ constexpr glm::vec3 kEnv{0.5f, 0.4f, 0.3f};
 
 FrameState furnace(float fill, float foam_height) {
   SceneRequest req{"lager", "pint"};
-  req.sets = {"env.mode=constant", "env.floor=false", "light.intensity=0", "render.tonemap=none",
+  req.sets = {"env.mode=constant", "env.floor=false", "env.color=0.5,0.4,0.3", "light.power=0", "strips.power=0", "backlight.power=0",
+              "render.tonemap=none", "render.exposure=1",
               "glass.absorption=0,0,0", "liquid.srm=0", "liquid.absorption=0,0,0", "liquid.haze=0",
               "bubbles.carbonation=0", "render.max_events=24",
               "liquid.fill=" + std::to_string(fill), "foam.height=" + std::to_string(foam_height)};
-  FrameState f = scene_frame(req);
-  f.params.env.color = kEnv;
-  return f;
+  // (The colour through the request, so core's sky irradiance is the environment's.)
+  return scene_frame(req);
 }
 
 // The largest relative difference of any pixel channel from the environment, and where.

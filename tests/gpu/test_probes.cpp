@@ -73,7 +73,7 @@ class Probe : public ::testing::TestWithParam<ProbeCase> {};
 TEST_P(Probe, DebugChannelsMatchReferenceIntersector) {
   const ProbeCase& c = GetParam();
   Gpu& g = gpu_instance();
-  FrameState f = c.scene ? c.scene() : case_frame(c.request, c.timeline, c.at);
+  FrameState f = on_checker_floor(c.scene ? c.scene() : case_frame(c.request, c.timeline, c.at));
   const int n = c.size;
   Reference ref = reference_hits(f, n, n);
   gpu::DebugImage depth = g.renderer->render_debug(f, n, n, gpu::DebugView::Depth);

@@ -80,7 +80,7 @@ TEST(Contract, UniformBlockMismatchNamesTheMember) {
 // whose path grazes an edge somewhere). Distances agree to max(0.1 mm, 1e-3 t).
 TEST(Flight, RefractedPathsThroughTwoGlassesMatchTheCpuTrace) {
   Gpu& g = gpu_instance();
-  const FrameState f = make_frame(flight_scene(FlightView::AlongTheRow));
+  const FrameState f = on_checker_floor(make_frame(flight_scene(FlightView::AlongTheRow)));
   const int w = 96, h = 72, events = 6;
   const SceneGeometry geo = scene_geometry(f);
   const CameraBasis cam = camera_basis(f, w, h);

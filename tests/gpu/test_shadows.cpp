@@ -14,15 +14,19 @@ namespace {
 
 constexpr int kW = 128, kH = 96;
 
-// A lager in a pint seen from above and in front by a fixed camera, the glass at `x`,
-// with these extra settings (the cross-section).
-FrameState glass_on_floor(float x, std::vector<std::string> sets = {}) {
+// A lager in a pint on the checker floor (presets/scenes/checker-studio.json) seen from
+// above and in front by a fixed camera, with these extra settings (the cross-section).
+// `out_of_sight`: the same studio (its lights stand around the glass) with the glass
+// moved far away after the lights were placed.
+FrameState glass_on_floor(std::vector<std::string> sets = {}, bool out_of_sight = false) {
   sets.insert(sets.end(), {"bubbles.max_bubbles=0", "render.supersample=1", "camera.auto_frame=false"});
-  const Params p = resolve_scene({"lager", "pint", sets, {"eye=0,0.32,0.3", "target=0,0.03,0", "vfov=40"}});
+  const Params p = resolve_scene({"checker-studio", "pint", sets, {"eye=0,0.32,0.3", "target=0,0.03,0", "vfov=40"}});
   Scene s;
   s.params = p;
-  s.objects.push_back(SceneObject{"glass", Placement{{x, 0.0f, 0.0f}, 0.0f}, VesselObject{p}});
-  return make_frame(s);
+  s.objects.push_back(SceneObject{"glass", Placement{{0.0f, 0.0f, 0.0f}, 0.0f}, VesselObject{p}});
+  FrameState f = make_frame(s);
+  if (out_of_sight) f.vessels[0].pose.position.x += 20.0;
+  return f;
 }
 
 // How the floor is darker in `img` than in `bare` (the same floor without the glass):
@@ -52,11 +56,11 @@ Darkening floor_darkening(const FrameState& f, const Image& bare) {
 TEST(Shadows, AGlassCutAwayEntirelyCastsNoShadow) {
   Gpu& g = gpu_instance();
   // The same floor without the glass: the glass stands far out of sight.
-  const Image bare = g.renderer->render(glass_on_floor(20.0f), kW, kH);
-  const Darkening whole = floor_darkening(glass_on_floor(0), bare);
+  const Image bare = g.renderer->render(glass_on_floor({}, true), kW, kH);
+  const Darkening whole = floor_darkening(glass_on_floor(), bare);
   // The cut's normal points up and it lies below the floor: everything is cut away.
-  const Darkening cut = floor_darkening(glass_on_floor(0, {"clip.enabled=true", "clip.normal=0,1,0", "clip.offset=-0.05"}), bare);
-  const Darkening half = floor_darkening(glass_on_floor(0, {"clip.enabled=true", "clip.normal=1,0,0", "clip.offset=0"}), bare);
+  const Darkening cut = floor_darkening(glass_on_floor({"clip.enabled=true", "clip.normal=0,1,0", "clip.offset=-0.05"}), bare);
+  const Darkening half = floor_darkening(glass_on_floor({"clip.enabled=true", "clip.normal=1,0,0", "clip.offset=0"}), bare);
   std::printf("floor darkening (sum, pixels): whole glass %.0f, %d; half cut %.0f, %d; cut away %.0f, %d\n", whole.sum,
               whole.pixels, half.sum, half.pixels, cut.sum, cut.pixels);
   ASSERT_GT(whole.pixels, 100) << "the whole glass must shadow the floor in this view (else the test tests nothing)";

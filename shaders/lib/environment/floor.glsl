@@ -143,15 +143,17 @@ vec3 floor_shadow(vec3 p, vec3 l) {
 
 // The backdrop at p (world, normal n), seen from `dist` away: albedo / pi times the
 // light it receives, each light's exact irradiance through the glasses' shadows and the
-// sky's around the feet.
-vec3 shade_floor(vec3 p, vec3 n, float dist) {
+// sky's around the feet. `occluded` false: the backdrop mirrored in a glass (a few per
+// cent of a pixel), where each light is taken as a point and shadows and contact are
+// left out: too small to see there, and the most costly.
+vec3 shade_floor(vec3 p, vec3 n, float dist, bool occluded) {
   BackdropSurface bd = backdrop_surface();
-  vec3 e = sky_irradiance(n) * floor_contact(p);
+  vec3 e = sky_irradiance(n) * (occluded ? floor_contact(p) : 1.0);
   for (int i = 0; i < MAX_LIGHTS; ++i) {
     if (i >= frame.light_count) break;
     AreaLight l = area_light(i);
-    float f = irradiance_factor(l, p, n);
-    if (f > 0.0) e += l.radiance * f * floor_shadow(p, normalize(l.center - p));
+    float f = occluded ? irradiance_factor(l, p, n) : irradiance_factor_far(l, p, n);
+    if (f > 0.0) e += l.radiance * f * (occluded ? floor_shadow(p, normalize(l.center - p)) : vec3(1.0));
   }
   vec3 c = albedo(bd, p) / PI * e;
   // The checker to the horizon fades into the sky's ground, so it never aliases there.
@@ -165,7 +167,7 @@ vec3 background(vec3 o, vec3 d, float roughness) {
   vec3 nb;
   bool on_backdrop = intersect(backdrop_surface(), o, d, 0.0, tb, nb);
   vec4 light = lights_seen(o, d, roughness, tb, tl);
-  vec3 beyond = on_backdrop ? shade_floor(o + tb * d, nb, tb) : studio_backdrop(d);
+  vec3 beyond = on_backdrop ? shade_floor(o + tb * d, nb, tb, true) : studio_backdrop(d);
   return light.rgb * light.a + beyond * (1.0 - light.a);
 }
 

@@ -42,6 +42,6 @@ vec3 sky_irradiance(vec3 n) {
 
 // The diffuse radiance that gives a surface facing up the sky's irradiance (the heads'
 // and the haze's even light).
-vec3 sky_light() { return sky_irradiance(vec3(0.0, 1.0, 0.0)) / PI; }
+vec3 sky_light() { return frame.sky_light; }
 
 #endif  // LIB_ENVIRONMENT_STUDIO_GLSL

@@ -91,7 +91,23 @@ struct HeadLight {
   int count;    // the rig's lights, each a distant light from the glass's middle:
   vec3 key[MAX_LIGHTS];  // its irradiance (facing it)
   vec3 l[MAX_LIGHTS];    // the direction towards it (local)
+  // What stays the same along one ray (head_along): each light's irradiance times the
+  // phase function towards -d, the cosine of its direction with the surface's normal,
+  // and the light all of them give the top face.
+  vec3 key_phase[MAX_LIGHTS];
+  float cos_top[MAX_LIGHTS];
+  vec3 top_key;
 };
+
+// The light along a ray of direction d (local) through the head.
+void head_along(inout HeadLight h, Vessel v, ObjectFoam f, vec3 d) {
+  h.top_key = vec3(0.0);
+  for (int i = 0; i < MAX_LIGHTS; ++i) {
+    h.key_phase[i] = h.key[i] * hg_phase(dot(h.l[i], d), f.anisotropy);
+    h.cos_top[i] = dot(v.liquid.plane_normal, h.l[i]);
+    h.top_key += h.key[i] * max(h.cos_top[i], 0.0);
+  }
+}
 
 HeadLight head_light(Vessel v, ObjectFoam f) {
   HeadLight h;
@@ -144,20 +160,20 @@ vec3 head_source(Vessel v, ObjectFoam f, HeadLight h, vec3 d, vec3 p, float heig
   float tau_s = f.density / grow * max(min(inner_radius(v, p.y) - r, v.shape.clip_offset - dot(v.shape.clip_normal, p)), 0.0);
   // Each light's unscattered light, through the top or through the wall beside p, and
   // what it gives the top and the side faces.
-  vec3 single = vec3(0.0), top_key = vec3(0.0), side_key = vec3(0.0);
+  // (d's share is in h, head_along.)
+  vec3 single = vec3(0.0), side_key = vec3(0.0);
+  vec2 across = r > 1e-6 ? p.xz / r : vec2(0.0);
   for (int i = 0; i < MAX_LIGHTS; ++i) {
     if (i >= h.count) break;
-    vec3 l = h.l[i];
-    float cos_t = dot(v.liquid.plane_normal, l), cos_s = r > 1e-6 ? dot(p.xz, l.xz) / r : 0.0;
+    float cos_t = h.cos_top[i], cos_s = dot(across, h.l[i].xz);
     float direct = max(cos_t > 0.0 ? exp(-tau_t / cos_t) : 0.0, cos_s > 0.0 ? h.wall * exp(-tau_s / cos_s) : 0.0);
-    single += h.key[i] * hg_phase(dot(l, d), f.anisotropy) * direct;
-    top_key += h.key[i] * max(cos_t, 0.0);
+    single += h.key_phase[i] * direct;
     side_key += h.key[i] * max(cos_s, 0.0);
   }
   // Diffusion between the faces: each face's incoming radiance (a light's irradiance
   // counted as a diffuse pi L) held at its extrapolated boundary, the field the sum of
   // each face's share (face_share).
-  vec3 top_in = h.sky + top_key / PI;
+  vec3 top_in = h.sky + h.top_key / PI;
   vec3 side_in = h.sky + side_key * h.wall / PI;
   float ut = tau_t + h.zb, ub = tau_b + h.zb, us = tau_s + h.zb;
   vec3 et = exp(min(h.kappa * ut, 60.0)), eb = exp(min(h.kappa * ub, 60.0)), es = exp(min(h.kappa * us, 60.0));
@@ -213,6 +229,7 @@ void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, inou
   float dt = len / float(steps);
   float t = t0 + dt * march_jitter();
   HeadLight h = head_light(v, f);
+  head_along(h, v, f, d);
   for (int i = 0; i < 40; ++i) {
     if (i >= steps) break;
     ++g_foam_steps;

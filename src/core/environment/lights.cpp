@@ -172,11 +172,13 @@ AreaLight place_light(const LightParams& lp, const glm::dvec3& aim, bool mirror_
   return l;
 }
 
-LightRig light_rig(const SceneParams& p, const glm::dvec3& aim) {
+LightRig light_rig(const SceneParams& p, const glm::dvec3& aim) { return light_rig(p, aim, aim); }
+
+LightRig light_rig(const SceneParams& p, const glm::dvec3& aim, const glm::dvec3& backlight_aim) {
   LightRig rig;
   rig.aim = aim;
   for (const AreaLight& l : {place_light(p.light, aim), place_light(p.strips, aim), place_light(p.strips, aim, true),
-                             place_light(p.backlight, aim)})
+                             place_light(p.backlight, backlight_aim)})
     if (l.emits()) rig.lights.push_back(l);
   return rig;
 }

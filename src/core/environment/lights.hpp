@@ -62,5 +62,8 @@ struct LightRig {
 };
 
 LightRig light_rig(const SceneParams&, const glm::dvec3& aim);
+// The same with the backlight placed around `backlight_aim` (the middle of the drinks,
+// which it shines through) instead of `aim`.
+LightRig light_rig(const SceneParams&, const glm::dvec3& aim, const glm::dvec3& backlight_aim);
 
 }  // namespace draught

@@ -115,14 +115,14 @@ std::vector<ParamDesc> make_object_and_env_rows() {
       ROW(VesselParams, bubbles, seed, Int, 0.0f, 1000000.0f, "", "Seed of the nucleation sites and bubble jitter"),
       // environment
       ROW(SceneParams, env, mode, Enum, 0, 0, "",
-          "studio: gradient sky, softbox and strip lights; constant: env.color everywhere",
+          "studio: a gradient sky (with strips and a glow painted in where env.strip_intensity, env.backdrop_glow); constant: env.color everywhere",
           (std::vector<std::string>{"studio", "constant"})),
       ROW(SceneParams, env, color, Color, 0.0f, 100.0f, "", "Radiance of the constant environment"),
       ROW(SceneParams, env, sky_top, Color, 0.0f, 100.0f, "", "Studio sky colour at the zenith"),
       ROW(SceneParams, env, sky_horizon, Color, 0.0f, 100.0f, "", "Studio sky colour at the horizon"),
       ROW(SceneParams, env, ground, Color, 0.0f, 100.0f, "", "Studio colour below the horizon"),
-      ROW(SceneParams, env, strip_intensity, Float, 0.0f, 100.0f, "", "Brightness of the two vertical strip lights"),
-      ROW(SceneParams, env, backdrop_glow, Float, 0.0f, 100.0f, "", "Brightness of the glow behind the glass"),
+      ROW(SceneParams, env, strip_intensity, Float, 0.0f, 100.0f, "", "Radiance of two strips painted into the sky (the checker test environment; the studio's strips are strips.*)"),
+      ROW(SceneParams, env, backdrop_glow, Float, 0.0f, 100.0f, "", "Radiance of a glow painted into the sky behind the glass (the checker test environment)"),
       ROW(SceneParams, env, floor, Bool, 0.0f, 1.0f, "", "A floor at y = 0 (env.backdrop) with the glasses' shadows"),
       ROW(SceneParams, env, backdrop, Enum, 0, 0, "",
           "sweep: a seamless paper sweep curving up into a wall behind the scene (the packshot studio); "

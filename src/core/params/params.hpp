@@ -78,11 +78,12 @@ enum class Tonemap { None = 0, Aces = 1 };
 struct EnvParams {
   int mode = int(EnvMode::Studio);  // EnvMode
   glm::vec3 color{0.8f};            // constant mode radiance
-  glm::vec3 sky_top{0.10f, 0.105f, 0.115f};
-  glm::vec3 sky_horizon{0.30f, 0.29f, 0.27f};
-  glm::vec3 ground{0.16f, 0.15f, 0.14f};
-  float strip_intensity = 3.0f;
-  float backdrop_glow = 2.0f;
+  // The studio's sky is dim: the rig's lights light the picture, the sky only fills.
+  glm::vec3 sky_top{0.02f, 0.021f, 0.023f};
+  glm::vec3 sky_horizon{0.03f, 0.03f, 0.03f};
+  glm::vec3 ground{0.02f, 0.02f, 0.02f};
+  float strip_intensity = 0.0f;  // strips painted in the sky (the checker test environment)
+  float backdrop_glow = 0.0f;    // a glow painted in the sky (the checker test environment)
   bool floor = true;
   int backdrop = int(Backdrop::Sweep);  // Backdrop: what the floor is
   glm::vec3 sweep_color{0.80f, 0.79f, 0.77f};  // the sweep's paper albedo
@@ -97,37 +98,42 @@ struct EnvParams {
 // from the scene's centre in `direction`, facing it, emitting `power` watts.
 struct LightParams {
   int shape = int(LightShape::Rect);          // LightShape
-  glm::vec3 direction{-0.55f, 0.75f, 0.45f};  // from the scene's centre towards the light
-  float distance = 1.0f;                      // m from the scene's centre
-  float width = 0.6f;                         // m (a sphere's diameter)
-  float height = 0.6f;                        // m (rect only)
+  glm::vec3 direction{-0.6f, 0.6f, 0.55f};  // from the scene's centre towards the light
+  float distance = 1.0f;                    // m from the scene's centre
+  float width = 0.6f;                       // m (a sphere's diameter)
+  float height = 0.6f;                      // m (rect only)
   glm::vec3 color{1.0f, 0.97f, 0.92f};
-  float power = 3.0f;  // W, radiant flux of a Lambertian emitter
+  float power = 6.0f;  // W, radiant flux of a Lambertian emitter
   float intensity = 2.5f;  // deprecated, accepted, no effect (light.power)
   float size = 12.0f;      // deprecated, accepted, no effect (light.width, light.height)
 };
 
-// The studio's strip softboxes: a pair, the right one the left one mirrored across x = 0.
+// The studio's strip softboxes: a pair, the right one the left one mirrored across x = 0,
+// behind the glass to the sides, so the glass's flanks mirror them at grazing angles
+// (where Fresnel is strong): the two vertical lines of a packshot. Narrow, so they are
+// bright in the glass and spill little on the sweep.
 inline LightParams default_strips() {
   LightParams l;
-  l.direction = {-0.97f, 0.12f, -0.2f};
-  l.distance = 0.6f;
-  l.width = 0.12f;
+  l.direction = {-0.64f, 0.05f, -0.77f};
+  l.distance = 0.55f;
+  l.width = 0.05f;
   l.height = 0.9f;
   l.color = {1.0f, 1.0f, 1.0f};
-  l.power = 2.0f;
+  l.power = 1.5f;
   return l;
 }
 
-// The backlight: a panel behind the scene facing it, seen through the drinks.
+// The backlight: a small panel just behind the glass, hidden by it from the camera and
+// seen only through the drink (the beer's cylinder spreads it over its whole width):
+// the glow of a backlit beer. Scenes of several glasses widen it (presets/scenes/flight.json).
 inline LightParams default_backlight() {
   LightParams l;
-  l.direction = {0.0f, 0.1f, -1.0f};
-  l.distance = 0.45f;
-  l.width = 0.5f;
-  l.height = 0.35f;
+  l.direction = {0.0f, 0.0f, -1.0f};
+  l.distance = 0.17f;
+  l.width = 0.085f;
+  l.height = 0.16f;
   l.color = {1.0f, 0.98f, 0.95f};
-  l.power = 2.0f;
+  l.power = 0.17f;
   return l;
 }
 
@@ -146,7 +152,7 @@ struct ClipParams {
 
 struct RenderParams {
   int tonemap = int(Tonemap::Aces);  // Tonemap
-  float exposure = 1.0f;
+  float exposure = 1.15f;
   bool transparent = false;
   int supersample = 2;
   int max_events = 12;

@@ -163,7 +163,7 @@ FrameState assemble_frame(const SceneParams& p, std::vector<VesselFrame> vessels
   f.selected = std::clamp(selected, 0, std::max(0, int(f.vessels.size()) - 1));
   f.camera = frame_camera(p.camera, f.vessels);
   const glm::dvec3 aim = scene_aim(f.vessels);
-  f.lights = light_rig(p, aim);
+  f.lights = light_rig(p, aim, drink_aim(f.vessels));
   f.backdrop = backdrop_surface(p.env, aim);
   f.environment = environment_frame(p, f.lights, f.backdrop);
   return f;
@@ -181,6 +181,25 @@ glm::dvec3 scene_aim(const std::vector<VesselFrame>& vessels) {
   }
   const glm::dvec2 mid = 0.5 * (lo + hi);
   return {mid.x, 0.5 * top, mid.y};
+}
+
+glm::dvec3 drink_aim(const std::vector<VesselFrame>& vessels) {
+  glm::dvec3 aim = scene_aim(vessels);
+  if (vessels.empty()) return aim;
+  double lo = 1e30, hi = -1e30;
+  for (const VesselFrame& v : vessels) {
+    const double y0 = v.placement.position.y;
+    const double fill = v.params.liquid.fill;
+    if (fill > 0) {
+      lo = std::min(lo, y0 + v.vessel.base);
+      hi = std::max(hi, y0 + v.vessel.fill_height(fill));
+    } else {
+      lo = std::min(lo, y0);
+      hi = std::max(hi, y0 + v.vessel.height);
+    }
+  }
+  aim.y = 0.5 * (lo + hi);
+  return aim;
 }
 
 FrameState make_frame(const Scene& s) {

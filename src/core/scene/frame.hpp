@@ -59,6 +59,9 @@ struct FrameState {
 // the glasses' placements across the floor, at half the tallest glass's height. Placements,
 // not poses: a glass tipped by the hand does not move the lights.
 glm::dvec3 scene_aim(const std::vector<VesselFrame>&);
+// The middle of the drinks as poured (placements, the liquid at rest; the glasses' middle
+// where there is none), at scene_aim's x and z: what the backlight shines through.
+glm::dvec3 drink_aim(const std::vector<VesselFrame>&);
 
 // The frame of these vessels in a scene with these parameters (the camera framed).
 FrameState assemble_frame(const SceneParams&, std::vector<VesselFrame>, int selected = 0);

@@ -192,7 +192,7 @@ TEST(ParamTable, DefaultConstructedParamsAreTheDefaults) {
   EXPECT_EQ(default_initialized.bubbles.etched_base, false);
   EXPECT_EQ(default_initialized.env.mode, int(EnvMode::Studio));
   EXPECT_EQ(default_initialized.render.tonemap, int(Tonemap::Aces));
-  EXPECT_EQ(default_initialized.light.direction, glm::vec3(-0.55f, 0.75f, 0.45f));
+  EXPECT_EQ(default_initialized.light.direction, glm::vec3(-0.6f, 0.6f, 0.55f));
   EXPECT_EQ(default_initialized.camera.auto_frame, true);
   EXPECT_EQ(default_initialized.render.supersample, 2);
   EXPECT_TRUE(find_param("env.mode")->def == ParamValue(std::string("studio")));
