@@ -1,5 +1,5 @@
 // The surroundings as light, in C++: the procedural studio's radiance by direction (the
-// twin of studio_backdrop in shaders/lib/environment/studio.glsl; key_softbox there), the
+// twin of studio_backdrop in shaders/lib/environment/studio.glsl), the reference's old
 // key light as an emitter of its own, and the checker floor's albedo (shade_floor in
 // shaders/lib/environment/floor.glsl). The reference path tracer lights its scenes with
 // these.
