@@ -113,7 +113,8 @@ TEST(StudioTwins, IntersectAndAlbedoAgreeWithCore) {
               compared, lights_seen, backdrop_seen, disagree, worst_t, worst_n, worst_albedo);
   ASSERT_GT(lights_seen, 500) << "the views must see the lights (else the test tests nothing)";
   ASSERT_GT(backdrop_seen, 5000);
-  EXPECT_LT(disagree, compared / 200) << "more than 0.5 % of the rays meet something else on the GPU";
+  // (None disagree today; a floor ending 5 cm off makes 167 of these rays disagree.)
+  EXPECT_LT(disagree, compared / 2000) << "more than 0.05 % of the rays meet something else on the GPU";
   EXPECT_LT(worst_t, 1e-3);  // float camera rays on grazing hits (as tests/gpu/test_probes.cpp)
   EXPECT_LT(worst_n, 1e-3);
   EXPECT_LT(worst_albedo, 1e-6);
