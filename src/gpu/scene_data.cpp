@@ -160,9 +160,31 @@ void make_texture(unsigned& tex, int width, int rows) {
 }
 }  // namespace
 
-SceneTextures::SceneTextures() { allocate(4); }
+std::vector<glm::vec4> pack_floor_light(const FloorLightMap& m) {
+  std::vector<glm::vec4> texels(m.irradiance.size(), glm::vec4(1.0f));
+  for (size_t k = 0; k < texels.size(); ++k)
+    for (int c = 0; c < 3; ++c) {
+      const float open = m.unoccluded[k][c];
+      if (open > 1e-9f) texels[k][c] = m.irradiance[k][c] / open;
+    }
+  return texels;
+}
+
+SceneTextures::SceneTextures() {
+  allocate(4);
+  // The floor's light map: one neutral texel until a map is computed.
+  glGenTextures(1, &floor_tex_);
+  glBindTexture(GL_TEXTURE_2D, floor_tex_);
+  const float one[4] = {1, 1, 1, 1};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, 1, 1, 0, GL_RGBA, GL_FLOAT, one);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
 
 SceneTextures::~SceneTextures() {
+  glDeleteTextures(1, &floor_tex_);
   glDeleteTextures(1, &objects_tex_);
   glDeleteTextures(1, &knots_tex_);
 }
@@ -213,6 +235,32 @@ void SceneTextures::update(const FrameState& f) {
       ++knot_uploads_;
     }
   }
+  update_floor_light(f);
+}
+
+void SceneTextures::set_floor_light(const FloorLightSettings& s, bool on) {
+  floor_settings_ = s;
+  floor_on_ = on;
+  floor_inputs_.reset();  // computed again on the next update
+}
+
+void SceneTextures::update_floor_light(const FrameState& f) {
+  floor_computed_ = false;
+  std::vector<double> inputs = floor_light_inputs(f);
+  if (floor_inputs_ && *floor_inputs_ == inputs) return;  // a still or an unchanged frame costs nothing more
+  floor_inputs_ = std::move(inputs);
+  floor_map_ = floor_on_ ? compute_floor_light(f, floor_settings_) : FloorLightMap{};
+  floor_computed_ = true;
+  if (floor_map_.empty()) return;
+  const std::vector<glm::vec4> texels = pack_floor_light(floor_map_);
+  glBindTexture(GL_TEXTURE_2D, floor_tex_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, floor_map_.width, floor_map_.height, 0, GL_RGBA, GL_FLOAT, texels.data());
+}
+
+void SceneTextures::describe_floor_light(contract::FrameBlock& b) const {
+  b.floor_light_on = floor_map_.empty() ? 0 : 1;
+  b.floor_light_origin = glm::vec2(floor_map_.origin);
+  b.floor_light_size = glm::vec2(floor_map_.size);
 }
 
 void SceneTextures::bind() const {
@@ -220,6 +268,8 @@ void SceneTextures::bind() const {
   glBindTexture(GL_TEXTURE_2D, objects_tex_);
   glActiveTexture(GL_TEXTURE0 + contract::kKnotsSampler.unit);
   glBindTexture(GL_TEXTURE_2D, knots_tex_);
+  glActiveTexture(GL_TEXTURE0 + contract::kFloorLightSampler.unit);
+  glBindTexture(GL_TEXTURE_2D, floor_tex_);
   glActiveTexture(GL_TEXTURE0);
 }
 

@@ -1,24 +1,20 @@
 // The checker floor at world y = 0: where a path meets it, and the light it receives:
-// every glass casts a soft shadow tinted by its drink, with a caustic in the middle
-// (analytic: each glass is taken as a cylinder of its mean radius), and darkens the
-// floor around its foot (contact shadow). A floor point is shaded by the product of
-// every glass's shadow; the bounds of each glass are tested first. A cross-section
-// (clip.*) takes away the shadow and the contact of what it cuts away.
+// the direct light with every glass's shadow and caustics from the traced map
+// (floor_light.glsl), and the ambient light darkened around each foot (contact). A
+// cross-section (clip.*) takes away the contact of what it cuts away (the map honours it).
 #ifndef LIB_ENVIRONMENT_FLOOR_GLSL
 #define LIB_ENVIRONMENT_FLOOR_GLSL
 #include "generated/frame.glsl"
 #include "lib/scene/objects.glsl"
 #include "lib/environment/studio.glsl"
+#include "lib/environment/floor_light.glsl"
 
-// Object `row` seen from floor point p (world), with only its bounds and body: the
-// point in the glass's frame as its height on the axis (y) and the vector across the
-// axis (xz), and the same for the light. A glass is round, so this is all the floor
-// needs (no rotation matrix: for an upright glass these are exactly the local x, y, z).
+// Object `row` seen from floor point p (world), with only its bounds: the point's height
+// on the glass's axis and its offset across it. A glass is round, so this is all the
+// contact darkening needs.
 struct FloorView {
-  vec3 across;        // p's offset across the axis
-  float along;        // p's height on the axis (local y)
-  vec3 l_across;      // the light direction across the axis
-  float l_along;      // and along it
+  vec3 across;  // p's offset across the axis
+  float along;  // p's height on the axis (local y)
 };
 
 FloorView floor_view(ObjectBounds b, vec3 p) {
@@ -26,8 +22,6 @@ FloorView floor_view(ObjectBounds b, vec3 p) {
   vec3 rel = p - b.bound_base;
   v.along = dot(rel, b.bound_axis);
   v.across = rel - v.along * b.bound_axis;
-  v.l_along = dot(frame.light_dir, b.bound_axis);
-  v.l_across = frame.light_dir - v.l_along * b.bound_axis;
   return v;
 }
 
@@ -48,84 +42,29 @@ Hit hit_floor(vec3 o, vec3 d, float tmin) {
   return Hit(t, vec3(0.0, 1.0, 0.0), M_FLOOR, -1);
 }
 
-// Where the shadow ray from floor point v passes the glass's axis most closely: its
-// parameter t along the light, its distance from the axis and its height on the axis.
-struct ShadowRay {
-  bool across;  // false: the light runs along the axis (no shadow from a cylinder)
-  float t, dist, y;
-  float speed;  // how fast the ray moves across the axis per unit t
-};
-
-ShadowRay shadow_ray(FloorView v) {
-  ShadowRay r;
-  float a = dot(v.l_across, v.l_across);
-  r.across = a >= 1e-8;
-  r.speed = sqrt(a);
-  r.t = -dot(v.across, v.l_across) / a;
-  r.dist = length(v.across + r.t * v.l_across);
-  r.y = v.along + r.t * v.l_along;
-  return r;
-}
-
-// The part of the shadow ray's chord through the cylinder (around the point nearest the
-// axis, from floor point p) that the cross-section leaves: 1 uncut (or no cut), 0 cut
-// away, so a glass cut away entirely casts no shadow and a half-cut one a fainter one.
-float kept_by_cut(ObjectBody body, vec3 p, ShadowRay r, float half_chord) {
-  float dt = half_chord / max(r.speed, 1e-6);
-  float s0 = dot(body.clip_world_normal, p + (r.t - dt) * frame.light_dir) - body.clip_world_offset;
-  float s1 = dot(body.clip_world_normal, p + (r.t + dt) * frame.light_dir) - body.clip_world_offset;
-  float lo = min(s0, s1), hi = max(s0, s1);
-  if (hi <= 0.0) return 1.0;
-  if (lo >= 0.0) return 0.0;
-  return -lo / (hi - lo);
-}
-
-// One glass's shadow at floor point p: a cylinder of the glass's mean radius, tinted by
-// the drink where the light crosses it below the surface, with a caustic in the middle,
-// as much of it as the cross-section leaves.
-vec3 glass_shadow(ObjectBody body, vec3 p, ShadowRay r) {
-  float rad = body.mean_outer_radius;
-  if (!r.across || r.t <= 0.0 || r.y > body.height + 0.004) return vec3(1.0);
-  float edge = smoothstep(rad * 1.05, rad * 0.9, r.dist);
-  if (edge <= 0.0) return vec3(1.0);
-  float chord = 2.0 * sqrt(max(rad * rad - r.dist * r.dist, 0.0));
-  edge *= kept_by_cut(body, p, r, 0.5 * chord);
-  if (edge <= 0.0) return vec3(1.0);
-  bool wet = body.has_liquid != 0 && r.y < body.wet_height;
-  vec3 through = wet ? exp(-body.absorption * chord) : vec3(0.85);
-  float x = r.dist / rad;
-  float caustic = wet ? 0.45 + 1.6 * pow(max(1.0 - x * x, 0.0), 6.0) : 0.75;
-  return mix(vec3(1.0), through * caustic, edge);
-}
-
-// Direct light (shadows) and ambient occlusion (contact) at floor point p (world) from
-// every glass. Each glass's bounds decide first whether it can shade p at all (the
-// mean radius and the height are within the bounds); only then are its body's three
-// texels fetched.
-void floor_occlusion(vec3 p, out vec3 direct, out float contact) {
-  direct = vec3(1.0);
-  contact = 1.0;
+// Ambient occlusion (contact) at floor point p (world) from every glass: darker near the
+// foot, where the cross-section leaves it. (Direct light, shadows and caustics included,
+// comes from the traced map: floor_light.glsl.)
+float floor_contact(vec3 p) {
+  float contact = 1.0;
   for (int i = 0; i < OBJECT_COUNT; ++i) {
     ObjectBounds b = bounds_of(i);
-    FloorView v = floor_view(b, p);
-    ShadowRay r = shadow_ray(v);
-    // Contact: beyond three bound radii (at least two foot radii from the foot) it
-    // darkens by less than 2e-4 of the ambient light, nothing an 8-bit pixel shows.
+    // Beyond three bound radii (at least two foot radii from the foot) it darkens by less
+    // than 2e-4 of the ambient light, nothing an 8-bit pixel shows.
     vec3 rel = p - b.bound_base;
-    bool near = dot(rel, rel) < 9.0 * b.bound_radius * b.bound_radius;
-    bool shade = r.across && r.t > 0.0 && r.y <= b.bound_length + 0.004 && r.dist < 1.05 * b.bound_radius;
-    if (near || shade) {  // (a block, not a continue: llvmpipe runs it faster)
+    if (dot(rel, rel) < 9.0 * b.bound_radius * b.bound_radius) {  // (a block, not a continue: llvmpipe runs it faster)
       ObjectBody body = body_of(i);
+      FloorView v = floor_view(b, p);
       // Darker near the foot (which lifts off the floor when the glass tips), where the
       // cross-section leaves the foot: its point nearest p decides, blended over 2 mm.
       float across = length(v.across);
       float foot_dist = length(vec2(max(across - body.foot_radius, 0.0), v.along));
       vec3 foot = b.bound_base + v.across * (min(across, body.foot_radius) / max(across, 1e-9));
       float foot_kept = 1.0 - smoothstep(-0.002, 0.002, dot(body.clip_world_normal, foot) - body.clip_world_offset);
-      if (near) contact *= 1.0 - 0.55 * foot_kept * exp(-foot_dist / (0.25 * body.foot_radius));
-      if (shade) direct *= glass_shadow(body, p, r);
+      contact *= 1.0 - 0.55 * foot_kept * exp(-foot_dist / (0.25 * body.foot_radius));
     }
   }
+  return contact;
 }
 
 // The floor at p (world), seen from `dist` away.
@@ -133,10 +72,7 @@ vec3 shade_floor(vec3 p, float dist) {
   vec2 cell = floor(p.xz / frame.checker_size);
   bool light_square = mod(cell.x + cell.y, 2.0) < 0.5;
   vec3 albedo = light_square ? frame.floor_a : frame.floor_b;
-  vec3 direct;
-  float contact;
-  floor_occlusion(p, direct, contact);
-  vec3 light = ambient_light() * contact + frame.light_color * frame.light_intensity * max(frame.light_dir.y, 0.0) * direct;
+  vec3 light = ambient_light() * floor_contact(p) + floor_direct_light(p);
   vec3 c = albedo * light / PI * 1.6;
   // Far floor fades into the studio backdrop, so the checker never aliases at the horizon.
   return mix(frame.ground, c, exp(-dist / 2.0));
