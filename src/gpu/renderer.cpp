@@ -100,7 +100,9 @@ Renderer::~Renderer() {
   glDeleteVertexArrays(1, &vao_);
 }
 
-void Renderer::set_floor_light(const FloorLightSettings& s, bool on) { textures_->set_floor_light(s, on); }
+void Renderer::set_floor_light(const FloorLightSettings& s, bool on, int draft_photons) {
+  textures_->set_floor_light(s, on, draft_photons);
+}
 
 void Renderer::draw(const FrameState& f, int width, int height, DebugView debug, int event) {
   textures_->update(f);  // only rows that changed; the floor's light when its inputs did

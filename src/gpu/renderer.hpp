@@ -76,9 +76,10 @@ class Renderer {
   // (tests and benchmarks compare the two).
   static constexpr int kMaxHeldObjects = 4;
   void set_held_objects(bool on) { held_objects_ = on; }
-  // The floor's shadows and caustics: the photon budget of its light map (fewer while
-  // something moves, more for stills), or off (the floor takes the unoccluded light).
-  void set_floor_light(const FloorLightSettings&, bool on = true);
+  // The floor's shadows and caustics: the photon budget of its light map, or off (the floor
+  // takes the unoccluded light); draft_photons > 0: drafts while the scene moves, the full
+  // budget once it holds still (SceneTextures::set_floor_light).
+  void set_floor_light(const FloorLightSettings&, bool on = true, int draft_photons = 0);
 
  private:
   void draw_bubbles(const FrameState&, int width, int height);

@@ -52,10 +52,12 @@ class SceneTextures {
   void bind() const;
   // The floor's light map: computed with these settings when what it depends on changes
   // (floor_light_inputs), never else; off: none (the floor takes the unoccluded light).
-  void set_floor_light(const FloorLightSettings&, bool on = true);
+  // draft_photons > 0 (interactive apps): a frame whose inputs just changed gets a draft of
+  // that many photons, traced again with the full budget on the first frame they hold still.
+  void set_floor_light(const FloorLightSettings&, bool on = true, int draft_photons = 0);
   // Where the map lies (frame block members floor_light_*) for the frame of the last update.
   void describe_floor_light(contract::FrameBlock&) const;
-  const FloorLightMap& floor_light() const { return floor_map_; }
+  const FloorLightMap& floor_light() const;
 
   // Rows uploaded by the last update (tests check that a still frame uploads none).
   int object_rows_uploaded() const { return object_uploads_; }
@@ -74,11 +76,22 @@ class SceneTextures {
   int object_uploads_ = 0, knot_uploads_ = 0;
 
   void update_floor_light(const FrameState&);
-  unsigned floor_tex_ = 0;
+  void clear_floor_light();
+  // The last few maps with their textures, the current one first: frames that alternate
+  // between a few states (a benchmark's interleaved scenes, a still drawn at two sizes)
+  // trace each once.
+  struct FloorEntry {
+    std::vector<double> inputs;  // what the map was computed from
+    FloorLightMap map;
+    unsigned tex = 0;
+    bool draft = false;
+  };
+  static constexpr size_t kFloorCache = 6;
+  std::vector<FloorEntry> floor_cache_;
+  unsigned neutral_tex_ = 0;  // one texel of factor 1, bound when there is no map
   FloorLightSettings floor_settings_;
   bool floor_on_ = true, floor_computed_ = false;
-  std::optional<std::vector<double>> floor_inputs_;  // what the map was computed from
-  FloorLightMap floor_map_;
+  int draft_photons_ = 0;
 };
 
 }  // namespace draught::gpu

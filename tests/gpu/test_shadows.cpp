@@ -82,9 +82,9 @@ TEST(Shadows, TheFloorUnderTheGlassShowsTheMap) {
   const FloorLightMap map = g.renderer->scene_textures().floor_light();
   ASSERT_FALSE(map.empty());
   const Image no_key = g.renderer->render(dark, kW, kH);
-  g.renderer->set_floor_light(FloorLightSettings{}, false);
+  g.renderer->set_floor_light(test_floor_light(), false);
   const Image off = g.renderer->render(f, kW, kH);
-  g.renderer->set_floor_light(FloorLightSettings{});
+  g.renderer->set_floor_light(test_floor_light());
   const gpu::DebugImage first = g.renderer->render_debug(f, kW, kH, gpu::DebugView::Depth);
   const CameraBasis cam = camera_basis(f, kW, kH);
   auto linear = [](std::uint8_t v) {

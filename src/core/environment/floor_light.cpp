@@ -492,7 +492,9 @@ FloorLightMap compute_floor_light(const FrameState& f, const FloorLightSettings&
 
 std::vector<double> floor_light_inputs(const FrameState& f) {
   std::vector<double> k;
-  auto put = [&k](auto... xs) { (k.push_back(double(xs)), ...); };
+  // Rounded to a hundredth of a millimetre (or 1e-5 of a unit): a glass coming to rest, a
+  // head settling, stop changing the map once nothing the map shows moves any more.
+  auto put = [&k](auto... xs) { (k.push_back(std::round(double(xs) * 1e5)), ...); };
   auto put3 = [&put](const auto& v) { put(v.x, v.y, v.z); };
   put(scene_geometry(f).floor ? 1 : 0, f.lights.lights.size(), f.vessels.size());
   for (const AreaLight& l : f.lights.lights) {

@@ -71,9 +71,10 @@ glm::dvec3 unoccluded_floor_irradiance(const LightRig&, const glm::dvec3& p);
 // The map of the frame (empty when there is no floor, no light or no glass).
 FloorLightMap compute_floor_light(const FrameState&, const FloorLightSettings& = {});
 
-// Everything the map depends on, as numbers (poses, glass shapes, liquid surfaces, drink,
-// glass and head parameters, cross-sections, the lights, the floor): equal inputs give an
-// equal map, so a renderer recomputes it only when these change.
+// Everything the map depends on, as numbers rounded to 1e-5 (of a metre, or of the unit:
+// nothing a picture shows): poses, glass shapes, liquid surfaces,
+// drink, glass and head parameters, cross-sections, the lights, the floor. Equal inputs give
+// an equal map, so a renderer recomputes it only when these change.
 std::vector<double> floor_light_inputs(const FrameState&);
 
 }  // namespace draught
