@@ -68,14 +68,10 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.bound_axis = glm::vec3(vf.pose.orientation * glm::dvec3(0, 1, 0));
   r.bound_radius = float(v.bound_radius);
   r.bound_length = float(v.height + v.rim_minor);
-  // body: what the floor needs (shadow, contact)
+  // body: what the floor needs (contact), the size and the drink
   r.height = float(v.height);
   r.foot_radius = float(v.r_outer.front());
   r.mean_outer_radius = float(vf.mean_outer_radius);
-  // Where the surface (with its ring wave, the only shape that moves the axis point)
-  // crosses the axis; a glass tipped past level is shadowed as if dry.
-  const double ny = vf.liquid.n.y;
-  r.wet_height = vf.has_liquid && ny > 1e-6 ? float((vf.liquid.offset + vf.liquid.waves.ring) / ny) : -1.0f;
   r.absorption = vf.liquid_absorption;
   r.has_liquid = vf.has_liquid ? 1 : 0;
   // The cross-section as the reference intersector has it (normalised; off: 0, 0, 0, 1),
