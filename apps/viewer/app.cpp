@@ -150,7 +150,7 @@ class Viewer {
     // interactive budget once it holds still.
     FloorLightSettings floor;
     floor.photons = kFloorPhotonsInteractive;
-    renderer_.set_floor_light(floor, true, kFloorPhotonsInteractive / 10);
+    renderer_.set_floor_light(floor, true, kFloorPhotonsInteractive / 5);
     applied_revision_ = editor_.revision();
     restart();
   }

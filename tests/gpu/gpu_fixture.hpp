@@ -18,7 +18,7 @@ struct Gpu {
 };
 
 // The floor's light map of the GPU tests: fewer photons than a still's (a tenth: about
-// 0.15 s a scene), since many tests draw many scenes once each. The GPU tests check how
+// 0.1 s a scene), since many tests draw many scenes once each. The GPU tests check how
 // the picture uses the map; tests/unit/environment checks the map against the physics.
 inline FloorLightSettings test_floor_light() {
   FloorLightSettings s;

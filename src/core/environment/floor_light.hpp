@@ -22,11 +22,12 @@
 
 namespace draught {
 
-// Photons over all lights and glasses for a still: about 0.6 s for the default pint on two
-// cores, leaving the noise near 2 % of the floor's light in the shadow (docs/REFERENCE.md).
-inline constexpr int kFloorPhotonsStill = 1000000;
-// While something moves (the viewer): four times noisier in variance, four times faster.
-inline constexpr int kFloorPhotonsInteractive = 250000;
+// Photons over all lights and glasses for a still: the default pint under the rig in about
+// 1.3 s on two busy cores, its noise about 1 % of the floor's light near the glass
+// (docs/REFERENCE.md, "Shadows and caustics"); the eye does not see that on a floor.
+inline constexpr int kFloorPhotonsStill = 500000;
+// Once an interactive scene holds still: five times faster, about 2 % noise.
+inline constexpr int kFloorPhotonsInteractive = 100000;
 
 struct FloorLightSettings {
   int photons = kFloorPhotonsStill;  // over all lights and glasses
