@@ -3,6 +3,7 @@
 // intersector per ray. GPU frame times come from `draught bench`. Results:
 // docs/PERFORMANCE.md.
 #include "core/bubbles/bubble_view.hpp"
+#include "core/environment/floor_light.hpp"
 #include "core/scene/camera.hpp"
 #include "core/vessel/fill_table.hpp"
 #include "core/scene/frame.hpp"
@@ -88,6 +89,19 @@ void BM_ReferenceFirstHit(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * 64 * 64);
 }
 BENCHMARK(BM_ReferenceFirstHit);
+
+// The floor's light map (shadows and caustics traced from the rig's lights) at a still's
+// and an interactive budget: the default pint and the four-glass flight.
+void BM_FloorLight(benchmark::State& state, const char* preset, int photons) {
+  const FrameState f = make_frame(resolve_scene_objects({preset, "", {}, {}}));
+  FloorLightSettings s;
+  s.photons = photons;
+  for (auto _ : state) benchmark::DoNotOptimize(compute_floor_light(f, s));
+}
+BENCHMARK_CAPTURE(BM_FloorLight, pint_still, "lager", kFloorPhotonsStill)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_FloorLight, pint_interactive, "lager", kFloorPhotonsInteractive)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_FloorLight, flight_still, "flight", kFloorPhotonsStill)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_FloorLight, flight_interactive, "flight", kFloorPhotonsInteractive)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Loading a timeline of N tilts (parse, validate, chain the tilts): linear in N, so the
 // time per tilt stays flat from 1,000 to 100,000.

@@ -146,6 +146,11 @@ class Viewer {
     // With the controller subsystem up, the gamepad part is always there: it holds the glass
     // upright until a controller reports motion, so one plugged in later just works.
     if (rig_.gamepad) gamepad_ = std::make_unique<SdlGamepadInput>(*rig_.gamepad);
+    // The floor's shadows: drafts while a glass moves (tens of milliseconds), the
+    // interactive budget once it holds still.
+    FloorLightSettings floor;
+    floor.photons = kFloorPhotonsInteractive;
+    renderer_.set_floor_light(floor, true, kFloorPhotonsInteractive / 5);
     applied_revision_ = editor_.revision();
     restart();
   }

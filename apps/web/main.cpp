@@ -218,6 +218,15 @@ EM_BOOL on_context_lost(int, const void*, void*) {
   return EM_TRUE;
 }
 
+// The floor's shadows on the page: one thread (no workers), drafts while a glass moves,
+// a tenth of a still's photons once it holds still (well under a second in WebAssembly).
+void set_web_floor_light(gpu::Renderer& r) {
+  FloorLightSettings s;
+  s.threads = 1;
+  s.photons = kFloorPhotonsStill / 10;
+  r.set_floor_light(s, true, kFloorPhotonsStill / 100);
+}
+
 // The context is back, empty: programs, buffers and textures are built again (the renderer
 // uploads the whole scene into its fresh textures on the next frame).
 EM_BOOL on_context_restored(int, const void*, void*) {
@@ -225,6 +234,7 @@ EM_BOOL on_context_restored(int, const void*, void*) {
   emscripten_webgl_make_context_current(app->gl);
   try {
     app->renderer = std::make_unique<gpu::Renderer>();
+    set_web_floor_light(*app->renderer);
   } catch (const std::exception& e) {
     app->error = std::string("the WebGL context came back, but the renderer could not be rebuilt: ") + e.what();
     return EM_TRUE;
@@ -294,6 +304,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_start(const char* canvas, int preserve,
     app->sim->settle_bubbles(2.0);
     app->rig = make_rig("mouse");
     app->renderer = std::make_unique<gpu::Renderer>();
+    set_web_floor_light(*app->renderer);
   } catch (const std::exception& e) {
     app->renderer.reset();
     return answer(app->error = e.what());

@@ -65,7 +65,7 @@ void bind_interface(const Program& program, const std::string& what) {
   check_uniform_block(program.id(), contract::kFrameBlockName, contract::kFrameBlockMembers,
                       contract::kFrameBlockUsedBytes, sizeof(contract::FrameBlock), contract::kFrameBlockBinding, what);
   glUseProgram(program.id());
-  for (const contract::Sampler& s : {contract::kObjectSampler, contract::kKnotsSampler})
+  for (const contract::Sampler& s : {contract::kObjectSampler, contract::kKnotsSampler, contract::kFloorLightSampler})
     if (GLint at = glGetUniformLocation(program.id(), s.name); at >= 0) glUniform1i(at, s.unit);
 }
 }  // namespace
@@ -100,13 +100,18 @@ Renderer::~Renderer() {
   glDeleteVertexArrays(1, &vao_);
 }
 
+void Renderer::set_floor_light(const FloorLightSettings& s, bool on, int draft_photons) {
+  textures_->set_floor_light(s, on, draft_photons);
+}
+
 void Renderer::draw(const FrameState& f, int width, int height, DebugView debug, int event) {
-  const contract::FrameBlock block = pack_frame_block(f, width, height, debug, event);
+  textures_->update(f);  // only rows that changed; the floor's light when its inputs did
+  textures_->bind();
+  contract::FrameBlock block = pack_frame_block(f, width, height, debug, event);
+  textures_->describe_floor_light(block);
   glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
   glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof block, &block);
   glBindBufferBase(GL_UNIFORM_BUFFER, contract::kFrameBlockBinding, ubo_);
-  textures_->update(f);  // only rows that changed
-  textures_->bind();
   glViewport(0, 0, width, height);
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);

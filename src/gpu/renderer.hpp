@@ -4,6 +4,7 @@
 // and reads back images. It does no physics.
 #pragma once
 
+#include "core/environment/floor_light.hpp"
 #include "core/scene/frame.hpp"
 #include "core/io/image.hpp"
 #include "generated/constants.hpp"
@@ -75,6 +76,10 @@ class Renderer {
   // (tests and benchmarks compare the two).
   static constexpr int kMaxHeldObjects = 4;
   void set_held_objects(bool on) { held_objects_ = on; }
+  // The floor's shadows and caustics: the photon budget of its light map, or off (the floor
+  // takes the unoccluded light); draft_photons > 0: drafts while the scene moves, the full
+  // budget once it holds still (SceneTextures::set_floor_light).
+  void set_floor_light(const FloorLightSettings&, bool on = true, int draft_photons = 0);
 
  private:
   void draw_bubbles(const FrameState&, int width, int height);
@@ -88,7 +93,7 @@ class Renderer {
   std::filesystem::path shader_dir_;
   std::map<int, std::unique_ptr<Program>> programs_;  // by variant, built when first needed
   std::unique_ptr<Program> bubble_program_;  // pass 2: rising bubbles, built when first needed
-  std::unique_ptr<SceneTextures> textures_;  // u_objects, u_knots
+  std::unique_ptr<SceneTextures> textures_;  // u_objects, u_knots, u_floor_light
   unsigned bubble_vao_ = 0, bubble_vbo_ = 0;
   unsigned vao_ = 0, ubo_ = 0;
   bool held_objects_ = true;

@@ -84,14 +84,10 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.bound_axis = glm::vec3(vf.pose.orientation * glm::dvec3(0, 1, 0));
   r.bound_radius = float(v.bound_radius);
   r.bound_length = float(v.height + v.rim_minor);
-  // body: what the floor needs (shadow, contact)
+  // body: what the floor needs (contact), the size and the drink
   r.height = float(v.height);
   r.foot_radius = float(v.r_outer.front());
   r.mean_outer_radius = float(vf.mean_outer_radius);
-  // Where the surface (with its ring wave, the only shape that moves the axis point)
-  // crosses the axis; a glass tipped past level is shadowed as if dry.
-  const double ny = vf.liquid.n.y;
-  r.wet_height = vf.has_liquid && ny > 1e-6 ? float((vf.liquid.offset + vf.liquid.waves.ring) / ny) : -1.0f;
   r.absorption = vf.liquid_absorption;
   r.has_liquid = vf.has_liquid ? 1 : 0;
   // The cross-section as the reference intersector has it (normalised; off: 0, 0, 0, 1),
@@ -185,9 +181,41 @@ void make_texture(unsigned& tex, int width, int rows) {
 }
 }  // namespace
 
-SceneTextures::SceneTextures() { allocate(4); }
+std::vector<glm::vec4> pack_floor_light(const FloorLightMap& m) {
+  std::vector<glm::vec4> texels(m.irradiance.size(), glm::vec4(1.0f));
+  for (size_t k = 0; k < texels.size(); ++k)
+    for (int c = 0; c < 3; ++c) {
+      const float open = m.unoccluded[k][c];
+      if (open > 1e-9f) texels[k][c] = m.irradiance[k][c] / open;
+    }
+  return texels;
+}
+
+namespace {
+// A filtered RGBA16F texture of the floor's light factor (ES 3.0 and WebGL2 filter
+// half floats; they take float data for them).
+unsigned make_floor_texture(int width, int height, const float* rgba) {
+  unsigned tex = 0;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, width, height, 0, GL_RGBA, GL_FLOAT, rgba);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return tex;
+}
+}  // namespace
+
+SceneTextures::SceneTextures() {
+  allocate(4);
+  const float one[4] = {1, 1, 1, 1};
+  neutral_tex_ = make_floor_texture(1, 1, one);
+}
 
 SceneTextures::~SceneTextures() {
+  clear_floor_light();
+  glDeleteTextures(1, &neutral_tex_);
   glDeleteTextures(1, &objects_tex_);
   glDeleteTextures(1, &knots_tex_);
 }
@@ -238,6 +266,63 @@ void SceneTextures::update(const FrameState& f) {
       ++knot_uploads_;
     }
   }
+  update_floor_light(f);
+}
+
+void SceneTextures::set_floor_light(const FloorLightSettings& s, bool on, int draft_photons) {
+  floor_settings_ = s;
+  floor_on_ = on;
+  draft_photons_ = draft_photons;
+  clear_floor_light();  // computed again on the next update
+}
+
+void SceneTextures::clear_floor_light() {
+  for (FloorEntry& e : floor_cache_) glDeleteTextures(1, &e.tex);
+  floor_cache_.clear();
+}
+
+void SceneTextures::update_floor_light(const FrameState& f) {
+  floor_computed_ = false;
+  std::vector<double> inputs = floor_light_inputs(f);
+  bool refine = false;
+  for (size_t i = 0; i < floor_cache_.size(); ++i)
+    if (floor_cache_[i].inputs == inputs) {  // a still or an unchanged frame costs nothing more
+      std::rotate(floor_cache_.begin(), floor_cache_.begin() + long(i), floor_cache_.begin() + long(i) + 1);
+      if (i > 0 || !floor_cache_.front().draft) return;
+      // A draft the frame holds still on: traced again in full.
+      glDeleteTextures(1, &floor_cache_.front().tex);
+      floor_cache_.erase(floor_cache_.begin());
+      refine = true;
+      break;
+    }
+  FloorEntry e;
+  e.inputs = std::move(inputs);
+  FloorLightSettings s = floor_settings_;
+  e.draft = draft_photons_ > 0 && !refine;
+  if (e.draft) s.photons = std::min(s.photons, draft_photons_);
+  e.map = floor_on_ ? compute_floor_light(f, s) : FloorLightMap{};
+  floor_computed_ = true;
+  if (!e.map.empty()) {
+    const std::vector<glm::vec4> texels = pack_floor_light(e.map);
+    e.tex = make_floor_texture(e.map.width, e.map.height, &texels[0].x);
+  }
+  if (floor_cache_.size() == kFloorCache) {
+    glDeleteTextures(1, &floor_cache_.back().tex);
+    floor_cache_.pop_back();
+  }
+  floor_cache_.insert(floor_cache_.begin(), std::move(e));
+}
+
+const FloorLightMap& SceneTextures::floor_light() const {
+  static const FloorLightMap none;
+  return floor_cache_.empty() ? none : floor_cache_.front().map;
+}
+
+void SceneTextures::describe_floor_light(contract::FrameBlock& b) const {
+  const FloorLightMap& m = floor_light();
+  b.floor_light_on = m.empty() ? 0 : 1;
+  b.floor_light_origin = glm::vec2(m.origin);
+  b.floor_light_size = glm::vec2(m.size);
 }
 
 void SceneTextures::bind() const {
@@ -245,6 +330,8 @@ void SceneTextures::bind() const {
   glBindTexture(GL_TEXTURE_2D, objects_tex_);
   glActiveTexture(GL_TEXTURE0 + contract::kKnotsSampler.unit);
   glBindTexture(GL_TEXTURE_2D, knots_tex_);
+  glActiveTexture(GL_TEXTURE0 + contract::kFloorLightSampler.unit);
+  glBindTexture(GL_TEXTURE_2D, floor_light().empty() ? neutral_tex_ : floor_cache_.front().tex);
   glActiveTexture(GL_TEXTURE0);
 }
 

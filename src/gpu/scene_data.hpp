@@ -7,6 +7,7 @@
 // environment estimate).
 #pragma once
 
+#include "core/environment/floor_light.hpp"
 #include "core/scene/frame.hpp"
 #include "generated/constants.hpp"
 #include "generated/frame.hpp"
@@ -29,8 +30,13 @@ contract::ObjectRecord pack_object(const FrameState&, int row);
 // A vessel's knot row: texel k = (r_outer[k], r_inner[k], r_outer[k + 1], r_inner[k + 1]).
 std::vector<glm::vec4> pack_knots(const Vessel&);
 
+// The floor's light map as the texture holds it: per texel, its irradiance over the
+// unoccluded irradiance, per channel (a = 1), so the shader multiplies the unoccluded light
+// it computes itself; where no light reaches the floor, 1.
+std::vector<glm::vec4> pack_floor_light(const FloorLightMap&);
+
 // The two data textures (RGBA32F, fetched texel by texel: ES 3.0 does not filter float
-// textures). Needs a current GLES 3.0 context.
+// textures) and the floor's light map (RGBA16F, filtered). Needs a current GLES 3.0 context.
 class SceneTextures {
  public:
   SceneTextures();
@@ -41,12 +47,23 @@ class SceneTextures {
   // Brings both textures up to the frame: rows that differ from what they hold are
   // uploaded, nothing else. Throws for more than contract::kMaxSceneObjects objects.
   void update(const FrameState&);
-  // Binds both textures to their units (generated: kObjectSampler, kKnotsSampler).
+  // Binds the textures to their units (generated: kObjectSampler, kKnotsSampler,
+  // kFloorLightSampler).
   void bind() const;
+  // The floor's light map: computed with these settings when what it depends on changes
+  // (floor_light_inputs), never else; off: none (the floor takes the unoccluded light).
+  // draft_photons > 0 (interactive apps): a frame whose inputs just changed gets a draft of
+  // that many photons, traced again with the full budget on the first frame they hold still.
+  void set_floor_light(const FloorLightSettings&, bool on = true, int draft_photons = 0);
+  // Where the map lies (frame block members floor_light_*) for the frame of the last update.
+  void describe_floor_light(contract::FrameBlock&) const;
+  const FloorLightMap& floor_light() const;
 
   // Rows uploaded by the last update (tests check that a still frame uploads none).
   int object_rows_uploaded() const { return object_uploads_; }
   int knot_rows_uploaded() const { return knot_uploads_; }
+  // Whether the last update computed and uploaded the floor's light map.
+  bool floor_light_computed() const { return floor_computed_; }
   int capacity() const { return capacity_; }
 
  private:
@@ -57,6 +74,24 @@ class SceneTextures {
   std::vector<std::optional<contract::ObjectRecord>> objects_;  // what u_objects holds, row by row
   std::vector<std::vector<glm::vec4>> knots_;     // what u_knots holds
   int object_uploads_ = 0, knot_uploads_ = 0;
+
+  void update_floor_light(const FrameState&);
+  void clear_floor_light();
+  // The last few maps with their textures, the current one first: frames that alternate
+  // between a few states (a benchmark's interleaved scenes, a still drawn at two sizes)
+  // trace each once.
+  struct FloorEntry {
+    std::vector<double> inputs;  // what the map was computed from
+    FloorLightMap map;
+    unsigned tex = 0;
+    bool draft = false;
+  };
+  static constexpr size_t kFloorCache = 6;
+  std::vector<FloorEntry> floor_cache_;
+  unsigned neutral_tex_ = 0;  // one texel of factor 1, bound when there is no map
+  FloorLightSettings floor_settings_;
+  bool floor_on_ = true, floor_computed_ = false;
+  int draft_photons_ = 0;
 };
 
 }  // namespace draught::gpu

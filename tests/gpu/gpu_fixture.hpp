@@ -17,11 +17,21 @@ struct Gpu {
   std::unique_ptr<gpu::Renderer> renderer;
 };
 
+// The floor's light map of the GPU tests: fewer photons than a still's (a tenth: about
+// 0.1 s a scene), since many tests draw many scenes once each. The GPU tests check how
+// the picture uses the map; tests/unit/environment checks the map against the physics.
+inline FloorLightSettings test_floor_light() {
+  FloorLightSettings s;
+  s.photons = kFloorPhotonsStill / 10;
+  return s;
+}
+
 inline Gpu& gpu_instance() {
   static Gpu g = [] {
     Gpu out;
     out.context = gpu::HeadlessContext::create(gpu::DevicePreference::Software);
     out.renderer = std::make_unique<gpu::Renderer>();
+    out.renderer->set_floor_light(test_floor_light());
     return out;
   }();
   return g;

@@ -181,10 +181,12 @@ TEST(SceneData, UploadsOnlyWhatChanged) {
   g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
   EXPECT_EQ(g.renderer->scene_textures().object_rows_uploaded(), 0);
   EXPECT_EQ(g.renderer->scene_textures().knot_rows_uploaded(), 0);
+  EXPECT_FALSE(g.renderer->scene_textures().floor_light_computed()) << "an unchanged frame traced the floor's light again";
   f.vessels[2].liquid.offset -= 0.01;  // the stout drunk a little
   g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
   EXPECT_EQ(g.renderer->scene_textures().object_rows_uploaded(), 1);
   EXPECT_EQ(g.renderer->scene_textures().knot_rows_uploaded(), 0);
+  EXPECT_TRUE(g.renderer->scene_textures().floor_light_computed()) << "the drink's surface moved: its caustic moves";
   f.vessels[1].vessel = f.vessels[0].vessel;  // another glass for the amber ale
   g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
   EXPECT_EQ(g.renderer->scene_textures().knot_rows_uploaded(), 1);

@@ -1,6 +1,8 @@
 // The floor's shadows follow the cross-section (clip.*): a glass cut away entirely leaves
 // the floor as it is without the glass; a half-cut glass darkens it less than a whole one.
+// The floor under a glass shows core's traced light map.
 #include "gpu_fixture.hpp"
+#include "gpu/scene_data.hpp"
 
 #include <gtest/gtest.h>
 
@@ -68,6 +70,58 @@ TEST(Shadows, AGlassCutAwayEntirelyCastsNoShadow) {
   EXPECT_LT(cut.sum, 0.01 * whole.sum);
   EXPECT_LT(half.sum, 0.8 * whole.sum) << "half the glass shadows as much as all of it";
   EXPECT_GT(half.sum, 0.1 * whole.sum) << "half the glass casts (almost) no shadow";
+}
+
+// The floor's direct light is the unoccluded light times the map's factor: from three
+// pictures (the map on, off, and the key off)
+// the factor at each floor pixel is (on - dark) / (off - dark); it must be core's.
+TEST(Shadows, TheFloorUnderTheGlassShowsTheMap) {
+  Gpu& g = gpu_instance();
+  const std::vector<std::string> sets{"render.tonemap=none", "render.exposure=0.7", "strips.power=0", "backlight.power=0"};
+  const FrameState f = glass_on_floor(sets);
+  std::vector<std::string> dark_sets = sets;
+  dark_sets.push_back("light.power=0");
+  const FrameState dark = glass_on_floor(dark_sets);
+  const Image on = g.renderer->render(f, kW, kH);
+  const FloorLightMap map = g.renderer->scene_textures().floor_light();
+  ASSERT_FALSE(map.empty());
+  const Image no_key = g.renderer->render(dark, kW, kH);
+  g.renderer->set_floor_light(test_floor_light(), false);
+  const Image off = g.renderer->render(f, kW, kH);
+  g.renderer->set_floor_light(test_floor_light());
+  const gpu::DebugImage first = g.renderer->render_debug(f, kW, kH, gpu::DebugView::Depth);
+  const CameraBasis cam = camera_basis(f, kW, kH);
+  auto linear = [](std::uint8_t v) {
+    const double c = v / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  double worst = 0;
+  int probed = 0, shaded = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      if (int(first.px(x, y)[1]) != int(Material::Floor)) continue;
+      const glm::dvec3 p = camera_ray(cam, x + 0.5, y + 0.5, kW, kH).at(first.px(x, y)[0]);
+      // Inside the map, short of the texels where it blends into the light outside.
+      const glm::dvec2 margin = 4.0 * map.size / glm::dvec2(map.width, map.height);
+      const glm::dvec2 uv(p.x, p.z);
+      if (glm::any(glm::lessThan(uv, map.origin + margin)) || glm::any(glm::greaterThan(uv, map.origin + map.size - margin)))
+        continue;
+      const glm::dvec3 open = unoccluded_floor_irradiance(f.lights, p);
+      const glm::dvec3 expect = map.sample(p.x, p.z) / open;
+      for (int c = 0; c < 3; ++c) {
+        const double key = linear(off.px(x, y)[c]) - linear(no_key.px(x, y)[c]);
+        if (key < 0.1 || linear(off.px(x, y)[c]) > 0.9) continue;  // too dark for 8 bits, or near clipping
+        const double got = (linear(on.px(x, y)[c]) - linear(no_key.px(x, y)[c])) / key;
+        worst = std::max(worst, std::fabs(got - expect[c]));
+        ++probed;
+        shaded += expect[c] < 0.8;
+      }
+    }
+  std::printf("floor light factor: %d probes (%d in shadow), largest |GPU - core| %.3f\n", probed, shaded, worst);
+  ASSERT_GT(shaded, 50) << "the view misses the shadow";
+  // 8-bit pictures (a step is about 1 % of the key's part here), the half-float texture,
+  // and the texture filtering the factor where core interpolates the light.
+  EXPECT_LT(worst, 0.04);
 }
 
 }  // namespace

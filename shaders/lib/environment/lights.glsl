@@ -123,6 +123,29 @@ float irradiance_factor_far(AreaLight l, vec3 x, vec3 n) {
   return area * max(-dot(l.normal, w) * inv, 0.0) * cos_s / d2;
 }
 
+// The rig's irradiance at x (normal n) with nothing in between: the sum over its lights
+// of radiance x irradiance_factor. Twin of core LightRig's exact sum.
+vec3 rig_irradiance(vec3 x, vec3 n) {
+  vec3 e = vec3(0.0);
+  for (int i = 0; i < MAX_LIGHTS; ++i) {
+    if (i >= frame.light_count) break;
+    AreaLight l = area_light(i);
+    e += l.radiance * irradiance_factor(l, x, n);
+  }
+  return e;
+}
+
+// The same with each light taken as a point (irradiance_factor_far).
+vec3 rig_irradiance_far(vec3 x, vec3 n) {
+  vec3 e = vec3(0.0);
+  for (int i = 0; i < MAX_LIGHTS; ++i) {
+    if (i >= frame.light_count) break;
+    AreaLight l = area_light(i);
+    e += l.radiance * irradiance_factor_far(l, x, n);
+  }
+  return e;
+}
+
 // How much of a box [-1, 1] at coordinate s is seen with its edge spread over +-w
 // (symmetric about the edge, so the box's area is kept).
 float soft_box(float s, float w) { return 1.0 - smoothstep(1.0 - w, 1.0 + w, abs(s)); }

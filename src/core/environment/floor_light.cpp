@@ -1,0 +1,530 @@
+#include "core/environment/floor_light.hpp"
+
+#include "core/foam/head_volume.hpp"
+#include "core/math/random.hpp"
+#include "core/reference/media.hpp"
+#include "core/reference/optics.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <thread>
+
+namespace draught {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kEps = 1e-7;  // where a photon starts again past the surface it left
+constexpr int kLanes = 4;      // fixed accumulation buffers: the sum does not depend on the thread count
+constexpr int kMaxEvents = 64;
+constexpr double kKernelScale = 2.0;  // texels per unit of the cubic B-spline (radius 2 units: 4 texels, 1 cm)
+
+double mean3(const glm::dvec3& v) { return (v.x + v.y + v.z) / 3.0; }
+double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
+
+void basis(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
+  const double s = std::copysign(1.0, n.z), a = -1.0 / (s + n.z), c = n.x * n.y * a;
+  t = {1 + s * n.x * n.x * a, s * c, -s * n.x};
+  b = {c, s + n.y * n.y * a, -n.y};
+}
+
+glm::dvec3 around(const glm::dvec3& n, double cos_t, double phi) {
+  glm::dvec3 t, b;
+  basis(n, t, b);
+  const double sin_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t));
+  return glm::normalize(sin_t * std::cos(phi) * t + sin_t * std::sin(phi) * b + cos_t * n);
+}
+
+// The cubic B-spline (support [-2, 2], a partition of unity over integer shifts).
+double bspline3(double t) {
+  t = std::fabs(t);
+  if (t < 1) return (4 - 6 * t * t + 3 * t * t * t) / 6;
+  if (t < 2) return (2 - t) * (2 - t) * (2 - t) / 6;
+  return 0;
+}
+
+// The radical inverse of k in a prime base: the Halton sequence's coordinate.
+double radical_inverse(int base, std::uint64_t k) {
+  const double inv = 1.0 / base;
+  double f = inv, r = 0;
+  for (; k > 0; k /= std::uint64_t(base), f *= inv) r += f * double(k % std::uint64_t(base));
+  return r;
+}
+
+// A glass as the photons aim at it: the sphere around its bounding cylinder.
+struct Target {
+  glm::dvec3 centre{0.0};
+  double radius = 0;
+};
+
+// The cone of directions from x that holds the sphere: its axis, cos of its half-angle and
+// solid angle (the whole sphere of directions when x is inside).
+struct Cone {
+  glm::dvec3 axis{0, 1, 0};
+  double cos_max = -1, solid_angle = 4 * kPi;
+  bool contains(const glm::dvec3& d) const { return glm::dot(d, axis) >= cos_max; }
+};
+Cone cone_towards(const Target& g, const glm::dvec3& x) {
+  Cone c;
+  const glm::dvec3 to = g.centre - x;
+  const double d2 = glm::dot(to, to);
+  if (d2 <= g.radius * g.radius) return c;
+  c.axis = to / std::sqrt(d2);
+  c.cos_max = std::sqrt(1 - g.radius * g.radius / d2);
+  c.solid_angle = 2 * kPi * (1 - c.cos_max);
+  return c;
+}
+
+// Everything the photons need of one vessel.
+struct Medium {
+  glm::dquat to_local;
+  glm::dvec3 position{0.0};
+  double glass_ior = 1.5, liquid_ior = 1.33;
+  glm::dvec3 glass_absorption{0.0}, liquid_absorption{0.0}, haze{0.0};
+  glm::dvec3 local_point(const glm::dvec3& p) const { return to_local * (p - position); }
+  double ior(MediumKind m) const {
+    return m == MediumKind::Glass ? glass_ior : (m == MediumKind::Liquid ? liquid_ior : 1.0);
+  }
+};
+
+// One accumulation buffer of the change (W/m^2 per channel).
+struct Lane {
+  std::vector<glm::dvec3> change;
+  FloorLightStats stats;
+};
+
+class PhotonTracer {
+ public:
+  PhotonTracer(const FrameState& f, const FloorLightMap& map) : geo_(scene_geometry(f)), map_(map) {
+    // The heads without their big bubbles (ignored, as the rising bubbles).
+    frames_.reserve(f.vessels.size());
+    for (const VesselFrame& vf : f.vessels) {
+      frames_.push_back(vf);
+      frames_.back().big_bubbles.clear();
+      frames_.back().bubbles.clear();
+    }
+    for (size_t i = 0; i < frames_.size(); ++i) {
+      geo_.vessels[i].vessel = &frames_[i].vessel;
+      heads_.emplace_back(frames_[i], geo_.vessels[i]);
+      const VesselFrame& vf = frames_[i];
+      Medium m;
+      m.to_local = glm::inverse(vf.pose.orientation);
+      m.position = vf.pose.position;
+      m.glass_ior = vf.params.glass.ior;
+      m.liquid_ior = vf.params.liquid.ior;
+      m.glass_absorption = glm::dvec3(vf.params.glass.absorption);
+      // As the path tracer: extinction is absorption + haze, of which the haze colour scatters.
+      const double haze = vf.params.liquid.haze;
+      m.haze = haze * glm::dvec3(vf.params.liquid.haze_color);
+      m.liquid_absorption = glm::dvec3(vf.liquid_absorption) + glm::dvec3(haze) - m.haze;
+      media_.push_back(m);
+    }
+    texel_ = {map.size.x / map.width, map.size.y / map.height};
+  }
+
+  // One photon of power `power` leaving x along d (unit).
+  void trace(Ray ray, glm::dvec3 power, Rng& rng, Lane& lane) const {
+    Hit h = first_hit(geo_, ray, kEps);
+    if (!h.valid() || h.m == Material::Floor) return;  // its light is the unoccluded one
+    lane.stats.hit += power;
+    if (ray.d.y < 0) {
+      splat(ray.at(-ray.o.y / ray.d.y), -power, lane);
+      lane.stats.removed += power;
+    }
+    MediumKind medium = MediumKind::Air;
+    int obj = -1;
+    for (int events = 0;; ++events) {
+      if (events > 0) h = first_hit(geo_, ray, kEps);
+      const double t_end = h.valid() ? h.t : (medium == MediumKind::Air ? kInf : 0.0);
+      const glm::dvec3 before = power;
+      if (medium == MediumKind::Glass) {
+        power *= glm::exp(-media_[size_t(obj)].glass_absorption * t_end);
+      } else if (medium == MediumKind::Liquid) {
+        double t_scatter;
+        const bool through = liquid_segment(media_[size_t(obj)], t_end, power, t_scatter, rng);
+        lane.stats.absorbed += before - power;  // in expectation (the free flight's weights are not per channel)
+        if (!through) {
+          if (events >= kMaxEvents) return;
+          ray.o = ray.at(t_scatter);
+          ray.d = around(ray.d, 1 - 2 * rng.uniform(), 2 * kPi * rng.uniform());  // haze: isotropic
+          continue;
+        }
+      } else {
+        power *= head_transmittance(ray, t_end, rng);
+      }
+      if (medium != MediumKind::Liquid) lane.stats.absorbed += before - power;
+      if (max3(power) <= 0) return;
+      if (!h.valid()) {
+        lane.stats.escaped += power;
+        return;
+      }
+      const glm::dvec3 p = ray.at(h.t);
+      // The floor, or the floor under a foot the photon leaves through.
+      if (h.m == Material::Floor || (p.y < 1e-6 && ray.d.y < 0)) {
+        splat(p, power, lane);
+        lane.stats.landed += power;
+        return;
+      }
+      if (events >= kMaxEvents) {  // trapped between surfaces: what is left is lost
+        lane.stats.absorbed += power;
+        return;
+      }
+      const Medium& m = media_[size_t(h.object)];
+      const bool below = geo_.vessels[size_t(h.object)].liquid.below(m.local_point(p));
+      const MediumKind next = medium_across(h.m, medium, below);
+      const glm::dvec3 n = glm::dot(h.n, ray.d) < 0 ? h.n : -h.n;
+      const double n1 = m.ior(medium), n2 = m.ior(next);
+      const double F = fresnel_dielectric(-glm::dot(n, ray.d), n1, n2);
+      ray.o = p;
+      if (rng.uniform() < F) {
+        ray.d = reflect_dir(ray.d, n);
+      } else {
+        ray.d = glm::normalize(*refract_dir(ray.d, n, n1 / n2));
+        medium = next;
+        obj = next == MediumKind::Air ? -1 : h.object;
+      }
+    }
+  }
+
+  // Adds power (W) at floor point p with the kernel, as irradiance.
+  void splat(const glm::dvec3& p, const glm::dvec3& power, Lane& lane) const {
+    const double u = (p.x - map_.origin.x) / texel_.x - 0.5, v = (p.z - map_.origin.y) / texel_.y - 0.5;
+    const int reach = int(std::ceil(2 * kKernelScale));
+    const int i0 = int(std::floor(u)) - reach + 1, j0 = int(std::floor(v)) - reach + 1;
+    constexpr int kTaps = 8;
+    double wx[kTaps], wy[kTaps], sx = 0, sy = 0, inx = 0, iny = 0;
+    const int taps = std::min(kTaps, 2 * reach);
+    for (int k = 0; k < taps; ++k) {
+      wx[k] = bspline3((i0 + k - u) / kKernelScale);
+      wy[k] = bspline3((j0 + k - v) / kKernelScale);
+      sx += wx[k];
+      sy += wy[k];
+    }
+    const glm::dvec3 e = power / (sx * sy * texel_.x * texel_.y);
+    for (int b = 0; b < taps; ++b) {
+      const int j = j0 + b;
+      if (j < 0 || j >= map_.height || wy[b] <= 0) continue;
+      iny += wy[b];
+      for (int a = 0; a < taps; ++a) {
+        const int i = i0 + a;
+        if (i < 0 || i >= map_.width || wx[a] <= 0) continue;
+        lane.change[size_t(j) * size_t(map_.width) + size_t(i)] += e * (wx[a] * wy[b]);
+      }
+    }
+    for (int a = 0; a < taps; ++a)
+      if (int i = i0 + a; i >= 0 && i < map_.width) inx += wx[a];
+    lane.stats.outside += power * (1 - (inx / sx) * (iny / sy));
+  }
+
+ private:
+  // As the path tracer's liquid_segment: spectral free flight through absorption and haze.
+  static bool liquid_segment(const Medium& m, double t_end, glm::dvec3& thr, double& t_scatter, Rng& rng) {
+    const glm::dvec3 sigma_t = m.liquid_absorption + m.haze;
+    if (max3(m.haze) <= 0) {
+      thr *= glm::exp(-sigma_t * t_end);
+      return true;
+    }
+    const int c = std::min(2, int(rng.uniform() * 3));
+    const double t = sigma_t[c] > 0 ? -std::log(1 - rng.uniform()) / sigma_t[c] : kInf;
+    if (t < t_end) {
+      const glm::dvec3 tr = glm::exp(-sigma_t * t);
+      thr *= tr * m.haze / mean3(sigma_t * tr);
+      t_scatter = t;
+      return false;
+    }
+    const glm::dvec3 tr = glm::exp(-sigma_t * t_end);
+    thr *= tr / mean3(tr);
+    return true;
+  }
+
+  // The heads' transmittance along the air stretch [0, t_end] (ratio tracking: unbiased).
+  double head_transmittance(const Ray& ray, double t_end, Rng& rng) const {
+    double T = 1;
+    for (size_t i = 0; i < heads_.size(); ++i) {
+      const HeadVolume& head = heads_[i];
+      if (head.empty()) continue;
+      const Medium& m = media_[i];
+      const glm::dvec3 o = m.local_point(ray.o), d = m.to_local * ray.d;
+      double t0 = 0, t1 = t_end;
+      if (!head.interval(o, d, t0, t1)) continue;
+      const double M = head.majorant();
+      for (double t = t0;;) {
+        t -= std::log(1 - rng.uniform()) / M;
+        if (t >= t1) break;
+        T *= 1 - std::min(head.density(o + t * d), M) / M;
+        if (T <= 0) return 0;
+      }
+    }
+    return T;
+  }
+
+  std::vector<VesselFrame> frames_;
+  SceneGeometry geo_;
+  std::vector<HeadVolume> heads_;
+  std::vector<Medium> media_;
+  const FloorLightMap& map_;
+  glm::dvec2 texel_{1.0};
+};
+
+// The sphere around a glass's bounding cylinder, as it stands.
+Target target_of(const VesselFrame& v) {
+  const double half = 0.5 * (v.vessel.height + v.vessel.rim_minor);
+  return {v.pose.position + v.pose.orientation * glm::dvec3(0, half, 0), std::hypot(v.vessel.bound_radius, half)};
+}
+
+// Points that span a light: a rect's corners and centre, a sphere's extremes.
+std::vector<glm::dvec3> light_points(const AreaLight& l) {
+  std::vector<glm::dvec3> pts{l.center};
+  if (l.shape == LightShape::Sphere) {
+    for (int a = 0; a < 3; ++a)
+      for (double s : {-1.0, 1.0}) {
+        glm::dvec3 o(0.0);
+        o[a] = s * l.radius;
+        pts.push_back(l.center + o);
+      }
+  } else {
+    for (double su : {-1.0, 1.0})
+      for (double sv : {-1.0, 1.0}) pts.push_back(l.center + su * l.half_u + sv * l.half_v);
+  }
+  return pts;
+}
+
+// The rect of the floor where the glasses may change the light: every light point's shadow of
+// every corner of every glass's bounds, each reaching at most three glass heights from it,
+// widened by a glass's bound radius (light bent by the glass lands beside its shadow).
+void place_rect(const FrameState& f, const FloorLightSettings& s, FloorLightMap& map) {
+  glm::dvec2 lo(kInf), hi(-kInf);
+  for (const VesselFrame& v : f.vessels) {
+    const double top = v.vessel.height + v.vessel.rim_minor, b = v.vessel.bound_radius;
+    const double reach = 3 * top;
+    const glm::dvec2 foot(v.pose.position.x, v.pose.position.z);
+    for (int k = 0; k < 8; ++k) {
+      const glm::dvec3 g = v.pose.position + v.pose.orientation * glm::dvec3(k & 1 ? b : -b, k & 2 ? top : 0, k & 4 ? b : -b);
+      const glm::dvec2 gxz(g.x, g.z);
+      lo = glm::min(lo, gxz - b);
+      hi = glm::max(hi, gxz + b);
+      for (const AreaLight& l : f.lights.lights)
+        for (const glm::dvec3& q : light_points(l)) {
+          glm::dvec2 away = gxz - glm::dvec2(q.x, q.z);
+          const double len = glm::length(away);
+          if (len < 1e-9) continue;
+          double dist = reach;  // a light at or below the corner: the shadow runs far
+          if (q.y > g.y + 1e-6) dist = std::min(reach, len * std::max(g.y, 0.0) / (q.y - g.y));
+          const glm::dvec2 shadow = gxz + away / len * dist;
+          // Kept within reach of the foot (the corners of a tall glass lean out too).
+          glm::dvec2 rel = shadow - foot;
+          if (glm::length(rel) > reach + b) rel *= (reach + b) / glm::length(rel);
+          // And as far on the light's side: the walls reflect light back towards it.
+          for (const glm::dvec2& at : {foot + rel, foot - rel}) {
+            lo = glm::min(lo, at - b);
+            hi = glm::max(hi, at + b);
+          }
+        }
+    }
+  }
+  const glm::dvec2 size = hi - lo;
+  const double texel = std::max(s.texel, std::max(size.x, size.y) / std::max(s.max_resolution, 1));
+  map.width = std::clamp(int(std::ceil(size.x / texel)), 1, s.max_resolution);
+  map.height = std::clamp(int(std::ceil(size.y / texel)), 1, s.max_resolution);
+  map.size = {map.width * texel, map.height * texel};
+  map.origin = 0.5 * (lo + hi) - 0.5 * map.size;
+}
+
+// How many photons each (light, glass) pair gets: in proportion to the power the light
+// sends into the glass's cone (so photons carry about equal power), at least a few
+// hundred wherever the light reaches it at all.
+std::vector<int> photon_counts(const FrameState& f, const std::vector<Target>& targets, int budget) {
+  const size_t L = f.lights.lights.size(), G = targets.size();
+  std::vector<double> flux(L * G, 0.0);
+  double total = 0;
+  for (size_t l = 0; l < L; ++l) {
+    const AreaLight& light = f.lights.lights[l];
+    for (size_t g = 0; g < G; ++g) {
+      double sum = 0;
+      const std::vector<glm::dvec3> pts = light_points(light);
+      for (const glm::dvec3& q : pts) {
+        const Cone c = cone_towards(targets[g], q);
+        const double cos_l = light.shape == LightShape::Sphere ? 1.0 : std::max(0.0, glm::dot(c.axis, light.normal));
+        sum += cos_l * c.solid_angle;
+      }
+      const double proj_area = light.shape == LightShape::Sphere ? kPi * light.radius * light.radius : light.area();
+      flux[l * G + g] = mean3(light.radiance) * proj_area * sum / double(pts.size());
+      total += flux[l * G + g];
+    }
+  }
+  std::vector<int> n(L * G, 0);
+  if (total <= 0) return n;
+  const int least = std::max(1, budget / int(8 * L * G));
+  for (size_t k = 0; k < n.size(); ++k)
+    if (flux[k] > 0) n[k] = std::max(least, int(std::lround(budget * flux[k] / total)));
+  return n;
+}
+
+}  // namespace
+
+glm::dvec2 FloorLightMap::texel_centre(int i, int j) const {
+  return origin + glm::dvec2((i + 0.5) * size.x / width, (j + 0.5) * size.y / height);
+}
+
+glm::dvec3 FloorLightMap::sample(double x, double z) const {
+  if (empty()) return glm::dvec3(0.0);
+  const double u = std::clamp((x - origin.x) / size.x * width - 0.5, 0.0, width - 1.0);
+  const double v = std::clamp((z - origin.y) / size.y * height - 0.5, 0.0, height - 1.0);
+  const int i = std::min(int(u), width - 2 < 0 ? 0 : width - 2), j = std::min(int(v), height - 2 < 0 ? 0 : height - 2);
+  const int i1 = std::min(i + 1, width - 1), j1 = std::min(j + 1, height - 1);
+  const double fu = u - i, fv = v - j;
+  const glm::dvec3 a = glm::mix(glm::dvec3(at(i, j)), glm::dvec3(at(i1, j)), fu);
+  const glm::dvec3 b = glm::mix(glm::dvec3(at(i, j1)), glm::dvec3(at(i1, j1)), fu);
+  return glm::mix(a, b, fv);
+}
+
+glm::dvec3 unoccluded_floor_irradiance(const LightRig& rig, const glm::dvec3& p) {
+  glm::dvec3 e(0.0);
+  for (const AreaLight& l : rig.lights) e += l.radiance * l.irradiance_factor(p, {0, 1, 0});
+  return e;
+}
+
+FloorLightMap compute_floor_light(const FrameState& f, const FloorLightSettings& s) {
+  const auto start = std::chrono::steady_clock::now();
+  FloorLightMap map;
+  if (!scene_geometry(f).backdrop.present || f.lights.lights.empty() || f.vessels.empty()) return map;
+  place_rect(f, s, map);
+
+  std::vector<Target> targets;
+  for (const VesselFrame& v : f.vessels) targets.push_back(target_of(v));
+  const std::vector<int> counts = photon_counts(f, targets, std::max(s.photons, 0));
+  std::vector<long long> first{0};  // the first photon index of each pair
+  for (int n : counts) first.push_back(first.back() + n);
+  const long long total = first.back();
+
+  std::vector<std::array<double, 4>> shifts(counts.size());
+  for (size_t pair = 0; pair < counts.size(); ++pair) {
+    Rng rng(s.seed, pair, ~std::uint64_t(0));
+    for (double& u : shifts[pair]) u = rng.uniform();
+  }
+  const PhotonTracer tracer(f, map);
+  const size_t texels = size_t(map.width) * size_t(map.height);
+  std::vector<Lane> lanes(kLanes);
+  const size_t G = targets.size();
+
+  // Photon k of pair (l, g): a point on light l, a direction in g's cone. The weight is the
+  // balance heuristic over every glass's cone from that point, so directions towards
+  // several glasses are not counted twice.
+  auto photon = [&](long long k, Lane& lane) {
+    const size_t pair = size_t(std::upper_bound(first.begin(), first.end(), k) - first.begin()) - 1;
+    const AreaLight& light = f.lights.lights[pair / G];
+    const std::uint64_t index = std::uint64_t(k - first[pair]);
+    Rng rng(s.seed, pair, index);
+    // The point and the direction from a Halton sequence shifted by the pair's random offset
+    // (randomised quasi-Monte Carlo: unbiased, and a shadow's noise falls much faster than
+    // with independent samples); the rest of the path from the photon's own stream.
+    auto halton = [&](int dim) {
+      static constexpr int kBases[4] = {2, 3, 5, 7};
+      const double u = radical_inverse(kBases[dim], index) + shifts[pair][size_t(dim)];
+      return u - std::floor(u);
+    };
+    glm::dvec3 x, nl;
+    light.sample_point(halton(0), halton(1), x, nl);
+    const Cone c = cone_towards(targets[pair % G], x);
+    const glm::dvec3 d = around(c.axis, 1 - halton(2) * (1 - c.cos_max), 2 * kPi * halton(3));
+    const double cos_l = glm::dot(d, nl);
+    if (cos_l <= 0) return;
+    double density = 0;  // photons per unit solid angle over every pair of this light
+    for (size_t g = 0; g < G; ++g) {
+      const int n = counts[(pair / G) * G + g];
+      if (n == 0) continue;
+      const Cone cg = g == pair % G ? c : cone_towards(targets[g], x);
+      if (cg.contains(d)) density += n / cg.solid_angle;
+    }
+    if (density <= 0) return;
+    tracer.trace({x + d * 1e-6, d}, light.radiance * (cos_l * light.area() / density), rng, lane);
+  };
+
+  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+  const int threads = std::clamp(s.threads > 0 ? s.threads : int(hw), 1, kLanes);
+  auto work = [&](int t) {
+    for (int l = t; l < kLanes; l += threads) {
+      Lane& lane = lanes[size_t(l)];
+      lane.change.assign(texels, glm::dvec3(0.0));
+      for (long long k = l; k < total; k += kLanes) photon(k, lane);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (std::thread& t : pool) t.join();
+
+  // The exact unoccluded light per texel, plus the lanes' change in a fixed order.
+  map.irradiance.resize(texels);
+  map.unoccluded.resize(texels);
+  auto rows = [&](int t) {
+    for (int j = t; j < map.height; j += threads)
+      for (int i = 0; i < map.width; ++i) {
+        const glm::dvec2 c = map.texel_centre(i, j);
+        glm::dvec3 e = unoccluded_floor_irradiance(f.lights, {c.x, 0, c.y});
+        const size_t at = size_t(j) * size_t(map.width) + size_t(i);
+        map.unoccluded[at] = glm::vec3(e);
+        for (const Lane& lane : lanes) e += lane.change[at];
+        map.irradiance[at] = glm::vec3(glm::max(e, glm::dvec3(0.0)));  // noise may dip below zero
+      }
+  };
+  pool.clear();
+  for (int t = 1; t < threads; ++t) pool.emplace_back(rows, t);
+  rows(0);
+  for (std::thread& t : pool) t.join();
+
+  for (const Lane& lane : lanes) {
+    map.stats.hit += lane.stats.hit;
+    map.stats.landed += lane.stats.landed;
+    map.stats.removed += lane.stats.removed;
+    map.stats.absorbed += lane.stats.absorbed;
+    map.stats.escaped += lane.stats.escaped;
+    map.stats.outside += lane.stats.outside;
+  }
+  map.stats.photons = int(total);
+  map.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return map;
+}
+
+std::vector<double> floor_light_inputs(const FrameState& f) {
+  std::vector<double> k;
+  // Rounded to a hundredth of a millimetre (or 1e-5 of a unit): a glass coming to rest, a
+  // head settling, stop changing the map once nothing the map shows moves any more.
+  auto put = [&k](auto... xs) { (k.push_back(std::round(double(xs) * 1e5)), ...); };
+  auto put3 = [&put](const auto& v) { put(v.x, v.y, v.z); };
+  put(scene_geometry(f).backdrop.present ? 1 : 0, f.lights.lights.size(), f.vessels.size());
+  for (const AreaLight& l : f.lights.lights) {
+    put(int(l.shape), l.radius);
+    put3(l.center);
+    put3(l.normal);
+    put3(l.half_u);
+    put3(l.half_v);
+    put3(l.radiance);
+  }
+  const SceneGeometry geo = scene_geometry(f);
+  for (size_t i = 0; i < f.vessels.size(); ++i) {
+    const VesselFrame& v = f.vessels[i];
+    put3(v.pose.position);
+    put(v.pose.orientation.w, v.pose.orientation.x, v.pose.orientation.y, v.pose.orientation.z);
+    const Vessel& ve = v.vessel;
+    put(ve.height, ve.base, ve.dy, ve.rim_major, ve.rim_minor, ve.r_outer.size());
+    for (double r : ve.r_outer) put(r);
+    for (double r : ve.r_inner) put(r);
+    put(v.has_liquid ? 1 : 0, v.liquid.offset, v.liquid.waves.ring, v.liquid.waves.radius);
+    put(v.liquid.waves.cross.x, v.liquid.waves.cross.y);
+    put3(v.liquid.n);
+    put3(v.liquid_absorption);
+    put(v.params.glass.ior, v.params.liquid.ior, v.params.liquid.haze);
+    put3(v.params.glass.absorption);
+    put3(v.params.liquid.haze_color);
+    put(v.foam.thickness, v.foam.dome, v.params.foam.density, v.params.foam.bubble_size, v.params.foam.detail);
+    put(geo.vessels[i].clip.x, geo.vessels[i].clip.y, geo.vessels[i].clip.z, geo.vessels[i].clip.w);
+  }
+  return k;
+}
+
+}  // namespace draught

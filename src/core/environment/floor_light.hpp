@@ -1,0 +1,81 @@
+// The floor's direct light with the glasses' shadows and caustics: a map over a rect of the
+// floor y = 0 holding the irradiance (W/m^2, RGB) the studio's lights (FrameState::lights)
+// give each point, computed by tracing the actual geometry.
+//
+// Each texel is the exact unoccluded irradiance (AreaLight::irradiance_factor) plus a traced
+// change: photons leave each light towards each glass's bounding sphere and follow the
+// reference intersector with the path tracer's media rules (Fresnel choosing reflection or
+// refraction, Beer-Lambert in glass and drink, the drink's haze scattering, the head's
+// optical depth). A photon that meets a glass adds its power where it reaches the floor and
+// subtracts it where its straight line would have reached it, so the map is exact far from
+// the glasses and its noise stays near them. Rising and big bubbles are ignored (the head is
+// taken without its big bubbles), as is light the head scatters. The picture's twin reads
+// the map as a texture: shaders/lib/environment/floor_light.glsl.
+#pragma once
+
+#include "core/scene/frame.hpp"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace draught {
+
+// Photons over all lights and glasses for a still: the default pint under the rig in about
+// 1.3 s on two busy cores, its noise about 1 % of the floor's light near the glass
+// (docs/REFERENCE.md, "Shadows and caustics"); the eye does not see that on a floor.
+inline constexpr int kFloorPhotonsStill = 500000;
+// Once an interactive scene holds still: five times faster, about 2 % noise.
+inline constexpr int kFloorPhotonsInteractive = 100000;
+
+struct FloorLightSettings {
+  int photons = kFloorPhotonsStill;  // over all lights and glasses
+  std::uint64_t seed = 1;
+  int threads = 0;                   // 0: the hardware's, at most kFloorLightLanes
+  double texel = 0.0025;             // m, the finest texel; coarser when the rect is big
+  int max_resolution = 512;          // texels along either side
+};
+
+// Where the traced power went, summed over every photon that met a glass (W, per channel).
+struct FloorLightStats {
+  glm::dvec3 hit{0.0};       // carried by the photons that met a glass
+  glm::dvec3 landed{0.0};    // reached the floor
+  glm::dvec3 removed{0.0};   // subtracted where the straight lines reached the floor
+  glm::dvec3 absorbed{0.0};  // by glass, drink and head
+  glm::dvec3 escaped{0.0};   // left the scene without reaching the floor
+  glm::dvec3 outside{0.0};   // of the change (landed - removed), what fell outside the rect
+  int photons = 0;           // traced
+  double seconds = 0;
+};
+
+struct FloorLightMap {
+  glm::dvec2 origin{0.0};  // world (x, z) of the rect's corner
+  glm::dvec2 size{0.0};    // m along x and z
+  int width = 0, height = 0;
+  std::vector<glm::vec3> irradiance;  // W/m^2, row-major, row j along z, texel centres
+  std::vector<glm::vec3> unoccluded;  // the same with nothing in between (exact)
+  FloorLightStats stats;
+
+  bool empty() const { return width == 0 || height == 0; }
+  double texel_area() const { return size.x / width * (size.y / height); }
+  glm::dvec2 texel_centre(int i, int j) const;
+  const glm::vec3& at(int i, int j) const { return irradiance[size_t(j) * size_t(width) + size_t(i)]; }
+  // The map at world (x, z), bilinear between texel centres as GL's linear filter, clamped
+  // to the edge.
+  glm::dvec3 sample(double x, double z) const;
+};
+
+// The irradiance the rig gives floor point p (y = 0) with nothing in between.
+glm::dvec3 unoccluded_floor_irradiance(const LightRig&, const glm::dvec3& p);
+
+// The map of the frame (empty when there is no floor, no light or no glass).
+FloorLightMap compute_floor_light(const FrameState&, const FloorLightSettings& = {});
+
+// Everything the map depends on, as numbers rounded to 1e-5 (of a metre, or of the unit:
+// nothing a picture shows): poses, glass shapes, liquid surfaces,
+// drink, glass and head parameters, cross-sections, the lights, the floor. Equal inputs give
+// an equal map, so a renderer recomputes it only when these change.
+std::vector<double> floor_light_inputs(const FrameState&);
+
+}  // namespace draught

@@ -1,0 +1,209 @@
+// The floor's light map (shadows and caustics traced from the lights): a glass of index 1
+// that absorbs nothing changes nothing; an opaque glass's shadow is the irradiance that
+// backward shadow rays to light samples find; the change integrates to minus the power
+// absorbed and sent away; a full lager focuses a caustic brighter than the open floor; a
+// tipped glass's shadow moves; a glass cut away entirely casts none; a seed gives one map
+// whatever the thread count.
+#include "core/environment/floor_light.hpp"
+#include "core/math/random.hpp"
+#include "core/params/preset.hpp"
+#include "core/scene/motion.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace draught {
+namespace {
+
+double mean(const glm::dvec3& v) { return (v.x + v.y + v.z) / 3.0; }
+
+// A pint lit by the key light only, bubbles off.
+FrameState pint(std::vector<std::string> sets = {}, const std::string& drink = "lager") {
+  sets.insert(sets.end(), {"strips.power=0", "backlight.power=0", "bubbles.max_bubbles=0"});
+  return make_frame(resolve_scene({drink, "pint", sets, {}}));
+}
+
+FloorLightSettings budget(int photons, std::uint64_t seed = 1) {
+  FloorLightSettings s;
+  s.photons = photons;
+  s.seed = seed;
+  return s;
+}
+
+glm::dvec3 open_light(const FrameState& f, const FloorLightMap& m, int i, int j) {
+  const glm::dvec2 c = m.texel_centre(i, j);
+  return unoccluded_floor_irradiance(f.lights, {c.x, 0, c.y});
+}
+
+// The largest |map - unoccluded| over the map, relative to the largest unoccluded light.
+double largest_change(const FrameState& f, const FloorLightMap& m) {
+  double worst = 0, top = 0;
+  for (int j = 0; j < m.height; ++j)
+    for (int i = 0; i < m.width; ++i) {
+      const glm::dvec3 e = open_light(f, m, i, j);
+      worst = std::max(worst, glm::length(glm::dvec3(m.at(i, j)) - e));
+      top = std::max(top, glm::length(e));
+    }
+  return worst / top;
+}
+
+TEST(FloorLight, AGlassOfIndexOneThatAbsorbsNothingChangesNothing) {
+  FrameState f = pint({"glass.ior=1", "liquid.ior=1", "glass.absorption=0,0,0", "liquid.haze=0"});
+  f.vessels[0].liquid_absorption = glm::vec3(0.0f);
+  f.vessels[0].foam.thickness = 0;
+  const FloorLightMap m = compute_floor_light(f, budget(50000));
+  ASSERT_FALSE(m.empty());
+  ASSERT_GT(mean(m.stats.hit), 0.0) << "no photon met the glass: the test tests nothing";
+  const double change = largest_change(f, m);
+  std::printf("index-1 glass: largest change %.2e of the open light\n", change);
+  EXPECT_LT(change, 1e-4);
+}
+
+// Irradiance at floor point p by backward shadow rays: samples of every light, each counted
+// when nothing lies between.
+glm::dvec3 backward_irradiance(const FrameState& f, const SceneGeometry& geo, glm::dvec3 p, int samples, Rng& rng) {
+  glm::dvec3 e(0.0);
+  for (const AreaLight& l : f.lights.lights)
+    for (int k = 0; k < samples; ++k) {
+      AreaLight::Sample s;
+      if (!l.sample_from(p, rng.uniform(), rng.uniform(), s) || s.dir.y <= 0) continue;
+      const Hit h = first_hit(geo, {p + glm::dvec3(0, 1e-7, 0), s.dir});
+      if (h.valid() && h.t < s.dist) continue;
+      e += l.radiance * s.dir.y / s.pdf / double(samples);
+    }
+  return e;
+}
+
+TEST(FloorLight, AnOpaqueGlassShadowIsWhatShadowRaysFind) {
+  // Index 1 everywhere (no reflection), glass and drink black: all that meets it is absorbed.
+  FrameState f = pint({"glass.ior=1", "liquid.ior=1", "liquid.haze=0"});
+  f.vessels[0].params.glass.absorption = glm::vec3(1e5f);
+  f.vessels[0].liquid_absorption = glm::vec3(1e5f);
+  f.vessels[0].foam.thickness = 0;
+  const FloorLightMap m = compute_floor_light(f, budget(800000));
+  const SceneGeometry geo = scene_geometry(f);
+  Rng rng(3, 1, 0);
+  double worst = 0, open_mean = 0, blocked_map = 0, blocked_back = 0;
+  int n = 0, shaded = 0;
+  const double foot = f.vessels[0].vessel.r_outer.front();
+  // A grid over where the map changes the light, the floor under the foot left out.
+  for (int j = 4; j < m.height; j += 8)
+    for (int i = 4; i < m.width; i += 8) {
+      const glm::dvec2 c = m.texel_centre(i, j);
+      if (std::hypot(c.x, c.y) < foot + 0.005) continue;
+      const glm::dvec3 p(c.x, 0, c.y);
+      const glm::dvec3 open = unoccluded_floor_irradiance(f.lights, p);
+      if (mean(open - glm::dvec3(m.at(i, j))) < 0.02 * mean(open)) continue;
+      const glm::dvec3 back = backward_irradiance(f, geo, p, 2000, rng);
+      const glm::dvec3 map(m.sample(c.x, c.y));
+      worst = std::max(worst, std::fabs(mean(map) - mean(back)));
+      open_mean += mean(open);
+      blocked_map += mean(open - map);
+      blocked_back += mean(open - back);
+      shaded += mean(back) < 0.5 * mean(open);
+      ++n;
+    }
+  open_mean /= n;
+  std::printf("opaque glass: %d points (%d in shadow), largest |map - shadow rays| %.3f of the open light; blocked %.4f vs %.4f\n",
+              n, shaded, worst / open_mean, blocked_map / n, blocked_back / n);
+  ASSERT_GT(shaded, 10) << "the grid misses the shadow";
+  // Pointwise: the noise of both estimates (together about 2 % rms of the open light here;
+  // the largest of 150 points reaches 3 sigma) and the kernel's blur of the penumbra.
+  EXPECT_LT(worst, 0.08 * open_mean);
+  EXPECT_NEAR(blocked_map, blocked_back, 0.03 * std::fabs(blocked_back));
+}
+
+TEST(FloorLight, TheChangeIntegratesToMinusThePowerAbsorbedAndSentAway) {
+  const FrameState f = pint();
+  const FloorLightMap m = compute_floor_light(f, budget(200000));
+  glm::dvec3 change(0.0);
+  for (int j = 0; j < m.height; ++j)
+    for (int i = 0; i < m.width; ++i) change += (glm::dvec3(m.at(i, j)) - open_light(f, m, i, j)) * m.texel_area();
+  const FloorLightStats& s = m.stats;
+  const glm::dvec3 lost = s.absorbed + s.escaped;
+  std::printf("energy: hit %.4f W, landed %.4f, absorbed %.4f, escaped %.4f, outside %.2e; change %.4f W\n", mean(s.hit),
+              mean(s.landed), mean(s.absorbed), mean(s.escaped), mean(s.outside), mean(change));
+  ASSERT_GT(mean(lost), 0.05 * mean(s.hit)) << "the lager absorbs too little to test";
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(change[c], -lost[c], 0.02 * s.hit[c]) << "channel " << c;
+    EXPECT_NEAR(s.landed[c] + s.absorbed[c] + s.escaped[c], s.hit[c], 0.02 * s.hit[c]) << "channel " << c;
+  }
+  EXPECT_LT(mean(s.outside), 3e-3 * mean(s.hit)) << "the rect misses where the light lands";
+}
+
+TEST(FloorLight, AFullLagerFocusesACausticBrighterThanTheOpenFloor) {
+  const FrameState f = pint();
+  const FloorLightMap m = compute_floor_light(f, budget(200000));
+  double brightest = 0, darkest = 1e9;
+  for (int j = 0; j < m.height; ++j)
+    for (int i = 0; i < m.width; ++i) {
+      const double ratio = mean(glm::dvec3(m.at(i, j))) / mean(open_light(f, m, i, j));
+      brightest = std::max(brightest, ratio);
+      darkest = std::min(darkest, ratio);
+    }
+  std::printf("lager: the floor's light from %.2f to %.2f of the open floor's\n", darkest, brightest);
+  EXPECT_GT(brightest, 1.1);  // the rig's key is a 0.6 m softbox a metre away: a soft caustic
+  EXPECT_LT(darkest, 0.6);
+}
+
+// The centre of the light a glass takes from the floor (x, z).
+glm::dvec2 shadow_centre(const FrameState& f, const FloorLightMap& m) {
+  glm::dvec2 c(0.0);
+  double w = 0;
+  for (int j = 0; j < m.height; ++j)
+    for (int i = 0; i < m.width; ++i) {
+      const double d = std::max(0.0, mean(open_light(f, m, i, j) - glm::dvec3(m.at(i, j))));
+      c += d * m.texel_centre(i, j);
+      w += d;
+    }
+  return c / w;
+}
+
+TEST(FloorLight, ATippedGlassShadowMoves) {
+  FrameState f = pint({"liquid.fill=0"});
+  const glm::dvec2 upright = shadow_centre(f, compute_floor_light(f, budget(60000)));
+  VesselFrame& v = f.vessels[0];
+  v.pose = tipped_on_floor(tilt_orientation(0.5, 0.0), v.vessel.r_outer.front());  // towards +x
+  const glm::dvec2 tipped = shadow_centre(f, compute_floor_light(f, budget(60000)));
+  std::printf("shadow centre upright (%.4f, %.4f), tipped (%.4f, %.4f)\n", upright.x, upright.y, tipped.x, tipped.y);
+  EXPECT_GT(tipped.x - upright.x, 0.02);
+}
+
+TEST(FloorLight, AGlassCutAwayEntirelyCastsNoShadow) {
+  const FrameState whole = pint();
+  const FrameState cut = pint({"clip.enabled=true", "clip.normal=0,1,0", "clip.offset=-0.05"});
+  const FloorLightMap mw = compute_floor_light(whole, budget(20000)), mc = compute_floor_light(cut, budget(20000));
+  EXPECT_GT(largest_change(whole, mw), 0.3);
+  EXPECT_EQ(mean(mc.stats.hit), 0.0);
+  EXPECT_LT(largest_change(cut, mc), 1e-5);
+}
+
+TEST(FloorLight, OneSeedGivesOneMapWhateverTheThreads) {
+  const FrameState f = pint();
+  FloorLightSettings one = budget(20000, 5), two = budget(20000, 5), other = budget(20000, 6);
+  one.threads = 1;
+  two.threads = 2;
+  const FloorLightMap a = compute_floor_light(f, one), b = compute_floor_light(f, two), c = compute_floor_light(f, other);
+  EXPECT_EQ(a.irradiance, b.irradiance);
+  EXPECT_NE(a.irradiance, c.irradiance);
+}
+
+TEST(FloorLight, TheInputsChangeWithWhatTheMapDependsOn) {
+  const FrameState f = pint();
+  const std::vector<double> k = floor_light_inputs(f);
+  EXPECT_EQ(k, floor_light_inputs(pint()));
+  FrameState moved = f;
+  moved.vessels[0].pose.position.x += 0.001;
+  EXPECT_NE(k, floor_light_inputs(moved));
+  FrameState lit = f;
+  lit.lights.lights[0].radiance *= 2.0;
+  EXPECT_NE(k, floor_light_inputs(lit));
+  EXPECT_NE(k, floor_light_inputs(pint({"clip.enabled=true", "clip.normal=1,0,0"})));
+  EXPECT_NE(k, floor_light_inputs(pint({}, "stout")));
+}
+
+}  // namespace
+}  // namespace draught
