@@ -22,6 +22,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/environment/sky_irradiance.cpp
   src/core/environment/backdrop.cpp
   src/core/environment/floor_light.cpp
+  src/core/environment/backdrop_light.cpp
   src/core/environment/environment_map.cpp
   src/core/environment/environment_bake.cpp
   src/core/bubbles/bubbles.cpp

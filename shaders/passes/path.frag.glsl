@@ -253,13 +253,17 @@ vec4 debug_medium_rule() {
 // against core's AreaLight and BackdropSurface). LightHit: (t of the nearest light
 // front, 0 for none; its index, -1; t of the backdrop, 0 for none; its albedo's green).
 // Backdrop: (t, normal). LightIrradiance: irradiance_factor of lights 0..3 at the
-// backdrop point for its normal.
+// backdrop point for its normal. BackdropLight: (x, s, the rig's light green, 1).
 vec4 debug_studio(vec3 eye, vec3 dir, int view) {
   BackdropSurface b = backdrop_surface();
   float tb;
   vec3 nb;
   bool on_backdrop = intersect(b, eye, dir, 0.0, tb, nb);
   if (view == VIEW_BACKDROP) return on_backdrop ? vec4(tb, nb) : vec4(0.0);
+  if (view == VIEW_BACKDROP_LIGHT) {
+    vec3 p = eye + tb * dir;
+    return on_backdrop ? vec4(backdrop_coords(b, p), backdrop_light(p, nb).g, 1.0) : vec4(0.0);
+  }
   if (view == VIEW_LIGHT_IRRADIANCE) {
     vec4 f = vec4(0.0);
     for (int i = 0; i < MAX_LIGHTS; ++i)
@@ -295,7 +299,7 @@ void main() {
     frag_color = debug_first_surface(frame.cam_eye, dir, view);
     return;
   }
-  if (view == VIEW_LIGHT_HIT || view == VIEW_BACKDROP || view == VIEW_LIGHT_IRRADIANCE) {
+  if (view == VIEW_LIGHT_HIT || view == VIEW_BACKDROP || view == VIEW_LIGHT_IRRADIANCE || view == VIEW_BACKDROP_LIGHT) {
     frag_color = debug_studio(frame.cam_eye, dir, view);
     return;
   }

@@ -65,7 +65,8 @@ void bind_interface(const Program& program, const std::string& what) {
   check_uniform_block(program.id(), contract::kFrameBlockName, contract::kFrameBlockMembers,
                       contract::kFrameBlockUsedBytes, sizeof(contract::FrameBlock), contract::kFrameBlockBinding, what);
   glUseProgram(program.id());
-  for (const contract::Sampler& s : {contract::kObjectSampler, contract::kKnotsSampler, contract::kFloorLightSampler})
+  for (const contract::Sampler& s : {contract::kObjectSampler, contract::kKnotsSampler, contract::kFloorLightSampler,
+                                       contract::kBackdropLightSampler})
     if (GLint at = glGetUniformLocation(program.id(), s.name); at >= 0) glUniform1i(at, s.unit);
 }
 }  // namespace
@@ -109,6 +110,7 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   textures_->bind();
   contract::FrameBlock block = pack_frame_block(f, width, height, debug, event);
   textures_->describe_floor_light(block);
+  textures_->describe_backdrop_light(block);
   glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
   glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof block, &block);
   glBindBufferBase(GL_UNIFORM_BUFFER, contract::kFrameBlockBinding, ubo_);

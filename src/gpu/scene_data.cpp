@@ -191,8 +191,14 @@ std::vector<glm::vec4> pack_floor_light(const FloorLightMap& m) {
   return texels;
 }
 
+std::vector<glm::vec4> pack_backdrop_light(const BackdropLightMap& m) {
+  std::vector<glm::vec4> texels(m.irradiance.size());
+  for (size_t k = 0; k < texels.size(); ++k) texels[k] = glm::vec4(m.irradiance[k], m.trusted[k]);
+  return texels;
+}
+
 namespace {
-// A filtered RGBA16F texture of the floor's light factor (ES 3.0 and WebGL2 filter
+// A filtered RGBA16F texture of the floor's light factor or the backdrop's light (ES 3.0 and WebGL2 filter
 // half floats; they take float data for them).
 unsigned make_floor_texture(int width, int height, const float* rgba) {
   unsigned tex = 0;
@@ -215,6 +221,7 @@ SceneTextures::SceneTextures() {
 
 SceneTextures::~SceneTextures() {
   clear_floor_light();
+  for (BackdropEntry& e : backdrop_cache_) glDeleteTextures(1, &e.tex);
   glDeleteTextures(1, &neutral_tex_);
   glDeleteTextures(1, &objects_tex_);
   glDeleteTextures(1, &knots_tex_);
@@ -267,6 +274,42 @@ void SceneTextures::update(const FrameState& f) {
     }
   }
   update_floor_light(f);
+  update_backdrop_light(f);
+}
+
+void SceneTextures::update_backdrop_light(const FrameState& f) {
+  backdrop_computed_ = false;
+  std::vector<double> inputs = backdrop_light_inputs(f);
+  for (size_t i = 0; i < backdrop_cache_.size(); ++i)
+    if (backdrop_cache_[i].inputs == inputs) {  // unchanged lights and backdrop cost nothing
+      std::rotate(backdrop_cache_.begin(), backdrop_cache_.begin() + long(i), backdrop_cache_.begin() + long(i) + 1);
+      return;
+    }
+  BackdropEntry e;
+  e.inputs = std::move(inputs);
+  e.map = compute_backdrop_light(f);
+  backdrop_computed_ = true;
+  if (!e.map.empty()) {
+    const std::vector<glm::vec4> texels = pack_backdrop_light(e.map);
+    e.tex = make_floor_texture(e.map.width, e.map.height, &texels[0].x);
+  }
+  if (backdrop_cache_.size() == kFloorCache) {
+    glDeleteTextures(1, &backdrop_cache_.back().tex);
+    backdrop_cache_.pop_back();
+  }
+  backdrop_cache_.insert(backdrop_cache_.begin(), std::move(e));
+}
+
+const BackdropLightMap& SceneTextures::backdrop_light() const {
+  static const BackdropLightMap none;
+  return backdrop_cache_.empty() ? none : backdrop_cache_.front().map;
+}
+
+void SceneTextures::describe_backdrop_light(contract::FrameBlock& b) const {
+  const BackdropLightMap& m = backdrop_light();
+  b.backdrop_light_on = m.empty() ? 0 : 1;
+  b.backdrop_light_origin = glm::vec2(m.origin);
+  b.backdrop_light_size = glm::vec2(m.size);
 }
 
 void SceneTextures::set_floor_light(const FloorLightSettings& s, bool on, int draft_photons) {
@@ -332,6 +375,8 @@ void SceneTextures::bind() const {
   glBindTexture(GL_TEXTURE_2D, knots_tex_);
   glActiveTexture(GL_TEXTURE0 + contract::kFloorLightSampler.unit);
   glBindTexture(GL_TEXTURE_2D, floor_light().empty() ? neutral_tex_ : floor_cache_.front().tex);
+  glActiveTexture(GL_TEXTURE0 + contract::kBackdropLightSampler.unit);
+  glBindTexture(GL_TEXTURE_2D, backdrop_light().empty() ? neutral_tex_ : backdrop_cache_.front().tex);
   glActiveTexture(GL_TEXTURE0);
 }
 

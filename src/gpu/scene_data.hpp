@@ -7,6 +7,7 @@
 // environment estimate).
 #pragma once
 
+#include "core/environment/backdrop_light.hpp"
 #include "core/environment/floor_light.hpp"
 #include "core/scene/frame.hpp"
 #include "generated/constants.hpp"
@@ -34,6 +35,9 @@ std::vector<glm::vec4> pack_knots(const Vessel&);
 // unoccluded irradiance, per channel (a = 1), so the shader multiplies the unoccluded light
 // it computes itself; where no light reaches the floor, 1.
 std::vector<glm::vec4> pack_floor_light(const FloorLightMap&);
+// The backdrop's light map as the texture holds it: rgb the irradiance, a whether the
+// filtering may be trusted (BackdropLightMap::trusted).
+std::vector<glm::vec4> pack_backdrop_light(const BackdropLightMap&);
 
 // The two data textures (RGBA32F, fetched texel by texel: ES 3.0 does not filter float
 // textures) and the floor's light map (RGBA16F, filtered). Needs a current GLES 3.0 context.
@@ -58,6 +62,12 @@ class SceneTextures {
   // Where the map lies (frame block members floor_light_*) for the frame of the last update.
   void describe_floor_light(contract::FrameBlock&) const;
   const FloorLightMap& floor_light() const;
+  // The backdrop's light map (computed when backdrop_light_inputs change, never else) and
+  // where it lies (frame block members backdrop_light_*).
+  void describe_backdrop_light(contract::FrameBlock&) const;
+  const BackdropLightMap& backdrop_light() const;
+  // Whether the last update computed and uploaded the backdrop's light map.
+  bool backdrop_light_computed() const { return backdrop_computed_; }
 
   // Rows uploaded by the last update (tests check that a still frame uploads none).
   int object_rows_uploaded() const { return object_uploads_; }
@@ -90,6 +100,17 @@ class SceneTextures {
   std::vector<FloorEntry> floor_cache_;
   unsigned neutral_tex_ = 0;  // one texel of factor 1, bound when there is no map
   FloorLightSettings floor_settings_;
+
+  void update_backdrop_light(const FrameState&);
+  // The last few backdrop maps, the current one first (as the floor's: interleaved scenes
+  // compute each once).
+  struct BackdropEntry {
+    std::vector<double> inputs;
+    BackdropLightMap map;
+    unsigned tex = 0;
+  };
+  std::vector<BackdropEntry> backdrop_cache_;
+  bool backdrop_computed_ = false;
   bool floor_on_ = true, floor_computed_ = false;
   int draft_photons_ = 0;
 };

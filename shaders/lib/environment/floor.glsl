@@ -1,6 +1,7 @@
 // The backdrop in the picture (the sweep or the checker floor, lib/environment/backdrop.glsl):
-// where a path meets it, and the light it receives: the rig's direct light with every
-// glass's shadow and caustics from the traced map near the glasses (floor_light.glsl), and
+// where a path meets it, and the light it receives: the rig's direct light from the
+// backdrop's light map (backdrop_light.glsl), with every glass's shadow and caustics from
+// the traced map near the glasses (floor_light.glsl), and
 // the sky's irradiance darkened around each foot (contact). A cross-section (clip.*) takes
 // away the contact of what it cuts away (the map honours it).
 #ifndef LIB_ENVIRONMENT_FLOOR_GLSL
@@ -72,10 +73,11 @@ float floor_contact(vec3 p) {
 }
 
 // The backdrop at p (world, normal n), seen from `dist` away: albedo / pi times the
-// light it receives, the rig's direct light (on the floor through the traced map's shadows
-// and caustics) and the sky's around the feet. `occluded` false: the backdrop mirrored in
-// a glass (a few per cent of a pixel), where each light is taken as a point and shadows
-// and contact are left out: too small to see there, and the most costly.
+// light it receives, the rig's direct light (one texel of the backdrop's light map; on the
+// floor through the traced map's shadows and caustics) and the sky's around the feet.
+// `occluded` false: the backdrop mirrored in a glass (a few per cent of a pixel), where
+// each light is taken as a point and shadows and contact are left out: too small to see
+// there, and as cheap as the map's texel.
 vec3 shade_floor(vec3 p, vec3 n, float dist, bool occluded) {
   BackdropSurface bd = backdrop_surface();
   vec3 e = occluded ? sky_irradiance(n) * floor_contact(p) + floor_direct_light(p, n)

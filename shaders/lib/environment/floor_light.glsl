@@ -6,7 +6,7 @@
 #ifndef LIB_ENVIRONMENT_FLOOR_LIGHT_GLSL
 #define LIB_ENVIRONMENT_FLOOR_LIGHT_GLSL
 #include "generated/frame.glsl"
-#include "lib/environment/lights.glsl"
+#include "lib/environment/backdrop_light.glsl"
 
 // The map's factor at p: 1 outside the rect, the texture inside, blended over the outer
 // 4 texels (the map's kernel reaches 3 texels in; beyond the rect nothing is traced).
@@ -19,10 +19,11 @@ vec3 floor_light_factor(vec3 p) {
   return mix(vec3(1.0), texture(u_floor_light, uv).rgb, inside);
 }
 
-// The backdrop's direct light at p (normal n): the rig's unoccluded light (lights.glsl),
-// on the floor (where the map lies) with the glasses' shadows and caustics.
+// The backdrop's direct light at p (normal n): the rig's unoccluded light
+// (backdrop_light.glsl), on the floor (where the map lies) with the glasses' shadows and
+// caustics.
 vec3 floor_direct_light(vec3 p, vec3 n) {
-  vec3 e = rig_irradiance(p, n);
+  vec3 e = backdrop_light(p, n);
   return n.y > 0.999 ? e * floor_light_factor(p) : e;
 }
 

@@ -131,9 +131,15 @@ class PhotonTracer {
     Hit h = first_hit(geo_, ray, kEps);
     if (!h.valid() || h.m == Material::Floor) return;  // its light is the unoccluded one
     lane.stats.hit += power;
-    if (ray.d.y < 0) {
-      splat(ray.at(-ray.o.y / ray.d.y), -power, lane);
+    // Where its straight line would have met the backdrop: on the floor, the map's; on the
+    // sweep's curve or wall, beyond it (the map holds the floor only).
+    double t_open;
+    glm::dvec3 n_open;
+    if (geo_.backdrop.intersect(ray.o, ray.d, kEps, t_open, n_open) && n_open.y > 0.999) {
+      splat(ray.at(t_open), -power, lane);
       lane.stats.removed += power;
+    } else {
+      lane.stats.escaped -= power;  // what the glass sends there instead is counted as escaped too
     }
     MediumKind medium = MediumKind::Air;
     int obj = -1;
@@ -163,6 +169,11 @@ class PhotonTracer {
         return;
       }
       const glm::dvec3 p = ray.at(h.t);
+      // The sweep's curve or wall: beyond the map.
+      if (h.m == Material::Floor && h.n.y <= 0.999) {
+        lane.stats.escaped += power;
+        return;
+      }
       // The floor, or the floor under a foot the photon leaves through.
       if (h.m == Material::Floor || (p.y < 1e-6 && ray.d.y < 0)) {
         splat(p, power, lane);
@@ -383,9 +394,7 @@ glm::dvec3 FloorLightMap::sample(double x, double z) const {
 }
 
 glm::dvec3 unoccluded_floor_irradiance(const LightRig& rig, const glm::dvec3& p) {
-  glm::dvec3 e(0.0);
-  for (const AreaLight& l : rig.lights) e += l.radiance * l.irradiance_factor(p, {0, 1, 0});
-  return e;
+  return rig.irradiance(p, {0, 1, 0});
 }
 
 FloorLightMap compute_floor_light(const FrameState& f, const FloorLightSettings& s) {

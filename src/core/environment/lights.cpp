@@ -183,4 +183,10 @@ LightRig light_rig(const SceneParams& p, const glm::dvec3& aim, const glm::dvec3
   return rig;
 }
 
+glm::dvec3 LightRig::irradiance(const glm::dvec3& x, const glm::dvec3& n) const {
+  glm::dvec3 e(0.0);
+  for (const AreaLight& l : lights) e += l.radiance * l.irradiance_factor(x, n);
+  return e;
+}
+
 }  // namespace draught

@@ -59,6 +59,11 @@ inline constexpr size_t kMaxRigLights = 4;  // key, two strips, backlight
 struct LightRig {
   glm::dvec3 aim{0.0};
   std::vector<AreaLight> lights;  // only those that emit: key, left and right strip, backlight
+
+  // The irradiance (W/m^2, RGB) the whole rig gives point x of a surface of unit normal n
+  // with nothing in between: radiance x irradiance_factor summed over the lights. Twin of
+  // rig_irradiance in shaders/lib/environment/lights.glsl.
+  glm::dvec3 irradiance(const glm::dvec3& x, const glm::dvec3& n) const;
 };
 
 LightRig light_rig(const SceneParams&, const glm::dvec3& aim);

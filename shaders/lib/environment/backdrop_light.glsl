@@ -1,0 +1,36 @@
+// The backdrop's direct light from the rig without the glasses: one filtered texel of the
+// map core computes when the lights, the backdrop or the scene's aim change
+// (core/environment/backdrop_light), over the sweep unrolled to (x, s); the exact sum of
+// the lights (lights.glsl rig_irradiance) outside the map and where the map distrusts its
+// filtering (a = 0: a light through the paper, a light's plane crossing it).
+#ifndef LIB_ENVIRONMENT_BACKDROP_LIGHT_GLSL
+#define LIB_ENVIRONMENT_BACKDROP_LIGHT_GLSL
+#include "generated/frame.glsl"
+#include "lib/common/math.glsl"
+#include "lib/environment/backdrop.glsl"
+#include "lib/environment/lights.glsl"
+
+// Where point p on the backdrop lies in the unrolled sweep: x across, s the arc length along
+// floor -> curve -> wall (0 where the floor starts to curve, negative in front). Twin of
+// core backdrop_coords.
+vec2 backdrop_coords(BackdropSurface b, vec3 p) {
+  if (b.checker || p.z >= b.z_curve) return vec2(p.x, b.z_curve - p.z);             // the floor
+  if (p.y >= b.radius) return vec2(p.x, b.radius * (0.5 * PI) + (p.y - b.radius));  // the wall
+  return vec2(p.x, b.radius * atan(b.z_curve - p.z, b.radius - p.y));               // the curve
+}
+
+// The rig's irradiance at backdrop point p (normal n) with nothing in between.
+vec3 backdrop_light(vec3 p, vec3 n) {
+  if (frame.backdrop_light_on != 0) {
+    vec2 uv = (backdrop_coords(backdrop_surface(), p) - frame.backdrop_light_origin) / frame.backdrop_light_size;
+    vec2 texels = uv * vec2(textureSize(u_backdrop_light, 0));
+    // Between the outermost texel centres, where filtering interpolates.
+    if (all(greaterThanEqual(texels, vec2(0.5))) && all(lessThanEqual(texels, vec2(textureSize(u_backdrop_light, 0)) - 0.5))) {
+      vec4 m = texture(u_backdrop_light, uv);
+      if (m.a > 0.999) return m.rgb;
+    }
+  }
+  return rig_irradiance(p, n);
+}
+
+#endif  // LIB_ENVIRONMENT_BACKDROP_LIGHT_GLSL
