@@ -21,16 +21,18 @@ vec2 backdrop_coords(BackdropSurface b, vec3 p) {
 
 // The rig's irradiance at backdrop point p (normal n) with nothing in between.
 vec3 backdrop_light(vec3 p, vec3 n) {
+  vec4 m = vec4(0.0);
   if (frame.backdrop_light_on != 0) {
     vec2 uv = (backdrop_coords(backdrop_surface(), p) - frame.backdrop_light_origin) / frame.backdrop_light_size;
-    vec2 texels = uv * vec2(textureSize(u_backdrop_light, 0));
+    vec2 size = vec2(textureSize(u_backdrop_light, 0));
+    vec2 texels = uv * size;
     // Between the outermost texel centres, where filtering interpolates.
-    if (all(greaterThanEqual(texels, vec2(0.5))) && all(lessThanEqual(texels, vec2(textureSize(u_backdrop_light, 0)) - 0.5))) {
-      vec4 m = texture(u_backdrop_light, uv);
-      if (m.a > 0.999) return m.rgb;
-    }
+    if (all(greaterThanEqual(texels, vec2(0.5))) && all(lessThanEqual(texels, size - 0.5))) m = texture(u_backdrop_light, uv);
   }
-  return rig_irradiance(p, n);
+  // Elsewhere the exact sum, its lights counted only there (rig_irradiance: a pixel the
+  // map serves runs none of them).
+  bool served = m.a > 0.999;
+  return (served ? m.rgb : vec3(0.0)) + rig_irradiance(p, n, served ? 0 : frame.light_count);
 }
 
 #endif  // LIB_ENVIRONMENT_BACKDROP_LIGHT_GLSL

@@ -54,9 +54,10 @@ Hit hit_floor(vec3 o, vec3 d, float tmin) {
 // radii (at least two foot radii from the foot) it darkens by less than 2e-4 of the
 // sky's light, nothing an 8-bit pixel shows. (Direct light, shadows and caustics
 // included, comes from the traced map: floor_light.glsl.)
-float floor_contact(vec3 p) {
+float floor_contact(vec3 p, int objects) {
   float contact = 1.0;
   for (int i = 0; i < OBJECT_COUNT; ++i) {
+    if (i >= objects) break;  // the first `objects` glasses (0: none, at no cost)
     ObjectBounds b = bounds_of(i);
     vec3 rel = p - b.bound_base;
     if (dot(rel, rel) < 9.0 * b.bound_radius * b.bound_radius) {  // (a block, not a continue: llvmpipe runs it faster)
@@ -80,8 +81,10 @@ float floor_contact(vec3 p) {
 // there, and as cheap as the map's texel.
 vec3 shade_floor(vec3 p, vec3 n, float dist, bool occluded) {
   BackdropSurface bd = backdrop_surface();
-  vec3 e = occluded ? sky_irradiance(n) * floor_contact(p) + floor_direct_light(p, n)
-                    : sky_irradiance(n) + rig_irradiance_far(p, n);
+  // (Counts, not branches, choose: llvmpipe would run both sides for every pixel.)
+  vec3 e = sky_irradiance(n) * floor_contact(p, occluded ? OBJECT_COUNT : 0) +
+           rig_irradiance_far(p, n, occluded ? 0 : frame.light_count);
+  if (occluded) e += floor_direct_light(p, n);
   vec3 c = albedo(bd, p) / PI * e;
   // The checker to the horizon fades into the sky's ground, so it never aliases there.
   return bd.checker ? mix(frame.ground, c, exp(-dist / 2.0)) : c;

@@ -123,12 +123,15 @@ float irradiance_factor_far(AreaLight l, vec3 x, vec3 n) {
   return area * max(-dot(l.normal, w) * inv, 0.0) * cos_s / d2;
 }
 
-// The rig's irradiance at x (normal n) with nothing in between: the sum over its lights
-// of radiance x irradiance_factor. Twin of core LightRig's exact sum.
-vec3 rig_irradiance(vec3 x, vec3 n) {
+// The irradiance the first `count` lights of the rig give x (normal n) with nothing in
+// between: radiance x irradiance_factor summed. The whole rig (count = frame.light_count)
+// is the twin of core LightRig::irradiance. A count, not a branch around the call:
+// llvmpipe runs both sides of a branch for every pixel, but leaves a loop as soon as all
+// its pixels have, so a count of 0 costs nothing.
+vec3 rig_irradiance(vec3 x, vec3 n, int count) {
   vec3 e = vec3(0.0);
   for (int i = 0; i < MAX_LIGHTS; ++i) {
-    if (i >= frame.light_count) break;
+    if (i >= count) break;
     AreaLight l = area_light(i);
     e += l.radiance * irradiance_factor(l, x, n);
   }
@@ -136,10 +139,10 @@ vec3 rig_irradiance(vec3 x, vec3 n) {
 }
 
 // The same with each light taken as a point (irradiance_factor_far).
-vec3 rig_irradiance_far(vec3 x, vec3 n) {
+vec3 rig_irradiance_far(vec3 x, vec3 n, int count) {
   vec3 e = vec3(0.0);
   for (int i = 0; i < MAX_LIGHTS; ++i) {
-    if (i >= frame.light_count) break;
+    if (i >= count) break;
     AreaLight l = area_light(i);
     e += l.radiance * irradiance_factor_far(l, x, n);
   }

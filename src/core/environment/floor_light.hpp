@@ -43,7 +43,8 @@ struct FloorLightStats {
   glm::dvec3 landed{0.0};    // reached the floor
   glm::dvec3 removed{0.0};   // subtracted where the straight lines reached the floor
   glm::dvec3 absorbed{0.0};  // by glass, drink and head
-  glm::dvec3 escaped{0.0};   // left the scene without reaching the floor
+  glm::dvec3 escaped{0.0};   // left the scene or reached the sweep's curve or wall, less what
+                             // would have reached those along its straight line anyway
   glm::dvec3 outside{0.0};   // of the change (landed - removed), what fell outside the rect
   int photons = 0;           // traced
   double seconds = 0;
