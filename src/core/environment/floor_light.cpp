@@ -148,7 +148,10 @@ class PhotonTracer {
         const bool through = liquid_segment(media_[size_t(obj)], t_end, power, t_scatter, rng);
         lane.stats.absorbed += before - power;  // in expectation (the free flight's weights are not per channel)
         if (!through) {
-          if (events >= kMaxEvents) return;
+          if (events >= kMaxEvents) {  // scattered too often: what is left is lost
+            lane.stats.absorbed += power;
+            return;
+          }
           ray.o = ray.at(t_scatter);
           ray.d = around(ray.d, 1 - 2 * rng.uniform(), 2 * kPi * rng.uniform());  // haze: isotropic
           continue;
