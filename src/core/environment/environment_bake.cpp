@@ -1,5 +1,6 @@
 #include "core/environment/environment_bake.hpp"
 
+#include "core/environment/lights.hpp"
 #include "core/environment/studio.hpp"
 #include "core/io/files.hpp"
 #include "core/text/echo.hpp"
@@ -27,14 +28,22 @@ double smooth(double e0, double e1, double x) {
   return t * t * (3 - 2 * t);
 }
 
-// The studio as the picture lights it: the sky, and the key softbox in it.
-glm::dvec3 studio_radiance(const Studio& s, const glm::dvec3& d) {
-  return s.sky(d) + (s.key.contains(d) ? s.key.radiance : glm::dvec3(0));
+// The studio as the scene's centre sees it: the sky, and the rig's lights in front of it
+// (placed around that centre, so where it is does not matter).
+glm::dvec3 studio_radiance(const Studio& s, const LightRig& rig, const glm::dvec3& d) {
+  double nearest = INFINITY, t;
+  glm::dvec3 c = s.sky(d);
+  for (const AreaLight& l : rig.lights)
+    if (l.intersect(glm::dvec3(0.0), d, 0.0, t) && t < nearest) {
+      nearest = t;
+      c = l.radiance;
+    }
+  return c;
 }
 
 // A warm bar at night, seen from a stool: dark wood, a back bar of lit bottles behind the
 // glass, four pendant lamps of 2700 K, and a dim blue window to the right. Radiance in
-// the same units as the studio's (its key softbox is about 17).
+// the same units as the studio's (W / (sr m^2); its key softbox is about 3).
 glm::dvec3 bar_radiance(const glm::dvec3& d) {
   const double elev = std::asin(std::clamp(d.y, -1.0, 1.0));  // radians above the horizon
   const double az = std::atan2(d.x, -d.z);                      // 0 behind the glass, + to the right
@@ -91,8 +100,9 @@ HdrImage bake_environment(const std::string& name, const SceneParams& scene, int
                      std::to_string(kMaxHdrImageWidth));
   std::function<glm::dvec3(const glm::dvec3&)> radiance;
   const Studio studio(scene);
+  const LightRig rig = light_rig(scene, glm::dvec3(0.0));
   if (name == "studio")
-    radiance = [&](const glm::dvec3& d) { return studio_radiance(studio, d); };
+    radiance = [&](const glm::dvec3& d) { return studio_radiance(studio, rig, d); };
   else if (name == "bar")
     radiance = bar_radiance;
   else

@@ -54,6 +54,8 @@ struct AreaLight {
 // up the world's y as far as its tilt allows). `mirror_x` mirrors it across x = aim.x.
 AreaLight place_light(const LightParams&, const glm::dvec3& aim, bool mirror_x = false);
 
+inline constexpr size_t kMaxRigLights = 4;  // key, two strips, backlight
+
 struct LightRig {
   glm::dvec3 aim{0.0};
   std::vector<AreaLight> lights;  // only those that emit: key, left and right strip, backlight

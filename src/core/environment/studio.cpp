@@ -14,18 +14,7 @@ double smoothstep(double e0, double e1, double x) {
 glm::dvec3 mix(const glm::dvec3& a, const glm::dvec3& b, double t) { return a + (b - a) * t; }
 }  // namespace
 
-Studio::Studio(const SceneParams& p) : env(p.env) {
-  const glm::dvec3 d(p.light.direction);
-  key.dir = glm::length(d) > 1e-6 ? glm::normalize(d) : glm::dvec3(0, 1, 0);
-  key.cos_radius = std::cos(glm::radians(double(p.light.size)));
-  key.solid_angle = 2 * std::numbers::pi * (1 - key.cos_radius);
-  // A disc of angular radius r gives a surface facing it pi sin^2 r times its radiance.
-  const double sin_r = std::sin(glm::radians(double(p.light.size)));
-  if (p.light.intensity > 0 && sin_r > 0)
-    key.radiance = glm::dvec3(p.light.color) * double(p.light.intensity) / (std::numbers::pi * sin_r * sin_r);
-  else
-    key.solid_angle = 0;  // no key light
-}
+Studio::Studio(const SceneParams& p) : env(p.env) {}
 
 glm::dvec3 Studio::sky(const glm::dvec3& d) const {
   if (env.mode == int(EnvMode::Constant)) return glm::dvec3(env.color);
@@ -44,12 +33,6 @@ glm::dvec3 Studio::sky(const glm::dvec3& d) const {
   const glm::dvec3 g = glm::normalize(glm::dvec3(0.0, 0.12, -1.0));
   s += double(env.backdrop_glow) * glm::dvec3(1.0, 0.97, 0.92) * std::pow(std::max(glm::dot(d, g), 0.0), 200.0);
   return s;
-}
-
-glm::dvec3 Studio::floor_albedo(const glm::dvec3& p) const {
-  const double cx = std::floor(p.x / env.checker_size), cz = std::floor(p.z / env.checker_size);
-  const bool light_square = std::fmod(std::fmod(cx + cz, 2.0) + 2.0, 2.0) < 0.5;
-  return glm::dvec3(light_square ? env.floor_a : env.floor_b);
 }
 
 double Studio::floor_visibility(double dist) { return std::exp(-dist / 2.0); }

@@ -286,15 +286,16 @@ Hit first_hit(const SceneGeometry& s, const Ray& world_ray, double tmin) {
     h.object = int(i);
     keep_nearest(best, h);
   }
-  if (s.floor && world_ray.d.y < 0) {
-    const double t = -world_ray.o.y / world_ray.d.y;
+  double t;
+  glm::dvec3 n;
+  if (s.backdrop.intersect(world_ray.o, world_ray.d, tmin, t, n) && t < best.t) {
     // Where a glass stands on the floor, its foot is the surface.
     bool on_foot = false;
     for (const VesselGeometry& g : s.vessels) {
       const glm::dvec3 p = glm::inverse(g.pose.orientation) * (world_ray.at(t) - g.pose.position);
       on_foot = on_foot || (std::fabs(p.y) < 1e-6 && std::hypot(p.x, p.z) <= g.vessel->r_outer.front());
     }
-    if (t > tmin && !on_foot) keep_nearest(best, {t, {0, 1, 0}, Material::Floor, -1});
+    if (!on_foot) keep_nearest(best, {t, n, Material::Floor, -1});
   }
   return best;
 }

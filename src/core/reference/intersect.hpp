@@ -3,6 +3,8 @@
 // Tests compare the GPU's debug outputs against it pixel by pixel.
 #pragma once
 
+#include "core/environment/backdrop.hpp"
+
 #include "core/scene/motion.hpp"
 #include "core/liquid/slosh.hpp"
 #include "core/vessel/vessel.hpp"
@@ -66,10 +68,10 @@ struct VesselGeometry {
   bool clipped(const glm::dvec3& local) const { return glm::dot(glm::dvec3(clip), local) > clip.w; }
 };
 
-// Every object of a scene, and the floor.
+// Every object of a scene, and what they stand on (the sweep or the checker floor).
 struct SceneGeometry {
   std::vector<VesselGeometry> vessels;
-  bool floor = true;
+  BackdropSurface backdrop;  // present = false: none
 };
 
 Hit hit_wall(const Vessel&, bool inner, const Ray&, double tmin);
@@ -79,7 +81,8 @@ Hit hit_liquid_surface(const Vessel&, const LiquidPlane&, const Ray& local_ray, 
 // Nearest surface of one vessel along the world ray (glass, liquid surface, cut faces);
 // normals in the world.
 Hit hit_vessel(const VesselGeometry&, const Ray& world_ray, double tmin = 1e-7);
-// Nearest surface along the world ray over every object and the floor; normals in the world.
+// Nearest surface along the world ray over every object and the backdrop (Material::Floor:
+// its floor, curve or wall); normals in the world.
 Hit first_hit(const SceneGeometry&, const Ray&, double tmin = 1e-7);
 
 }  // namespace draught

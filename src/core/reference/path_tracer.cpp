@@ -1,5 +1,6 @@
 #include "core/reference/path_tracer.hpp"
 
+#include "core/environment/lights.hpp"
 #include "core/environment/studio.hpp"
 #include "core/foam/head_volume.hpp"
 #include "core/math/random.hpp"
@@ -8,6 +9,7 @@
 #include "core/reference/optics.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -77,6 +79,14 @@ struct VesselMedia {
   }
 };
 
+// Where the last vertex that sampled the lights was, so a path that then meets a light
+// weighs that strategy against its own (multiple importance sampling).
+struct MisVertex {
+  double pdf = -1;  // density of the direction the path took there; < 0: no such vertex
+  glm::dvec3 p{0.0};
+  glm::dvec3 n{0.0};  // the surface's normal; 0 in a medium (a head)
+};
+
 // Where a path leaves a stretch of air: a scattering in a head, a big bubble's cap, or
 // neither (it reached the stretch's end).
 struct AirEvent {
@@ -88,7 +98,8 @@ struct AirEvent {
 
 class Tracer {
  public:
-  Tracer(const FrameState& f, const ReferenceSettings& s) : frame_(f), settings_(s), geo_(scene_geometry(f)), studio_(f.params) {
+  Tracer(const FrameState& f, const ReferenceSettings& s)
+      : frame_(f), settings_(s), geo_(scene_geometry(f)), studio_(f.params), lights_(f.lights.lights) {
     for (size_t i = 0; i < f.vessels.size(); ++i) {
       const VesselFrame& vf = f.vessels[i];
       heads_.emplace_back(vf, geo_.vessels[i]);
@@ -117,10 +128,9 @@ class Tracer {
     glm::dvec3 L(0.0), thr(1.0);
     MediumKind medium = MediumKind::Air;
     int obj = -1;
-    // Multiple importance sampling of the key light: the density with which the last
-    // light-sampling vertex (floor or head) chose this direction; < 0 when no such vertex
-    // could have sampled the light along this path (the camera, or a mirror since).
-    double mis_pdf = -1;
+    // Multiple importance sampling of the lights: the last vertex that sampled them
+    // (backdrop or head); none for the camera, or after a mirror or a refraction.
+    MisVertex mis;
     int surfaces = 0, scatters = 0;
     const glm::dvec3 eye = ray.o;
     for (;;) {
@@ -139,20 +149,23 @@ class Tracer {
           if (++scatters > settings_.max_scatters) break;
           ray.o = ray.at(t_scatter);
           ray.d = sample_hg(ray.d, 0.0, rng);  // haze: isotropic
-          mis_pdf = -1;                        // no light sampling inside a drink (it sits behind an interface)
+          mis.pdf = -1;                        // no light sampling inside a drink (it sits behind an interface)
           continue;
         }
       } else {
-        const AirEvent e = air_segment(ray, t_end, rng);
+        // A light's front before the next surface ends the stretch there.
+        double t_light = t_end;
+        const int light = nearest_light(ray, t_light);
+        const AirEvent e = air_segment(ray, t_light, rng);
         if (e.kind == AirEvent::Scatter) {
           if (++scatters > settings_.max_scatters) break;
           const VesselMedia& m = media_[size_t(e.obj)];
           thr *= m.foam_albedo;
           const glm::dvec3 p = ray.at(e.t);
-          L += thr * light_at_foam(p, ray.d, m.foam_g, rng);
+          L += thr * direct_light(p, glm::dvec3(0.0), ray.d, m.foam_g, rng);
           ray.o = p;
           const glm::dvec3 d = sample_hg(ray.d, m.foam_g, rng);
-          mis_pdf = hg_phase(glm::dot(ray.d, d), m.foam_g);
+          mis = {hg_phase(glm::dot(ray.d, d), m.foam_g), p, glm::dvec3(0.0)};
           ray.d = d;
           if (!roulette(thr, surfaces + scatters, rng)) break;
           continue;
@@ -164,31 +177,33 @@ class Tracer {
           ray.o = ray.at(e.t);
           if (rng.uniform() < 2 * F / (1 + F)) {
             ray.d = reflect_dir(ray.d, e.n);
-            mis_pdf = -1;
+            mis.pdf = -1;
           }
           continue;
+        }
+        if (light >= 0) {  // the path sees a light
+          L += thr * lights_[size_t(light)].radiance * light_weight(mis, light, ray.d);
+          break;
         }
       }
       if (!h.valid()) {  // out into the studio
         L += thr * studio_.sky(ray.d);
-        if (studio_.key.contains(ray.d))
-          L += thr * studio_.key.radiance * (mis_pdf < 0 ? 1.0 : power_weight(mis_pdf, 1.0 / studio_.key.solid_angle));
         break;
       }
       const glm::dvec3 p = ray.at(h.t);
-      if (h.m == Material::Floor) {
-        // The floor fades into the backdrop with distance (as the picture's).
-        if (rng.uniform() >= Studio::floor_visibility(glm::length(p - eye))) {
+      if (h.m == Material::Floor) {  // the backdrop: Lambertian
+        // The checker floor fades into the studio with distance (as the picture's).
+        if (geo_.backdrop.kind == Backdrop::Checker && rng.uniform() >= Studio::floor_visibility(glm::length(p - eye))) {
           L += thr * glm::dvec3(studio_.env.ground);
           break;
         }
-        const glm::dvec3 albedo = studio_.floor_albedo(p);
-        L += thr * albedo * light_at_floor(p, rng);
+        const glm::dvec3 albedo = geo_.backdrop.albedo(p);
+        L += thr * albedo * direct_light(p, h.n, ray.d, 0.0, rng);
         thr *= albedo;  // cosine-weighted bounce: albedo / pi x cos / pdf = albedo
         const double cos_t = std::sqrt(rng.uniform());
         ray.o = p;
-        ray.d = around({0, 1, 0}, cos_t, 2 * kPi * rng.uniform());
-        mis_pdf = cos_t / kPi;
+        ray.d = around(h.n, cos_t, 2 * kPi * rng.uniform());
+        mis = {cos_t / kPi, p, h.n};
         if (!roulette(thr, surfaces + scatters, rng)) break;
         continue;
       }
@@ -208,7 +223,7 @@ class Tracer {
         medium = next;
         obj = next == MediumKind::Air ? -1 : h.object;
       }
-      mis_pdf = -1;
+      mis.pdf = -1;
     }
     return L;
   }
@@ -245,20 +260,27 @@ class Tracer {
     return true;
   }
 
-  // The heads along the world ray over [0, t_end] in order of entry, as (t0, t1, object).
+  // The heads along the world ray over [0, t_end] in order of entry, as (t0, t1, object);
+  // on the stack (a scene has at most kMaxSceneObjects), as this runs for every segment.
   struct Stretch {
     double t0, t1;
     int obj;
   };
-  std::vector<Stretch> heads_along(const Ray& ray, double t_end) const {
-    std::vector<Stretch> out;
+  struct Stretches {
+    std::array<Stretch, kMaxSceneObjects> at;
+    int count = 0;
+    const Stretch* begin() const { return at.data(); }
+    const Stretch* end() const { return at.data() + count; }
+  };
+  Stretches heads_along(const Ray& ray, double t_end) const {
+    Stretches out;
     for (size_t i = 0; i < heads_.size(); ++i) {
       if (heads_[i].empty()) continue;
       const VesselMedia& m = media_[i];
       double t0 = 0, t1 = t_end;
-      if (heads_[i].interval(m.local_point(ray.o), m.local_dir(ray.d), t0, t1)) out.push_back({t0, t1, int(i)});
+      if (heads_[i].interval(m.local_point(ray.o), m.local_dir(ray.d), t0, t1)) out.at[size_t(out.count++)] = {t0, t1, int(i)};
     }
-    std::sort(out.begin(), out.end(), [](const Stretch& a, const Stretch& b) { return a.t0 < b.t0; });
+    std::sort(out.at.begin(), out.at.begin() + out.count, [](const Stretch& a, const Stretch& b) { return a.t0 < b.t0; });
     return out;
   }
 
@@ -266,7 +288,7 @@ class Tracer {
   // the heads before it.
   AirEvent air_segment(const Ray& ray, double t_end, Rng& rng) const {
     AirEvent e;
-    const std::vector<Stretch> stretches = heads_along(ray, t_end);
+    const Stretches stretches = heads_along(ray, t_end);
     double end = t_end;
     for (const Stretch& s : stretches) {
       const VesselMedia& m = media_[size_t(s.obj)];
@@ -292,13 +314,28 @@ class Tracer {
     return e;
   }
 
-  // The fraction of light that crosses the air from p along d to the sky: 0 past any
-  // surface (a dielectric bends it away), else the heads' transmittance (ratio
-  // tracking) and the films of caps it passes straight through.
-  double sky_visibility(const Ray& ray, Rng& rng) const {
-    if (first_hit(geo_, ray, kEps).valid()) return 0;
+  // The nearest light front along the ray before `t` (updated), or -1.
+  int nearest_light(const Ray& ray, double& t) const {
+    int found = -1;
+    for (size_t i = 0; i < lights_.size(); ++i) {
+      double tl;
+      if (lights_[i].intersect(ray.o, ray.d, kEps, tl) && tl < t) {
+        t = tl;
+        found = int(i);
+      }
+    }
+    return found;
+  }
+
+  // The fraction of light that crosses the air from ray.o along ray.d for `dist`: 0 past
+  // any surface (a dielectric bends it away) or another light's front, else the heads'
+  // transmittance (ratio tracking) and the films of caps it passes straight through.
+  double visibility(const Ray& ray, double dist, Rng& rng) const {
+    if (first_hit(geo_, ray, kEps).t < dist) return 0;
+    double t_light = dist * (1 - 1e-9);
+    if (nearest_light(ray, t_light) >= 0) return 0;
     double T = 1;
-    for (const Stretch& s : heads_along(ray, kInf)) {
+    for (const Stretch& s : heads_along(ray, dist)) {
       const HeadVolume& head = heads_[size_t(s.obj)];
       const VesselMedia& m = media_[size_t(s.obj)];
       const glm::dvec3 o = m.local_point(ray.o), d = m.local_dir(ray.d);
@@ -311,7 +348,7 @@ class Tracer {
       }
       double from = 0, t;
       glm::dvec3 n;
-      while (head.hit_cap(o, d, from, kInf, t, n)) {
+      while (head.hit_cap(o, d, from, dist, t, n)) {
         const double F = fresnel_dielectric(std::fabs(glm::dot(n, d)), 1.0, m.liquid_ior);
         T *= 1 - 2 * F / (1 + F);
         from = t + kEps;
@@ -320,38 +357,59 @@ class Tracer {
     return T;
   }
 
-  // A direction towards the key softbox (uniform in its cone), or none.
-  bool sample_key(Rng& rng, glm::dvec3& l) const {
-    if (studio_.key.solid_angle <= 0) return false;
-    const double cos_t = 1 - rng.uniform() * (1 - studio_.key.cos_radius);
-    l = around(studio_.key.dir, cos_t, 2 * kPi * rng.uniform());
+  // How likely a vertex at p (a surface of normal n, or a medium where n = 0) picks each
+  // light to sample: in proportion to the light it would get from each, unoccluded (a
+  // medium: as a surface facing the light). False when no light reaches p.
+  using Selection = std::array<double, kMaxRigLights>;
+  bool selection(const glm::dvec3& p, const glm::dvec3& n, Selection& prob) const {
+    prob.fill(0.0);
+    double sum = 0;
+    for (size_t i = 0; i < lights_.size(); ++i) {
+      const AreaLight& l = lights_[i];
+      const glm::dvec3 towards = glm::length(n) > 0 ? n : glm::normalize(l.center - p);
+      prob[i] = mean3(l.radiance) * l.irradiance_factor(p, towards);
+      sum += prob[i];
+    }
+    if (!(sum > 0)) return false;
+    for (double& q : prob) q /= sum;
     return true;
   }
 
-  // Direct light of the key softbox reflected by the floor at p (per unit albedo).
-  glm::dvec3 light_at_floor(const glm::dvec3& p, Rng& rng) const {
-    glm::dvec3 l;
-    if (!sample_key(rng, l) || l.y <= 0) return glm::dvec3(0.0);
-    const double pdf_light = 1.0 / studio_.key.solid_angle, pdf_bsdf = l.y / kPi;
-    if (sky_visibility({p, l}, rng) <= 0) return glm::dvec3(0.0);
-    return studio_.key.radiance * (l.y / kPi) / pdf_light * power_weight(pdf_light, pdf_bsdf);
+  // The MIS weight of a path that reached light `light` along d by the last vertex's own
+  // sampling, against that vertex's sampling of the lights.
+  double light_weight(const MisVertex& v, int light, const glm::dvec3& d) const {
+    if (v.pdf < 0) return 1.0;
+    Selection prob;
+    if (!selection(v.p, v.n, prob)) return 1.0;
+    return power_weight(v.pdf, prob[size_t(light)] * lights_[size_t(light)].pdf_from(v.p, d));
   }
 
-  // Direct light of the key softbox scattered at head point p (per unit albedo) towards
-  // -d, where d is the direction the path travelled to p.
-  glm::dvec3 light_at_foam(const glm::dvec3& p, const glm::dvec3& d, double g, Rng& rng) const {
-    glm::dvec3 l;
-    if (!sample_key(rng, l)) return glm::dvec3(0.0);
-    const double pdf_light = 1.0 / studio_.key.solid_angle, phase = hg_phase(glm::dot(d, l), g);
-    const double vis = sky_visibility({p, l}, rng);
+  // Direct light of the rig at p, per unit albedo, towards -d (d: the direction the path
+  // travelled to p): a Lambertian surface of normal n, or (n = 0) a head's
+  // Henyey-Greenstein phase of anisotropy g. One light is sampled (selection), weighted
+  // against the vertex's own sampling by the power heuristic.
+  glm::dvec3 direct_light(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& d, double g, Rng& rng) const {
+    Selection prob;
+    if (!selection(p, n, prob)) return glm::dvec3(0.0);
+    double u = rng.uniform();
+    size_t j = 0;
+    while (j + 1 < lights_.size() && u >= prob[j]) u -= prob[j++];
+    AreaLight::Sample s;
+    if (prob[j] <= 0 || !lights_[j].sample_from(p, rng.uniform(), rng.uniform(), s)) return glm::dvec3(0.0);
+    const bool surface = glm::length(n) > 0;
+    const double f = surface ? std::max(glm::dot(s.dir, n), 0.0) / kPi : hg_phase(glm::dot(d, s.dir), g);
+    if (f <= 0) return glm::dvec3(0.0);
+    const double vis = visibility({p, s.dir}, s.dist, rng);
     if (vis <= 0) return glm::dvec3(0.0);
-    return studio_.key.radiance * vis * phase / pdf_light * power_weight(pdf_light, phase);
+    const double pdf_light = prob[j] * s.pdf;
+    return lights_[j].radiance * (vis * f / pdf_light * power_weight(pdf_light, f));
   }
 
   const FrameState& frame_;
   ReferenceSettings settings_;
   SceneGeometry geo_;
   Studio studio_;
+  const std::vector<AreaLight>& lights_;
   std::vector<HeadVolume> heads_;
   std::vector<VesselMedia> media_;
 };

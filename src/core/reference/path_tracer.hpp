@@ -1,17 +1,18 @@
 // The project's own reference: an unbiased CPU Monte Carlo path tracer over the reference
 // geometry (core/reference/intersect). It renders the same frame as the GPU (scene,
-// camera, glass, drink, head, key light, studio, floor) from the physics alone:
+// camera, glass, drink, head, lights, studio, backdrop) from the physics alone:
 // - glass and liquid surfaces are smooth dielectrics (Fresnel picks reflection or
 //   refraction); glass and drink absorb by Beer-Lambert; a hazy drink scatters
 //   (isotropic, its haze colour the albedo), sampled by spectral free-flight sampling;
 // - the head is a heterogeneous medium (core/foam/head_volume: the picture's density
 //   field) with the foam colour as single-scattering albedo and Henyey-Greenstein phase,
 //   sampled by delta tracking; its big bubbles' caps are thin films;
-// - the key light is a softbox disc (core/environment/studio KeyLight) sampled by next
-//   event estimation from the floor and the head, combined with the other paths by
-//   multiple importance sampling; the studio is an environment of its own radiance;
-// - the floor is Lambertian with the checker albedo, fading into the backdrop as the
-//   picture's does.
+// - the rig's area lights (core/environment/lights) are sampled by next event estimation
+//   from the backdrop and the head, one light per vertex chosen by the light it gives,
+//   combined with the other paths by multiple importance sampling; the studio is an
+//   environment of its own radiance;
+// - the backdrop (core/environment/backdrop: the sweep or the checker floor) is
+//   Lambertian; the checker fades into the studio's ground as the picture's does.
 // Left out: the drink's rising bubbles and the lacing on the wall (the picture draws both).
 // docs/REFERENCE.md says how to use it and what it is for.
 #pragma once

@@ -193,7 +193,8 @@ FrameState make_frame(const Params& p) { return make_frame(single_glass_scene(p)
 
 SceneGeometry scene_geometry(const FrameState& f) {
   SceneGeometry g;
-  g.floor = f.params.env.floor && !f.params.render.transparent;
+  g.backdrop = f.backdrop;
+  g.backdrop.present = f.backdrop.present && !f.params.render.transparent;
   for (const VesselFrame& v : f.vessels) {
     VesselGeometry vg{&v.vessel, v.liquid, v.pose};
     const ClipParams& c = v.params.clip;

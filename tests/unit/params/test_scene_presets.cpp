@@ -122,10 +122,12 @@ TEST(ScenePreset, WrittenSceneLoadsBackTheSame) {
     EXPECT_EQ(back.objects[i].name, s.objects[i].name);
     EXPECT_EQ(back.objects[i].placement.position, s.objects[i].placement.position);
     EXPECT_EQ(back.objects[i].placement.yaw, s.objects[i].placement.yaw);
-    for (const ParamDesc& d : param_table())
-      if (d.scope == ParamScope::Vessel)
+    for (const ParamDesc& d : param_table()) {
+      if (d.scope == ParamScope::Vessel) {
         EXPECT_TRUE(get_param(vessel_document(back, int(i)), d) == get_param(vessel_document(s, int(i)), d))
             << "objects[" << i << "]." << d.path;
+      }
+    }
   }
   EXPECT_FLOAT_EQ(vessel_document(back, 2).liquid.fill, 0.4f);
   EXPECT_FALSE(back.params.env.floor);

@@ -481,7 +481,7 @@ struct TestScene {
 // rest of the cavity below the plane.
 Region classify(const SceneGeometry& scene, const dvec3& p) {
   const VesselGeometry& s = scene.vessels.front();
-  const bool floor = scene.floor;
+  const bool floor = scene.backdrop.present;  // the endless checker floor y = 0
   const Vessel& v = *s.vessel;
   const double r = std::hypot(p.x, p.z), y = p.y;
   const bool body = y >= 0 && y <= v.height && r <= v.outer_radius(y) && (y < v.base || r >= v.inner_radius(y));
@@ -610,6 +610,11 @@ std::string check_first_hit(const SceneGeometry& scene, const Ray& ray, double t
       else if (r >= v.inner_radius(p.y)) err << "liquid hit outside the cavity";
       else if (glm::length(hit.n - s.liquid.n) > 1e-12) err << "liquid normal is not the plane normal";
       break;
+    case Material::ClipGlass:
+    case Material::ClipLiquid:
+      if (std::fabs(glm::dot(dvec3(s.clip), p) - s.clip.w) > 1e-9) err << "cut-face hit off the clip plane";
+      else if (!parallel(dvec3(s.clip))) err << "cut-face normal not the clip plane's";
+      break;
     case Material::Floor:
       if (std::fabs(p.y) > 1e-12 || r <= v.r_outer.front()) err << "floor hit not on the floor";
       else if (glm::length(hit.n - dvec3(0, 1, 0)) > 1e-12) err << "floor normal not up";
@@ -642,7 +647,8 @@ TestScene pint_scene(double liquid_offset, dvec3 liquid_n = {0, 1, 0}, bool floo
   vg.liquid.n = glm::normalize(liquid_n);
   vg.liquid.offset = liquid_offset;
   s.g.vessels = {vg};
-  s.g.floor = floor;
+  s.g.backdrop.present = floor;
+  s.g.backdrop.kind = Backdrop::Checker;
   return s;
 }
 

@@ -24,7 +24,7 @@ Params furnace_params() {
   p.env.mode = int(EnvMode::Constant);
   p.env.color = kEnv;
   p.env.floor = false;
-  p.light.intensity = 0;
+  p.light.power = p.strips.power = p.backlight.power = 0;  // no lights
   p.glass.absorption = glm::vec3(0);
   p.liquid.srm = 0;
   p.liquid.absorption = glm::vec3(0);
@@ -126,31 +126,71 @@ TEST(ReferencePathTracer, ReportsProgressForEveryRow) {
   EXPECT_EQ(calls, 7);
 }
 
-TEST(ReferencePathTracer, TheKeyLightGivesTheFloorItsIrradiance) {
-  // An empty scene but the floor, the key light straight above: the floor's radiance is
-  // albedo / pi x (the light's irradiance + the sky's), here with a black sky.
+// An empty scene but the floor, lit by one light of the rig and a black studio: the
+// floor's radiance is albedo / pi x the light's irradiance (AreaLight::irradiance_factor,
+// checked against Monte Carlo in tests/unit/environment/test_lights.cpp).
+void expect_floor_irradiance(int shape, glm::vec3 direction, float distance) {
   Params p = test::params_with_glass("pint");
   p.env.mode = int(EnvMode::Constant);
   p.env.color = glm::vec3(0);
+  p.env.backdrop = int(Backdrop::Checker);
   p.env.floor_a = p.env.floor_b = glm::vec3(0.5f);
   p.env.ground = glm::vec3(0);
-  p.light.direction = {0, 1, 0};
-  p.light.intensity = 2;
+  p.strips.power = p.backlight.power = 0;
+  p.light.shape = shape;
+  p.light.direction = direction;
+  p.light.distance = distance;
+  p.light.width = 0.3f;
+  p.light.height = 0.2f;
+  p.light.power = 2;
   p.light.color = glm::vec3(1);
   p.camera.auto_frame = false;
   p.camera.eye = {0.5f, 0.3f, 0.5f};
   p.camera.target = {0.5f, 0.0f, 0.45f};  // looking down at the floor beside the glass
-  p.camera.vfov = 5;
+  p.camera.vfov = 1;
   const FrameState f = make_frame(p);
+  ASSERT_EQ(f.lights.lights.size(), 1u);
+  const AreaLight& light = f.lights.lights[0];
   ReferenceSettings s;
-  s.samples = 1000;
+  s.samples = 2000;
   s.threads = 2;
-  const RadianceImage img = render_reference(f, 4, 4, s);
+  const RadianceImage img = render_reference(f, 2, 2, s);
   glm::dvec3 mean(0.0);
   for (const glm::dvec3& c : img.pixels) mean += c / double(img.pixels.size());
-  // The floor fades with distance from the eye (as the picture's): ~0.3 m away.
-  const double expected = 0.5 / 3.141592653589793 * 2 * Studio::floor_visibility(std::sqrt(0.09 + 0.0025));
+  // The checker floor fades with distance from the eye (as the picture's): ~0.3 m away.
+  const glm::dvec3 at(0.5, 0.0, 0.45);
+  const double expected = 0.5 / 3.141592653589793 * light.radiance.g * light.irradiance_factor(at, {0, 1, 0}) *
+                          Studio::floor_visibility(std::sqrt(0.09 + 0.0025));
   EXPECT_NEAR(mean.g, expected, 0.02 * expected);
+}
+
+TEST(ReferencePathTracer, ARectLightGivesTheFloorItsIrradiance) {
+  expect_floor_irradiance(int(LightShape::Rect), {0.3f, 1.0f, 0.2f}, 0.5f);
+}
+
+TEST(ReferencePathTracer, ASphereLightGivesTheFloorItsIrradiance) {
+  expect_floor_irradiance(int(LightShape::Sphere), {0.6f, 0.5f, 0.2f}, 0.4f);
+}
+
+// A light seen directly shows its radiance; from behind, a softbox is not seen.
+TEST(ReferencePathTracer, ALightSeenDirectlyHasItsRadiance) {
+  Params p = furnace_params();
+  p.env.color = glm::vec3(0.1f);
+  p.backlight.power = 3;
+  p.backlight.width = 2;
+  p.backlight.height = 2;
+  p.camera.auto_frame = false;
+  p.camera.eye = {0.0f, 0.5f, 0.3f};
+  p.camera.target = {0.0f, 0.5f, -1.0f};  // above the glass, at the panel behind it
+  p.camera.vfov = 5;
+  const FrameState f = make_frame(p);
+  ASSERT_EQ(f.lights.lights.size(), 1u);
+  const RadianceImage img = render(p, 4, 4);
+  for (const glm::dvec3& c : img.pixels) EXPECT_NEAR(c.g, f.lights.lights[0].radiance.g, 1e-9);
+  p.camera.eye = {0.0f, 0.5f, -2.0f};
+  p.camera.target = {0.0f, 0.5f, 1.0f};
+  p.backlight.direction = {0, 0, -1};
+  for (const glm::dvec3& c : render(p, 4, 4).pixels) EXPECT_NEAR(c.g, 0.1, 1e-6);  // its back: the studio
 }
 
 }  // namespace
