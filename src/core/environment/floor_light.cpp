@@ -166,7 +166,12 @@ class PhotonTracer {
         return;
       }
       const glm::dvec3 p = ray.at(h.t);
-      // The floor, or the floor under a foot the photon leaves through.
+      // The floor, or the floor under a foot the photon leaves through; the backdrop's
+      // curve and wall are not the floor: what lands there has left it.
+      if (h.m == Material::Floor && p.y > 1e-6) {
+        lane.stats.escaped += power;
+        return;
+      }
       if (h.m == Material::Floor || (p.y < 1e-6 && ray.d.y < 0)) {
         splat(p, power, lane);
         lane.stats.landed += power;
@@ -394,7 +399,7 @@ glm::dvec3 unoccluded_floor_irradiance(const LightRig& rig, const glm::dvec3& p)
 FloorLightMap compute_floor_light(const FrameState& f, const FloorLightSettings& s) {
   const auto start = std::chrono::steady_clock::now();
   FloorLightMap map;
-  if (!scene_geometry(f).floor || f.lights.lights.empty() || f.vessels.empty()) return map;
+  if (!scene_geometry(f).backdrop.present || f.lights.lights.empty() || f.vessels.empty()) return map;
   place_rect(f, s, map);
 
   std::vector<Target> targets;
@@ -499,7 +504,8 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
   // head settling, stop changing the map once nothing the map shows moves any more.
   auto put = [&k](auto... xs) { (k.push_back(std::round(double(xs) * 1e5)), ...); };
   auto put3 = [&put](const auto& v) { put(v.x, v.y, v.z); };
-  put(scene_geometry(f).floor ? 1 : 0, f.lights.lights.size(), f.vessels.size());
+  const BackdropSurface& b = scene_geometry(f).backdrop;
+  put(b.present ? 1 : 0, int(b.kind), b.z_curve, b.radius, f.lights.lights.size(), f.vessels.size());
   for (const AreaLight& l : f.lights.lights) {
     put(int(l.shape), l.radius);
     put3(l.center);
