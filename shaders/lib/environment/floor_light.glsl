@@ -16,7 +16,7 @@ vec3 floor_light_factor(vec3 p) {
   vec2 from_edge = min(uv, 1.0 - uv) * vec2(textureSize(u_floor_light, 0));
   float inside = smoothstep(0.5, 4.0, min(from_edge.x, from_edge.y));
   if (inside <= 0.0) return vec3(1.0);
-  return mix(vec3(1.0), texture(u_floor_light, uv).rgb, inside);
+  return mix(vec3(1.0), textureLod(u_floor_light, uv, 0.0).rgb, inside);  // one level: no derivatives needed
 }
 
 // The backdrop's direct light at p (normal n): the rig's unoccluded light

@@ -154,7 +154,10 @@ class PhotonTracer {
         const bool through = liquid_segment(media_[size_t(obj)], t_end, power, t_scatter, rng);
         lane.stats.absorbed += before - power;  // in expectation (the free flight's weights are not per channel)
         if (!through) {
-          if (events >= kMaxEvents) return;
+          if (events >= kMaxEvents) {  // scattered too often: what is left is lost
+            lane.stats.absorbed += power;
+            return;
+          }
           ray.o = ray.at(t_scatter);
           ray.d = around(ray.d, 1 - 2 * rng.uniform(), 2 * kPi * rng.uniform());  // haze: isotropic
           continue;
@@ -169,12 +172,12 @@ class PhotonTracer {
         return;
       }
       const glm::dvec3 p = ray.at(h.t);
-      // The sweep's curve or wall: beyond the map.
+      // The floor, or the floor under a foot the photon leaves through; the backdrop's
+      // curve and wall are not the floor: what lands there has left it.
       if (h.m == Material::Floor && h.n.y <= 0.999) {
         lane.stats.escaped += power;
         return;
       }
-      // The floor, or the floor under a foot the photon leaves through.
       if (h.m == Material::Floor || (p.y < 1e-6 && ray.d.y < 0)) {
         splat(p, power, lane);
         lane.stats.landed += power;
@@ -505,7 +508,8 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
   // head settling, stop changing the map once nothing the map shows moves any more.
   auto put = [&k](auto... xs) { (k.push_back(std::round(double(xs) * 1e5)), ...); };
   auto put3 = [&put](const auto& v) { put(v.x, v.y, v.z); };
-  put(scene_geometry(f).backdrop.present ? 1 : 0, f.lights.lights.size(), f.vessels.size());
+  const BackdropSurface& b = scene_geometry(f).backdrop;
+  put(b.present ? 1 : 0, int(b.kind), b.z_curve, b.radius, f.lights.lights.size(), f.vessels.size());
   for (const AreaLight& l : f.lights.lights) {
     put(int(l.shape), l.radius);
     put3(l.center);
