@@ -79,7 +79,9 @@ glm::dvec3 backward_irradiance(const FrameState& f, const SceneGeometry& geo, gl
 
 TEST(FloorLight, AnOpaqueGlassShadowIsWhatShadowRaysFind) {
   // Index 1 everywhere (no reflection), glass and drink black: all that meets it is absorbed.
-  FrameState f = pint({"glass.ior=1", "liquid.ior=1", "liquid.haze=0"});
+  // A stated key (not the tuned default): its penumbra decides how much the kernel blurs.
+  FrameState f = pint({"glass.ior=1", "liquid.ior=1", "liquid.haze=0", "light.direction=-0.55,0.75,0.45",
+                       "light.distance=1", "light.width=0.6", "light.height=0.6"});
   f.vessels[0].params.glass.absorption = glm::vec3(1e5f);
   f.vessels[0].liquid_absorption = glm::vec3(1e5f);
   f.vessels[0].foam.thickness = 0;
