@@ -151,7 +151,7 @@ AreaLight place_light(const LightParams& lp, const glm::dvec3& aim, bool mirror_
   if (mirror_x) dir.x = -dir.x;
   dir = glm::length(dir) > 1e-9 ? glm::normalize(dir) : glm::dvec3(0, 1, 0);
   l.center = aim + dir * double(lp.distance);
-  l.normal = -dir;
+  l.normal = lp.facing == int(LightFacing::Away) ? dir : -dir;
   // The rect's height runs up the world as far as its tilt allows; a light straight
   // above or below has its height along z.
   glm::dvec3 up = glm::dvec3(0, 1, 0) - l.normal.y * l.normal;

@@ -26,6 +26,9 @@ void add_light_rows(std::vector<ParamDesc>& rows, const std::string& g, const st
   rows.push_back(param_row<ParamType::Enum, Group, &L::shape>(g + ".shape", 0, 0, "",
       "rect: a rectangular softbox facing the scene; sphere: a round lamp (diameter " + g + ".width)",
       std::vector<std::string>{"rect", "sphere"}));
+  rows.push_back(param_row<ParamType::Enum, Group, &L::facing>(g + ".facing", 0, 0, "",
+      "scene: " + what + " shines at the scene; away: it shines at the backdrop behind it (a rect seen from behind is not seen)",
+      std::vector<std::string>{"scene", "away"}));
   rows.push_back(param_row<ParamType::Vec3, Group, &L::direction>(g + ".direction", -1.0f, 1.0f, "",
       "Direction from the scene's centre towards " + what + " (normalised)"));
   rows.push_back(param_row<ParamType::Float, Group, &L::distance>(g + ".distance", 0.05f, 20.0f, "m",

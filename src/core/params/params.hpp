@@ -73,6 +73,10 @@ struct BubbleParams {
 enum class EnvMode { Studio = 0, Constant = 1 };
 enum class Backdrop { Sweep = 0, Checker = 1 };
 enum class LightShape { Rect = 0, Sphere = 1 };
+// Which way a rect light emits: at the scene, or away from it (a background light behind
+// the glasses, aimed at the backdrop: its glow shows through the drinks, and the light
+// itself, seen from behind, is not seen).
+enum class LightFacing { Scene = 0, Away = 1 };
 enum class Tonemap { None = 0, Aces = 1 };
 
 struct EnvParams {
@@ -98,6 +102,7 @@ struct EnvParams {
 // from the scene's centre in `direction`, facing it, emitting `power` watts.
 struct LightParams {
   int shape = int(LightShape::Rect);          // LightShape
+  int facing = int(LightFacing::Scene);       // LightFacing (rect)
   glm::vec3 direction{-0.6f, 0.6f, 0.55f};  // from the scene's centre towards the light
   float distance = 1.0f;                    // m from the scene's centre
   float width = 0.6f;                       // m (a sphere's diameter)
@@ -123,17 +128,19 @@ inline LightParams default_strips() {
   return l;
 }
 
-// The backlight: a small panel just behind the glass, hidden by it from the camera and
-// seen only through the drink (the beer's cylinder spreads it over its whole width):
-// the glow of a backlit beer. Scenes of several glasses widen it (presets/scenes/flight.json).
+// The backlight: a panel just behind the drinks' middle, turned away from them to the
+// sweep: the glow it throws on the paper behind is what the drinks are seen against (a
+// backlit beer glows), and the panel, seen from behind, is not seen at all, not even
+// beside a wine glass's bowl. presets/scenes/flight.json lights its row otherwise.
 inline LightParams default_backlight() {
   LightParams l;
+  l.facing = int(LightFacing::Away);  // lights the sweep behind the drinks; never seen itself
   l.direction = {0.0f, 0.0f, -1.0f};
-  l.distance = 0.17f;
-  l.width = 0.085f;
-  l.height = 0.16f;
+  l.distance = 0.12f;
+  l.width = 0.2f;
+  l.height = 0.12f;
   l.color = {1.0f, 0.98f, 0.95f};
-  l.power = 0.17f;
+  l.power = 2.0f;
   return l;
 }
 
