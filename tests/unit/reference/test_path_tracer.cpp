@@ -177,6 +177,7 @@ TEST(ReferencePathTracer, ALightSeenDirectlyHasItsRadiance) {
   Params p = furnace_params();
   p.env.color = glm::vec3(0.1f);
   p.backlight.power = 3;
+  p.backlight.facing = int(LightFacing::Scene);
   p.backlight.width = 2;
   p.backlight.height = 2;
   p.camera.auto_frame = false;
