@@ -135,8 +135,8 @@ inline LightParams default_strips() {
 inline LightParams default_backlight() {
   LightParams l;
   l.facing = int(LightFacing::Away);  // lights the sweep behind the drinks; never seen itself
-  l.direction = {0.0f, 0.0f, -1.0f};
-  l.distance = 0.12f;
+  l.direction = {0.0f, 0.4f, -1.0f};  // raised: its lower edge clear of the paper, so no line
+  l.distance = 0.14f;
   l.width = 0.2f;
   l.height = 0.12f;
   l.color = {1.0f, 0.98f, 0.95f};
