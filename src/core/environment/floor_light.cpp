@@ -3,6 +3,7 @@
 #include "core/foam/head_volume.hpp"
 #include "core/math/random.hpp"
 #include "core/reference/media.hpp"
+#include "core/reference/free_flight.hpp"
 #include "core/reference/optics.hpp"
 
 #include <algorithm>
@@ -151,7 +152,7 @@ class PhotonTracer {
         power *= glm::exp(-media_[size_t(obj)].glass_absorption * t_end);
       } else if (medium == MediumKind::Liquid) {
         double t_scatter;
-        const bool through = liquid_segment(media_[size_t(obj)], t_end, power, t_scatter, rng);
+        const bool through = liquid_free_flight(media_[size_t(obj)].liquid_absorption, media_[size_t(obj)].haze, t_end, power, t_scatter, rng);
         lane.stats.absorbed += before - power;  // in expectation (the free flight's weights are not per channel)
         if (!through) {
           if (events >= kMaxEvents) {  // scattered too often: what is left is lost
@@ -235,26 +236,6 @@ class PhotonTracer {
   }
 
  private:
-  // As the path tracer's liquid_segment: spectral free flight through absorption and haze.
-  static bool liquid_segment(const Medium& m, double t_end, glm::dvec3& thr, double& t_scatter, Rng& rng) {
-    const glm::dvec3 sigma_t = m.liquid_absorption + m.haze;
-    if (max3(m.haze) <= 0) {
-      thr *= glm::exp(-sigma_t * t_end);
-      return true;
-    }
-    const int c = std::min(2, int(rng.uniform() * 3));
-    const double t = sigma_t[c] > 0 ? -std::log(1 - rng.uniform()) / sigma_t[c] : kInf;
-    if (t < t_end) {
-      const glm::dvec3 tr = glm::exp(-sigma_t * t);
-      thr *= tr * m.haze / mean3(sigma_t * tr);
-      t_scatter = t;
-      return false;
-    }
-    const glm::dvec3 tr = glm::exp(-sigma_t * t_end);
-    thr *= tr / mean3(tr);
-    return true;
-  }
-
   // The heads' transmittance along the air stretch [0, t_end] (ratio tracking: unbiased).
   double head_transmittance(const Ray& ray, double t_end, Rng& rng) const {
     double T = 1;
@@ -265,13 +246,8 @@ class PhotonTracer {
       const glm::dvec3 o = m.local_point(ray.o), d = m.to_local * ray.d;
       double t0 = 0, t1 = t_end;
       if (!head.interval(o, d, t0, t1)) continue;
-      const double M = head.majorant();
-      for (double t = t0;;) {
-        t -= std::log(1 - rng.uniform()) / M;
-        if (t >= t1) break;
-        T *= 1 - std::min(head.density(o + t * d), M) / M;
-        if (T <= 0) return 0;
-      }
+      T *= draught::head_transmittance(head, o, d, t0, t1, rng);
+      if (T <= 0) return 0;
     }
     return T;
   }

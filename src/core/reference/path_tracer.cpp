@@ -6,6 +6,7 @@
 #include "core/math/random.hpp"
 #include "core/output/tonemap.hpp"
 #include "core/reference/media.hpp"
+#include "core/reference/free_flight.hpp"
 #include "core/reference/optics.hpp"
 
 #include <algorithm>
@@ -145,7 +146,7 @@ class Tracer {
       } else if (medium == MediumKind::Liquid) {
         const VesselMedia& m = media_[size_t(obj)];
         double t_scatter;
-        if (!liquid_segment(m, t_end, thr, t_scatter, rng)) {
+        if (!liquid_free_flight(m.liquid_absorption, m.haze, t_end, thr, t_scatter, rng)) {
           if (++scatters > settings_.max_scatters) break;
           ray.o = ray.at(t_scatter);
           ray.d = sample_hg(ray.d, 0.0, rng);  // haze: isotropic
@@ -238,28 +239,6 @@ class Tracer {
     return true;
   }
 
-  // Through the drink for t_end: absorbed, or scattered by its haze. Spectral free-flight
-  // sampling: a channel picks the distance, the three channels' mean density weights it.
-  // False: scattered at t_scatter (thr updated either way).
-  static bool liquid_segment(const VesselMedia& m, double t_end, glm::dvec3& thr, double& t_scatter, Rng& rng) {
-    const glm::dvec3 sigma_t = m.liquid_absorption + m.haze;
-    if (max3(m.haze) <= 0) {
-      thr *= glm::exp(-sigma_t * t_end);
-      return true;
-    }
-    const int c = std::min(2, int(rng.uniform() * 3));
-    const double t = sigma_t[c] > 0 ? -std::log(1 - rng.uniform()) / sigma_t[c] : kInf;
-    if (t < t_end) {
-      const glm::dvec3 tr = glm::exp(-sigma_t * t);
-      thr *= tr * m.haze / mean3(sigma_t * tr);
-      t_scatter = t;
-      return false;
-    }
-    const glm::dvec3 tr = glm::exp(-sigma_t * t_end);
-    thr *= tr / mean3(tr);
-    return true;
-  }
-
   // The heads along the world ray over [0, t_end] in order of entry, as (t0, t1, object);
   // on the stack (a scene has at most kMaxSceneObjects), as this runs for every segment.
   struct Stretch {
@@ -339,13 +318,8 @@ class Tracer {
       const HeadVolume& head = heads_[size_t(s.obj)];
       const VesselMedia& m = media_[size_t(s.obj)];
       const glm::dvec3 o = m.local_point(ray.o), d = m.local_dir(ray.d);
-      const double M = head.majorant();
-      for (double t = s.t0;;) {
-        t -= std::log(1 - rng.uniform()) / M;
-        if (t >= s.t1) break;
-        T *= 1 - std::min(head.density(o + t * d), M) / M;
-        if (T < 1e-4) return 0;
-      }
+      T *= head_transmittance(head, o, d, s.t0, s.t1, rng);
+      if (T <= 0) return 0;
       double from = 0, t;
       glm::dvec3 n;
       while (head.hit_cap(o, d, from, dist, t, n)) {
