@@ -117,11 +117,6 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
   auto ctx = gpu::HeadlessContext::create();
   if (req.verbose) std::fprintf(stderr, "renderer: %s (%s)\n", ctx->renderer().c_str(), ctx->platform().c_str());
   gpu::Renderer renderer(req.shader_dir);
-  // A moving glass traces its floor map every frame: an animation's frames take the
-  // interactive budget (about 2 % noise, a fifth of a still's time), not a still's.
-  FloorLightSettings floor;
-  floor.photons = kFloorPhotonsInteractive;
-  renderer.set_floor_light(floor);
   SceneSimulation sim(timeline.scene_at(0, base));
   sim.settle_bubbles(4.0);  // drinks that have been standing (a pour clears them)
   std::vector<TimelineDriver> drivers = timeline_drivers(timeline, sim);  // one per object

@@ -26,8 +26,7 @@ namespace draught {
 // 1.3 s on two busy cores, its noise about 1 % of the floor's light near the glass
 // (docs/REFERENCE.md, "Shadows and caustics"); the eye does not see that on a floor.
 inline constexpr int kFloorPhotonsStill = 500000;
-// Once an interactive scene holds still, and each frame of a rendered animation: five
-// times faster, about 2 % noise.
+// Once an interactive scene holds still: five times faster, about 2 % noise.
 inline constexpr int kFloorPhotonsInteractive = 100000;
 
 struct FloorLightSettings {
