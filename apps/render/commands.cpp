@@ -236,7 +236,7 @@ int print_params(bool markdown) {
     std::string range;
     if (d.type == ParamType::Enum) {
       for (auto& c : d.choices) range += (range.empty() ? "" : "|") + c;
-    } else if (d.type != ParamType::Bool) {
+    } else if (d.type != ParamType::Bool && d.type != ParamType::File) {
       char buf[64];
       std::snprintf(buf, sizeof buf, "[%g, %g]", double(d.min), double(d.max));
       range = buf;

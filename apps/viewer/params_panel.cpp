@@ -163,6 +163,16 @@ bool widget(Row r, ParamsPanelState& s) {
       break;
     }
     case ParamType::Curve: return curve_widget(r, s);
+    case ParamType::File: {
+      // Typed or pasted, taken on Enter: a file is read (and refused if bad) once, not per key.
+      char buf[kMaxFileParamBytes + 1] = {};
+      const std::string& current = std::get<std::string>(v);
+      current.copy(buf, kMaxFileParamBytes);
+      if (ImGui::InputText(label.c_str(), buf, sizeof buf, ImGuiInputTextFlags_EnterReturnsTrue) &&
+          current != buf)
+        changed = apply(r, std::string(buf), s);
+      break;
+    }
   }
   tooltip(r);
   return changed;

@@ -208,6 +208,10 @@ ParamValue param_value_from_json(const ParamDesc& d, const json& j, const std::s
       v = c;
       break;
     }
+    case ParamType::File:
+      if (!j.is_string()) return fail();
+      v = j.get<std::string>();
+      break;
   }
   try {
     validate_value(d, v);

@@ -1,7 +1,7 @@
 // The row builder of the parameter table: a row names its field by member pointers
 // (`&VesselParams::glass, &GlassParams::ior`), so the path, the type and the field cannot
 // drift apart. A row whose ParamType does not match the field's C++ type (Float: float,
-// Int and Enum: int, Bool: bool, Vec3 and Color: glm::vec3, Curve: Curve), or whose
+// Int and Enum: int, Bool: bool, Vec3 and Color: glm::vec3, Curve: Curve, File: std::string), or whose
 // field does not belong to its group, does not compile (ParamRowMatches). The scope
 // comes from the struct that holds the group: VesselParams rows are per object,
 // SceneParams rows belong to the scene. The default is read from a default-constructed
@@ -25,6 +25,7 @@ template <> struct ParamCppType<ParamType::Vec3> { using type = glm::vec3; };
 template <> struct ParamCppType<ParamType::Color> { using type = glm::vec3; };
 template <> struct ParamCppType<ParamType::Enum> { using type = int; };  // the index into `choices`
 template <> struct ParamCppType<ParamType::Curve> { using type = Curve; };
+template <> struct ParamCppType<ParamType::File> { using type = std::string; };
 template <ParamType T> using param_cpp_t = typename ParamCppType<T>::type;
 
 // The class a member pointer belongs to and the member's type.

@@ -1,5 +1,7 @@
 #include "core/params/params.hpp"
 
+#include "core/environment/environment_files.hpp"
+#include "core/io/files.hpp"
 #include "core/params/param_row.hpp"
 #include "core/text/echo.hpp"
 
@@ -17,6 +19,12 @@ namespace {
 #define ROW DRAUGHT_PARAM_ROW
 
 std::vector<ParamDesc> make_object_and_env_rows();
+
+// A File row that reads what it names before taking it (ParamDesc::check_file).
+ParamDesc with_file_check(ParamDesc d, void (*check)(const std::string&)) {
+  d.check_file = check;
+  return d;
+}
 std::vector<ParamDesc> make_camera_and_render_rows();
 
 // The rows of one area light's group (light, strips, backlight): the same fields.
@@ -118,8 +126,19 @@ std::vector<ParamDesc> make_object_and_env_rows() {
       ROW(VesselParams, bubbles, seed, Int, 0.0f, 1000000.0f, "", "Seed of the nucleation sites and bubble jitter"),
       // environment
       ROW(SceneParams, env, mode, Enum, 0, 0, "",
-          "studio: a gradient sky (with strips and a glow painted in where env.strip_intensity, env.backdrop_glow); constant: env.color everywhere",
-          (std::vector<std::string>{"studio", "constant"})),
+          "studio: a gradient sky (with strips and a glow painted in where env.strip_intensity, env.backdrop_glow) "
+          "and the rig's lights; constant: env.color everywhere; image: the equirectangular HDR environment env.image, "
+          "whose light replaces the rig's",
+          (std::vector<std::string>{"studio", "constant", "image"})),
+      with_file_check(ROW(SceneParams, env, image, File, 0, 0, "",
+                          "An HDR environment, for env.mode image: a Radiance .hdr or OpenEXR .exr file "
+                          "(equirectangular, 2:1), or the name of a shipped one (studio, bar)"),
+                      &check_environment_image),
+      ROW(SceneParams, env, rotation, Float, -180.0f, 180.0f, "deg",
+          "Turns env.image about the vertical axis (positive: counter-clockwise seen from above)"),
+      ROW(SceneParams, env, intensity, Float, 0.0f, 100.0f, "", "Multiplies env.image's radiance"),
+      ROW(SceneParams, env, blur, Float, 0.0f, 45.0f, "deg",
+          "Blurs env.image as seen directly and in sharp reflections (the angle of the blur)"),
       ROW(SceneParams, env, color, Color, 0.0f, 100.0f, "", "Radiance of the constant environment"),
       ROW(SceneParams, env, sky_top, Color, 0.0f, 100.0f, "", "Studio sky colour at the zenith"),
       ROW(SceneParams, env, sky_horizon, Color, 0.0f, 100.0f, "", "Studio sky colour at the horizon"),
@@ -252,6 +271,7 @@ std::string_view type_name(ParamType t) {
     case ParamType::Color: return "color";
     case ParamType::Enum: return "enum";
     case ParamType::Curve: return "curve";
+    case ParamType::File: return "file";
   }
   return "?";
 }
@@ -283,6 +303,9 @@ std::string expected_text(const ParamDesc& d) {
     case ParamType::Curve:
       return "2 to 32 points [r, y] with r in [" + fmt(d.min) + ", " + fmt(d.max) +
              "], y starting at 0 and strictly increasing up to at most " + fmt(d.max) + " (a glass at least 0.02 m tall)";
+    case ParamType::File:
+      return "a file's path or a shipped name, at most " + std::to_string(kMaxFileParamBytes) +
+             " bytes with no control characters";
   }
   return "?";
 }
@@ -323,6 +346,21 @@ void validate_value(const ParamDesc& d, const ParamValue& v) {
         if (i > 0 && !(c[i].y > c[i - 1].y)) fail();
       }
       if (c.back().y < 0.02f) throw ParamError(d.path, "a glass at least 0.02 m tall");
+      break;
+    }
+    case ParamType::File: {
+      if (!std::holds_alternative<std::string>(v)) fail();
+      const std::string& f = std::get<std::string>(v);
+      if (f.size() > kMaxFileParamBytes) fail();
+      for (unsigned char c : f)
+        if (c < 0x20 || c == 0x7f) fail();
+      if (d.check_file) {
+        try {
+          d.check_file(f);
+        } catch (const InputError& e) {
+          throw ParamError(d.path, std::string("a file that can be used: ") + e.what());
+        }
+      }
       break;
     }
   }
@@ -415,10 +453,12 @@ ParamValue parse_param_text(const ParamDesc& d, std::string_view text) {
       v = c;
       break;
     }
+    case ParamType::File: v = std::string(trim(text)); break;
   }
   try {
     validate_value(d, v);
   } catch (const ParamError&) {
+    if (d.type == ParamType::File) throw;  // it says what is wrong with the file
     return fail();
   }
   return v;
@@ -440,6 +480,7 @@ std::string format_param(const ParamDesc& d, const ParamValue& v) {
       for (auto& q : std::get<Curve>(v)) s += (s.empty() ? "" : ";") + fmt(q.x) + "," + fmt(q.y);
       return s;
     }
+    case ParamType::File: return std::get<std::string>(v);
   }
   return "";
 }

@@ -70,7 +70,7 @@ struct BubbleParams {
   int seed = 1;
 };
 
-enum class EnvMode { Studio = 0, Constant = 1 };
+enum class EnvMode { Studio = 0, Constant = 1, Image = 2 };
 enum class Backdrop { Sweep = 0, Checker = 1 };
 enum class LightShape { Rect = 0, Sphere = 1 };
 // Which way a rect light emits: at the scene, or away from it (a background light behind
@@ -82,6 +82,10 @@ enum class Tonemap { None = 0, Aces = 1 };
 struct EnvParams {
   int mode = int(EnvMode::Studio);  // EnvMode
   glm::vec3 color{0.8f};            // constant mode radiance
+  std::string image = "studio";     // image mode: a file, or a shipped environment's name
+  float rotation = 0.0f;            // degrees about +y
+  float intensity = 1.0f;
+  float blur = 0.0f;                // degrees
   // The studio's sky is dim: the rig's lights light the picture, the sky only fills.
   glm::vec3 sky_top{0.02f, 0.021f, 0.023f};
   glm::vec3 sky_horizon{0.03f, 0.03f, 0.03f};
@@ -191,10 +195,14 @@ struct Params : VesselParams, SceneParams {};
 // Which struct a parameter lives in: the scene's, or each vessel object's.
 enum class ParamScope { Scene, Vessel };
 
-enum class ParamType { Float, Int, Bool, Vec3, Color, Enum, Curve };
+// File: a file's path or the name of a shipped asset, "" for none; what it names is read
+// (and refused with a clear error) where it is used, not by the table.
+enum class ParamType { Float, Int, Bool, Vec3, Color, Enum, Curve, File };
+inline constexpr size_t kMaxFileParamBytes = 1024;
 std::string_view type_name(ParamType);
 
-// Enums are held as their index in the struct and as their name in JSON/CLI.
+// Enums are held as their index in the struct and as their name in JSON/CLI; files as
+// their text.
 using ParamValue = std::variant<float, int, bool, glm::vec3, std::string, Curve>;
 
 struct ParamDesc;
@@ -219,6 +227,9 @@ struct ParamDesc {
   ParamScope scope = ParamScope::Scene;  // whose struct holds it: the scene's or each vessel's
   ParamAccess<VesselParams> vessel;      // set for ParamScope::Vessel rows
   ParamAccess<SceneParams> scene;        // set for ParamScope::Scene rows
+  // File rows: reads what a value names and throws InputError when it cannot be used, so a
+  // bad file is refused like an out-of-range number (validate_value calls it).
+  void (*check_file)(const std::string&) = nullptr;
 };
 
 // An error in a parameter value. `field` is the parameter path, `expected` says what

@@ -60,6 +60,7 @@ ParamValue other_value(const ParamDesc& d) {
         if (c != std::get<std::string>(d.def)) return c;
       return std::string();
     case ParamType::Curve: return Curve{{0.02f, 0.0f}, {0.025f, 0.03f}, {0.03f, 0.09f}};
+    case ParamType::File: return std::string(std::get<std::string>(d.def) == "bar" ? "studio" : "bar");  // shipped
   }
   return 0.0f;
 }
@@ -74,6 +75,7 @@ ParamValue wrong_type(const ParamDesc& d) {
     case ParamType::Color: return 0.5f;
     case ParamType::Enum: return 0;
     case ParamType::Curve: return glm::vec3(0.03f, 0.0f, 0.1f);
+    case ParamType::File: return 1.0f;
   }
   return 0.0f;
 }
@@ -114,6 +116,9 @@ std::vector<ParamValue> out_of_range(const ParamDesc& d) {
           Curve{{0.03f, 0.0f}, {0.04f, inf}},                    // infinite
           Curve(40, glm::vec2(0.03f, 0.0f)),                     // too many points (and flat)
       };
+    case ParamType::File:
+      return {std::string("a\nb.png"), std::string("tab\there"), std::string(1, '\0'),
+              std::string(kMaxFileParamBytes + 1, 'x')};
   }
   return {};
 }
@@ -130,7 +135,9 @@ TEST(ParamTable, PathsAreUniqueAndGrouped) {
     EXPECT_FALSE(d.doc.empty()) << d.path << " is undocumented";
     EXPECT_EQ(find_param(d.path), &d);
     if (d.type == ParamType::Enum) { EXPECT_GE(d.choices.size(), 2u) << d.path; }
-    if (d.type != ParamType::Bool && d.type != ParamType::Enum) { EXPECT_LT(d.min, d.max) << d.path; }
+    if (d.type != ParamType::Bool && d.type != ParamType::Enum && d.type != ParamType::File) {
+      EXPECT_LT(d.min, d.max) << d.path;
+    }
   }
   EXPECT_GE(seen.size(), 30u);
   EXPECT_EQ(find_param("liquid.nonexistent"), nullptr);
@@ -219,7 +226,8 @@ TEST(ParamTable, EveryDefaultIsWithinItsRange) {
       case ParamType::Curve:
         for (const glm::vec2& q : std::get<Curve>(d.def)) EXPECT_TRUE(in(q.x) && q.y >= 0 && q.y <= d.max) << d.path;
         break;
-      case ParamType::Bool: break;
+      case ParamType::Bool:
+      case ParamType::File: break;
     }
     EXPECT_NO_THROW(validate_value(d, d.def)) << d.path;
   }
