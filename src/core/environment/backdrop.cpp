@@ -51,7 +51,9 @@ BackdropSurface backdrop_surface(const EnvParams& e, const glm::dvec3& aim) {
   BackdropSurface b;
   b.present = e.floor;
   b.kind = Backdrop(e.backdrop);
-  b.z_curve = aim.z - double(e.sweep_distance);
+  // Under an environment image the sweep is only its floor, out to the image's horizon
+  // (which its wall would hide): a table the glasses stand on.
+  b.z_curve = aim.z - (e.mode == int(EnvMode::Image) ? kImageFloorDistance : double(e.sweep_distance));
   b.radius = e.sweep_radius;
   b.sweep_albedo = glm::dvec3(e.sweep_color);
   b.checker_size = e.checker_size;

@@ -30,6 +30,10 @@ struct BackdropSurface {
   glm::dvec3 albedo(const glm::dvec3& p) const;
 };
 
+// How far the sweep's floor reaches behind the scene under an environment image (env.mode
+// image): far enough to fade into the image before it would curve up.
+inline constexpr double kImageFloorDistance = 1000.0;
+
 BackdropSurface backdrop_surface(const EnvParams&, const glm::dvec3& aim);
 
 }  // namespace draught

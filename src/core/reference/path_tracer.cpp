@@ -193,8 +193,14 @@ class Tracer {
       }
       const glm::dvec3 p = ray.at(h.t);
       if (h.m == Material::Floor) {  // the backdrop: Lambertian
-        // The checker floor fades into the studio with distance (as the picture's).
-        if (geo_.backdrop.kind == Backdrop::Checker && rng.uniform() >= Studio::floor_visibility(glm::length(p - eye))) {
+        // The checker floor fades into the studio with distance (as the picture's); under an
+        // environment image the floor fades into the image: the path goes on through it.
+        if ((geo_.backdrop.kind == Backdrop::Checker || studio_.image) &&
+            rng.uniform() >= Studio::floor_visibility(glm::length(p - eye))) {
+          if (studio_.image) {
+            L += thr * studio_.sky(ray.d);
+            break;
+          }
           L += thr * glm::dvec3(studio_.env.ground);
           break;
         }
