@@ -41,7 +41,7 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
     b.light_radiance[i] = {glm::vec3(l.radiance), 0.0f};
   }
   for (int i = 0; i < 9; ++i) b.sky_sh[i] = {glm::vec3(f.environment.sky.coef[size_t(i)]), 0.0f};
-  b.backdrop_kind = int(f.backdrop.kind);
+  b.backdrop_kind = f.backdrop.kind == Backdrop::Checker ? 1 : f.backdrop.plane ? 2 : 0;
   b.sweep_z_curve = float(f.backdrop.z_curve);
   b.sweep_radius = float(f.backdrop.radius);
   b.sweep_albedo = glm::vec3(f.backdrop.sweep_albedo);
