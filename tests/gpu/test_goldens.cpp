@@ -146,8 +146,8 @@ INSTANTIATE_TEST_SUITE_P(
                     {"eye=0,0.26,0.2", "target=0,0.2,0", "vfov=18"}}, 160, 160, 3, 0.002, 64},
         GoldenCase{"decal_pint_etched_cut",
                    {"lager", "pint", {"decal_outer.file=wordmark", "decal_outer.kind=etched", "decal_outer.width=0.07",
-                                      "decal_outer.height=0.075", "decal_outer.angle=20", "clip.enabled=true",
-                                      "clip.normal=1,0,1"}, {}}, 160, 160, 3, 0.002, 64}),
+                                      "decal_outer.height=0.075", "decal_outer.angle=-25", "clip.enabled=true",
+                                      "clip.normal=1,0,0.4"}, {}}, 160, 160, 3, 0.002, 64}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

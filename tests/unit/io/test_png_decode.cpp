@@ -63,6 +63,26 @@ TEST(PngDecode, DecodesWhatWasWritten) {
   EXPECT_EQ(out.rgba, img.rgba);
 }
 
+TEST(PngDecode, DecodesEveryColourTypeAndDepth) {
+  // The fuzzer's seeds: grey 1 and 8 bits, grey and alpha at 16 bits, a palette with
+  // transparency, interlaced RGB and RGBA, each as RGBA.
+  const auto dir = test::preset_source_dir().parent_path() / "fuzz" / "seeds" / "decal_image";
+  const Image pal = decode_png(read_whole_file(dir / "palette-trns-4x4.png", kMaxPngFileBytes, "a PNG"), "p.png");
+  ASSERT_EQ(pal.width, 4);
+  EXPECT_EQ(std::vector<std::uint8_t>(pal.px(1, 0), pal.px(1, 0) + 4), (std::vector<std::uint8_t>{0, 255, 0, 128}));
+  const Image grey16 = decode_png(read_whole_file(dir / "grey-alpha-16-3x3.png", kMaxPngFileBytes, "a PNG"), "g.png");
+  EXPECT_EQ(grey16.px(2, 0)[0], 40000 >> 8);  // stb keeps the high byte
+  EXPECT_EQ(grey16.px(0, 2)[3], (65535 - 40000) >> 8);
+  const Image bits = decode_png(read_whole_file(dir / "grey-1bit-9x2.png", kMaxPngFileBytes, "a PNG"), "b.png");
+  EXPECT_EQ(bits.px(0, 0)[0], 255);
+  EXPECT_EQ(bits.px(1, 0)[0], 0);
+  EXPECT_EQ(bits.px(8, 0)[0], 255);
+  const Image dot = decode_png(read_whole_file(dir / "rgb-interlaced-1x1.png", kMaxPngFileBytes, "a PNG"), "i.png");
+  EXPECT_EQ(std::vector<std::uint8_t>(dot.rgba.begin(), dot.rgba.end()), (std::vector<std::uint8_t>{10, 200, 30, 255}));
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    EXPECT_NO_THROW(decode_png(read_whole_file(e.path(), kMaxPngFileBytes, "a PNG"), e.path().string())) << e.path();
+}
+
 TEST(PngDecode, RefusesWhatIsNotAPng) {
   EXPECT_TRUE(test::has(error_of(""), {"logo.png", "expected a PNG image", "an empty file"}));
   EXPECT_TRUE(test::has(error_of("hello, world"), {"logo.png", "expected a PNG image", "not an image"}));
