@@ -13,6 +13,7 @@
 #include "lib/environment/studio.glsl"
 #include "lib/environment/lights.glsl"
 #include "lib/environment/floor.glsl"
+#include "lib/vessel/media.glsl"
 
 // Of the light a frosted decal scatters, the part sent back to the side it came from; the
 // rest goes through. Twin of kFrostBackscatter (core/reference/path_tracer.cpp).
@@ -73,6 +74,22 @@ DecalSample decal_at(Vessel v, int m, vec3 p, float footprint) {
   return s;
 }
 
+// The mean radiance of the surroundings over the hemisphere around unit m, cosine
+// weighted: what a frosted face scatters through from that side. Seven directions, each
+// standing for a seventh of the cosine-weighted hemisphere (m itself and a ring at 50
+// degrees): the dark sky above and beside a glass counts as the reference's frost sees it,
+// not only the lit backdrop straight behind.
+vec3 frost_behind(vec3 p, vec3 m) {
+  vec3 t = normalize(abs(m.y) < 0.9 ? cross(m, vec3(0.0, 1.0, 0.0)) : cross(m, vec3(1.0, 0.0, 0.0)));
+  vec3 b = cross(m, t);
+  vec3 sum = background(p, m, 1.0);
+  for (int i = 0; i < 6; ++i) {
+    float a = float(i) * (PI / 3.0);
+    sum += background(p, normalize(0.643 * m + 0.766 * (cos(a) * t + sin(a) * b)), 1.0);
+  }
+  return sum / 7.0;
+}
+
 // What a decal does to a path that meets it: the light it sends along the path (enamel
 // and frost), the part it mirrors (metal: added to the surface's reflection) and the part
 // of the path that goes on past it.
@@ -110,7 +127,13 @@ DecalEffect decal_effect(Vessel v, Hit h, int medium, vec3 p, vec3 pl, vec3 d, b
     e.light = s.cover * s.tint * lit;
     return e;
   }
-  vec3 behind = background(p, d, 1.0) * (below && !faces_drink ? drink : vec3(1.0));
+  // Into glass or a drink the frost scatters light from behind only through the escape
+  // cone of that medium's surfaces, (1 / n)^2 of it; the rest is guided round the glass
+  // and leaves anywhere: it sees the surroundings' mean over the sphere (what a rising
+  // bubble mirrors, core/environment/reflection).
+  float n_far = medium_ior(v, glass_of(v.row), medium_across(h.m, medium, below));
+  float escape = 1.0 / (n_far * n_far);
+  vec3 behind = (escape * frost_behind(p, -n) + (1.0 - escape) * frame.bubble_env) * (below && !faces_drink ? drink : vec3(1.0));
   e.light = s.cover * s.tint * (FROST_BACKSCATTER * lit + (1.0 - FROST_BACKSCATTER) * behind);
   return e;
 }
