@@ -12,6 +12,8 @@ set(DRAUGHT_CORE_SOURCES
   src/core/vessel/profile.cpp
   src/core/vessel/vessel.cpp
   src/core/vessel/fill_table.cpp
+  src/core/vessel/decal.cpp
+  src/core/vessel/decal_files.cpp
   src/core/liquid/beverage.cpp
   src/core/liquid/slosh.cpp
   src/core/foam/foam.cpp

@@ -291,8 +291,12 @@ function(draught_generate_interface def out_dir)
       list(GET tok 1 cname)
       list(GET tok 2 sname)
       list(GET tok 3 unit)
+      set(stype sampler2D)  # or the GLSL type named after the unit (sampler2DArray)
+      if(ntok GREATER 4)
+        list(GET tok 4 stype)
+      endif()
       string(APPEND hpp_body "\n// ${doc}\ninline constexpr Sampler k${cname}Sampler{\"${sname}\", ${unit}};\n")
-      string(APPEND glsl "\n// ${doc}\nuniform highp sampler2D ${sname};\n")
+      string(APPEND glsl "\n// ${doc}\nuniform highp ${stype} ${sname};\n")
 
     elseif(mode STREQUAL "block")
       # type name unit | doc, or vec4 name[COUNT] unit | doc

@@ -30,10 +30,11 @@ declare -A seeds=(
   [preset]="presets/glasses presets/drinks presets/scenes"
   [timeline]="presets/timelines"
   [hdr_image]="fuzz/seeds/hdr_image fuzz/regressions/hdr_image"
+  [decal_image]="fuzz/seeds/decal_image"
 )
-declare -A dicts=([preset]=fuzz/json.dict [timeline]=fuzz/json.dict [hdr_image]=fuzz/hdr.dict)
+declare -A dicts=([preset]=fuzz/json.dict [timeline]=fuzz/json.dict [hdr_image]=fuzz/hdr.dict [decal_image]=fuzz/png.dict)
 status=0
-for target in preset timeline hdr_image; do
+for target in preset timeline hdr_image decal_image; do
   corpus="build-fuzz/corpus/$target"
   mkdir -p "$corpus" build-fuzz/findings
   log="build-fuzz/fuzz_$target.log"

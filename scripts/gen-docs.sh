@@ -24,8 +24,8 @@ out=${2:-docs/PRESETS.md}
   echo "a profile curve is \`r,y;r,y;...\` on the command line and \`[[r, y], ...]\` in JSON."
   echo
   echo "The *scope* says whose parameter it is. A *scene* parameter (env, light, strips, backlight, camera, render)"
-  echo "belongs to the whole scene. A *per object* parameter (glass, liquid, foam, bubbles, clip)"
-  echo "belongs to each glass: in a scene preset with \`objects\` it goes into an object's own \`params\`."
+  echo "belongs to the whole scene. A *per object* parameter"
+  echo "belongs to each glass (glass, liquid, foam, bubbles, clip, decal_outer, decal_inner): in a scene preset with \`objects\` it goes into an object's own \`params\`."
   echo "On the command line and in a timeline's \`set\` action, \`objects[N].\` in front of the path"
   echo "sets it on object N alone (counted from 0 in the order of the scene's \`objects\`), e.g."
   echo "\`--set 'objects[2].liquid.fill=0.5'\` (quoted in a shell); the path without the prefix sets it"

@@ -128,6 +128,9 @@ double median_ms(gpu::Renderer& renderer, const FrameState& f, int w, int h, int
 int bench(int frames, const std::vector<int>& sizes, const std::vector<std::string>& only, bool verbose) {
   const std::vector<BenchScene> scenes = {
       {"pint-lager", {"lager", "pint", {}, {}}},
+      // The same with two decals (docs/DECALS.md): the enamel wordmark on the front, the crest inside at the back.
+      {"pint-lager-decals", {"lager", "pint", {"decal_outer.file=wordmark", "decal_outer.width=0.07", "decal_outer.color=0.75,0.06,0.05",
+                                               "decal_inner.file=crest", "decal_inner.width=0.04", "decal_inner.angle=180"}, {}}},
       {"nonic-stout", {"stout", "nonic", {}, {}}},
       {"wine-red", {"red-wine", "wine", {}, {}}},
       {"tulip-amber-floorless", {"amber-ale", "tulip", {"env.floor=false"}, {}}},

@@ -219,7 +219,7 @@ bool params_panel(Scene& s, ParamsPanelState& state) {
   }
   if (s.objects.empty()) return false;
   object_combo(s);
-  // The selected object's groups (glass, liquid, foam, bubbles, clip), then the scene's
+  // The selected object's groups (glass, liquid, foam, bubbles, clip, decals), then the scene's
   // (env, light, camera, render); ids differ by path, so both sets can be open at once.
   ImGui::TextDisabled("%s", s.objects.size() > 1 ? "the selected glass and its drink" : "the glass and its drink");
   bool changed = groups(s, ParamScope::Vessel, state);

@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -426,7 +427,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_set_param(const char* path, const char*
     try {
       value = parse_param_text(*ref.desc, text);
     } catch (const ParamError& e) {  // its message repeats the whole text; this one a short part
-      // (A file's says what is wrong with the file.)
+      // (A file says what is wrong with it: missing, not an image, ...)
       return answer(set_error(path, ref.desc->type == ParamType::File ? e.expected : expected_text(*ref.desc), text));
     }
     Scene s = app->scene;
@@ -437,6 +438,39 @@ EMSCRIPTEN_KEEPALIVE const char* draught_set_param(const char* path, const char*
     return answer(set_error(path, e.expected, text));
   } catch (const std::exception& e) {
     return answer(shorten(path) + ": " + e.what());
+  }
+}
+
+// A decal image the page was given (`size` bytes at `data`, the file named `name`): written
+// into the page's file system as /decals/N/NAME (a folder per upload: a new file never
+// replaces one a glass uses) and set as the selected glass's outer (layer 0) or inner
+// (layer 1) decal. "" or the error; a file the loader refuses (not a PNG, too large,
+// damaged) is removed again and the glass keeps its decal.
+EMSCRIPTEN_KEEPALIVE const char* draught_load_decal(const char* name, const char* data, int size, int layer) {
+  if (!app) return answer("not started");
+  if (size < 0 || !data || (layer != 0 && layer != 1)) return answer("draught_load_decal: bad arguments");
+  static int uploads = 0;
+  std::string safe;
+  for (const char* c = name; *c && safe.size() < 100; ++c)
+    safe += std::isalnum(static_cast<unsigned char>(*c)) || *c == '-' || *c == '_' || (*c == '.' && !safe.empty()) ? *c : '_';
+  if (safe.empty()) safe = "decal.png";
+  const std::filesystem::path dir = "/decals/" + std::to_string(++uploads), file = dir / safe;
+  const ParamDesc* d = find_param(layer == 0 ? "decal_outer.file" : "decal_inner.file");
+  try {
+    std::filesystem::create_directories(dir);
+    write_file_atomic(file, std::string(data, size_t(size)));
+    Scene s = app->scene;
+    set_param(s, ParamRef{s.selected, d}, ParamValue(file.string()));
+    use_scene(s, Refill::none);
+    return answer("");
+  } catch (const ParamError& e) {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+    return answer("field '" + d->path + "' of the selected glass: expected " + e.expected);
+  } catch (const std::exception& e) {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+    return answer(shorten(name, kEchoBytes) + ": " + e.what());
   }
 }
 

@@ -56,6 +56,7 @@
   // An environment image: a 4k x 2k Radiance file is about 20-30 MiB; its chain of levels
   // as floats takes about 1.4 x 12 bytes per texel of the heap.
   const kMaxEnvironmentBytes = 64 * 1024 * 1024;
+  const kMaxDecalBytes = 80 * 1024 * 1024;  // kMaxPngFileBytes (core/io/image.hpp)
   const kMaxValueBytes = 4096;
   const encoder = new TextEncoder();
   // (Text longer than the file limit in characters is over it in bytes too: no need to encode it.)
@@ -137,6 +138,7 @@
       load: fn('draught_load_preset', 'json', ['string', 'string']),
       loadEnvironment: fn('draught_load_environment', 'json', ['string', 'bytes', 'number']),
       exportPreset: fn('draught_export_preset', 'json', ['string']),
+      loadDecal: fn('draught_load_decal', 'string', ['string', 'number', 'number', 'number']),
       pour: fn('draught_pour', null),
       setInput: fn('draught_set_input', 'string', ['string']),
       mouse: fn('draught_mouse', null, ['number', 'number', 'number', 'number', 'number', 'number', 'number']),
@@ -565,6 +567,36 @@
       }
       refreshValues();
       say(`environment ${name}`);
+      return '';
+    };
+    // A decal image: its bytes into the module's heap, written there into the page's file
+    // system and set on the selected glass (the loader refuses a bad one; nothing changes).
+    $('decal').addEventListener('change', async (e) => {
+      const file = e.target.files[0];
+      e.target.value = '';
+      if (!file) return;
+      if (file.size > kMaxDecalBytes) return say(`${file.name}: ${mib(file.size)}, larger than the limit of 80 MiB for a decal image; nothing was loaded`, true);
+      page.loadDecal(new Uint8Array(await file.arrayBuffer()), file.name, +$('decal-layer').value);
+    });
+    page.loadDecal = (bytes, name, layer = 0) => {
+      name = String(name).slice(0, 255);
+      const at = M._malloc(Math.max(1, bytes.length));
+      if (!at) return say(`${name}: out of memory for ${bytes.length} bytes`, true);
+      let err;
+      try {
+        M.HEAPU8.set(bytes, at);
+        err = api.loadDecal(name, at, bytes.length, layer);
+      } finally {
+        M._free(at);
+      }
+      if (err) {
+        say(err, true);
+        return err;
+      }
+      refreshValues();
+      const layerName = layer === 1 ? 'decal_inner' : 'decal_outer';
+      for (const d of document.querySelectorAll(`details[data-group="${layerName}"]`)) d.open = true;
+      say(`${name} is the ${layer === 1 ? 'inner' : 'outer'} decal of ${objects.length > 1 ? objects[selected].name : 'the glass'}; place it with ${layerName}.angle, .height and .width`);
       return '';
     };
     $('export').addEventListener('click', () => {

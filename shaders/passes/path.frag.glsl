@@ -22,6 +22,12 @@
 #include "lib/environment/backdrop.glsl"
 #include "lib/environment/floor.glsl"
 #include "lib/output/tonemap.glsl"
+#ifndef DECALS
+#define DECALS 0
+#endif
+#if DECALS
+#include "lib/vessel/decal.glsl"
+#endif
 
 out vec4 frag_color;
 
@@ -108,6 +114,18 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
   } else {
     vec3 pl = to_local_point(v, p);
     bool below = below_liquid(v, pl);
+#if DECALS
+    // A decal on the wall (lib/vessel/decal.glsl): from inside the glass or the drink its
+    // ink, frost or metal meets the path first (no total internal reflection off it); from
+    // the air it lies under the surface's gloss (after the reflection, below).
+    DecalEffect decal = decal_effect(v, h, path.medium, p, pl, path.d, below);
+    vec3 decal_mirror = vec3(0.0);
+    if (path.medium != MEDIUM_AIR) {
+      path.radiance += path.thr * decal.light;
+      decal_mirror = path.thr * decal.mirror;
+      path.thr *= decal.pass;
+    }
+#endif
 #if FOAM_HEAD
     if (h.m == M_GLASS_INNER && !below) {  // lacing on the wall
       ObjectFoam f = fetch_object_foam(v.row);
@@ -119,10 +137,21 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
     }
 #endif
     c = crossing_at(path, h, v, g, below);
+#if DECALS
+    if (path.medium == MEDIUM_AIR) decal_mirror = path.thr * (1.0 - c.F) * decal.mirror;
+    if (c.F >= 1.0) path.thr += decal_mirror;  // total internal reflection goes where the metal sends it
+#endif
     // The lights are seen in the reflection (blurred by the surface's roughness) or
     // through the refraction, along the ray from its point: no highlight on top.
     float rough = h.m == M_LIQUID_SURFACE || h.m == M_CLIP_LIQUID ? v.liquid.roughness : g.glass_roughness;
+#if DECALS
+    rough = mix(rough, decal.rough, decal.metal);  // a satin metal shows the lights broader
+#endif
     if (c.F < 1.0) {
+      vec3 mirrored = path.thr * c.F;  // what the reflection carries
+#if DECALS
+      mirrored += decal_mirror;
+#endif
       // The reflection sees the surroundings: a light, the backdrop or the sky from the
       // air; the lights and the sky from inside a glass.
       if (frame.transparent == 0 || path.medium != MEDIUM_AIR) {
@@ -132,24 +161,30 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
           vec3 nb;
           bool on_backdrop = intersect(backdrop_surface(), p, r, 0.0, tb, nb);
           vec4 light = lights_seen(p, r, rough, tb, tl);
-          path.radiance += path.thr * c.F * light.a * light.rgb;
+          path.radiance += mirrored * light.a * light.rgb;
           if (on_backdrop) {  // shaded once, below
             floor_at = p + tb * r;
             floor_n = nb;
             floor_d = r;
             floor_dist = tb;
-            floor_weight = path.thr * c.F * (1.0 - light.a);
+            floor_weight = mirrored * (1.0 - light.a);
           } else {
-            path.radiance += path.thr * c.F * (1.0 - light.a) * sky_seen(r, rough);
+            path.radiance += mirrored * (1.0 - light.a) * sky_seen(r, rough);
           }
         } else {
           // Inside a glass or drink the reflection is absorbed on its way out.
           vec3 out_dir;
           vec3 tr = reflected_light(v, g, h.m, path.medium, below, pl, to_local_dir(v, r), to_local_dir(v, c.n), out_dir);
-          path.radiance += path.thr * c.F * tr * lights_and_sky(p, to_world_dir(v, out_dir), rough);
+          path.radiance += mirrored * tr * lights_and_sky(p, to_world_dir(v, out_dir), rough);
         }
       }
       path.thr *= 1.0 - c.F;
+#if DECALS
+      if (path.medium == MEDIUM_AIR) {
+        path.radiance += path.thr * decal.light;
+        path.thr *= decal.pass;
+      }
+#endif
     }
   }
   if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_n, floor_d, floor_dist, on_floor);
@@ -244,6 +279,20 @@ vec4 debug_path_event(vec3 eye, vec3 dir, int n) {
   return vec4(0.0, float(M_NONE), -1.0, float(path.medium));
 }
 
+#if DECALS
+// The first surface's decal: (u, v, layer, material); layer -1 where it shows none.
+// Compared with core/reference decal_hit by tests/gpu/test_decals.
+vec4 debug_decal(vec3 eye, vec3 dir) {
+  Vessel v;
+  Hit h = nearest_surface(eye, dir, MEDIUM_AIR, -1, 0.0, v);
+  int layer = h.m == M_GLASS_INNER ? 1 : 0;
+  vec2 uv;
+  if ((h.m == M_GLASS_OUTER || h.m == M_GLASS_INNER) && decal_uv(v, layer, to_local_point(v, eye + h.t * dir), uv))
+    return vec4(uv, float(layer), float(h.m));
+  return vec4(0.0, 0.0, -1.0, float(h.m));
+}
+#endif
+
 // Pixel (x, y) evaluates the medium rule for material x, medium y mod 3 and below
 // (y >= 3): (medium beyond, 0, 0, 1). Compared with core's medium_across by tests/gpu.
 vec4 debug_medium_rule() {
@@ -308,6 +357,12 @@ void main() {
     frag_color = debug_path_event(frame.cam_eye, dir, frame.debug_event);
     return;
   }
+#if DECALS
+  if (view == VIEW_DECAL) {
+    frag_color = debug_decal(frame.cam_eye, dir);
+    return;
+  }
+#endif
 #endif
   float see_through;
   vec3 radiance = trace_path(frame.cam_eye, dir, see_through);

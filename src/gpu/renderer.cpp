@@ -1,6 +1,7 @@
 #include "gpu/renderer.hpp"
 
 #include "core/bubbles/bubble_view.hpp"
+#include "gpu/decal_textures.hpp"
 #include "gpu/program.hpp"
 #include "gpu/scene_data.hpp"
 
@@ -66,7 +67,8 @@ void bind_interface(const Program& program, const std::string& what) {
                       contract::kFrameBlockUsedBytes, sizeof(contract::FrameBlock), contract::kFrameBlockBinding, what);
   glUseProgram(program.id());
   for (const contract::Sampler& s : {contract::kObjectSampler, contract::kKnotsSampler, contract::kFloorLightSampler,
-                                       contract::kBackdropLightSampler, contract::kEnvImageSampler})
+                                       contract::kBackdropLightSampler, contract::kEnvImageSampler,
+                                       contract::kDecalImagesSampler, contract::kDecalArcsSampler})
     if (GLint at = glGetUniformLocation(program.id(), s.name); at >= 0) glUniform1i(at, s.unit);
 }
 }  // namespace
@@ -78,6 +80,7 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kFoam) frag = with_define(std::move(frag), "FOAM_HEAD");
   if (variant & kDebug) frag = with_define(std::move(frag), "DEBUG_VIEWS");
   if (variant & kImage) frag = with_define(std::move(frag), "ENV_IMAGE");
+  if (variant & kDecals) frag = with_define(std::move(frag), "DECALS");
   if (const int held = variant >> kHeldShift)
     frag = with_define(std::move(frag), "HELD_OBJECTS", std::to_string(held));
   auto program = std::make_unique<Program>(vert, frag);
@@ -89,6 +92,7 @@ Renderer::Renderer(const std::filesystem::path& shader_dir) : shader_dir_(shader
   if (const char* env = std::getenv("DRAUGHT_SHADER_DIR"); shader_dir_.empty() && env && *env) shader_dir_ = env;
   programs_[0] = build_program(0);  // compiles now, so a broken shader is reported at once
   textures_ = std::make_unique<SceneTextures>();
+  decals_ = std::make_unique<DecalTextures>();
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &ubo_);
   glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
@@ -108,7 +112,9 @@ void Renderer::set_floor_light(const FloorLightSettings& s, bool on, int draft_p
 
 void Renderer::draw(const FrameState& f, int width, int height, DebugView debug, int event) {
   textures_->update(f);  // only rows that changed; the floor's light when its inputs did
-  textures_->bind();
+  const bool decals = decals_->update(f);  // the images when they change, arc rows when a glass does
+  textures_->bind();  // (after the updates, which bind what they upload to the active unit)
+  if (decals) decals_->bind();
   contract::FrameBlock block = pack_frame_block(f, width, height, debug, event);
   textures_->describe_floor_light(block);
   textures_->describe_backdrop_light(block);
@@ -128,7 +134,7 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   const int objects = int(f.vessels.size());
   const int held = held_objects_ && objects >= 1 && objects <= kMaxHeldObjects ? objects : 0;
   const int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0) | (debug != DebugView::None ? kDebug : 0) |
-                      (f.environment.image ? kImage : 0) | (held << kHeldShift);
+                      (f.environment.image ? kImage : 0) | (decals ? kDecals : 0) | (held << kHeldShift);
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
   glUseProgram(program->id());

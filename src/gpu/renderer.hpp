@@ -16,6 +16,7 @@
 
 namespace draught::gpu {
 
+class DecalTextures;
 class Program;
 class SceneTextures;
 
@@ -69,6 +70,7 @@ class Renderer {
   void finish();
   // The scene's data textures (tests check what a frame uploads).
   const SceneTextures& scene_textures() const { return *textures_; }
+  const DecalTextures& decal_textures() const { return *decals_; }
   // Scenes of up to kMaxHeldObjects objects are drawn with a shader variant that holds
   // every object's records per pixel (object loops resolved at compile time; the same
   // pictures, much faster on llvmpipe). Four: a tasting flight; every held object costs
@@ -87,13 +89,14 @@ class Renderer {
   // What the path pass is compiled with (software rasterizers pay for code even where a
   // uniform branch skips it, so frames get only the code they use): these bits, and the
   // number of held objects (0: the general path) from bit kHeldShift on.
-  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kHeldShift = 4 };
+  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kHeldShift = 5 };
   std::unique_ptr<Program> build_program(int variant) const;
 
   std::filesystem::path shader_dir_;
   std::map<int, std::unique_ptr<Program>> programs_;  // by variant, built when first needed
   std::unique_ptr<Program> bubble_program_;  // pass 2: rising bubbles, built when first needed
   std::unique_ptr<SceneTextures> textures_;  // u_objects, u_knots, u_floor_light
+  std::unique_ptr<DecalTextures> decals_;    // u_decal_images, u_decal_arcs
   unsigned bubble_vao_ = 0, bubble_vbo_ = 0;
   unsigned vao_ = 0, ubo_ = 0;
   bool held_objects_ = true;

@@ -209,6 +209,50 @@ test('export downloads the current state as a preset that loads back', async () 
   await page.selectOption('#drink', 'lager');
 });
 
+test('a decal image from disk goes on the selected glass; a broken one changes nothing', async () => {
+  const page = await desktop();
+  await page.selectOption('#drink', 'lager');
+  // No rising bubbles (they move on their own): the decal is small on the test's canvas.
+  assert.equal(await page.evaluate(() => window.draught.setParam('bubbles.carbonation', '0')), '');
+  await waitFrames(page, 3);
+  const v0 = await values(page);
+  // Measured where the glass is, in 2 x 2 blocks.
+  const before = await snapshot(page);
+  await waitFrames(page, 3);
+  const box = { x0: Math.round(before.width * 0.3), y0: Math.round(before.height * 0.3),
+                x1: Math.round(before.width * 0.7), y1: Math.round(before.height * 0.8) };
+  const n = blockDifference(before, await snapshot(page), box, 2);
+  await page.setInputFiles('#decal', { name: 'broken.png', mimeType: 'image/png', buffer: Buffer.from('not a picture') });
+  await page.waitForFunction(() => /decal_outer/.test(document.getElementById('message').textContent));
+  let m = await message(page);
+  assert.ok(m.error, 'shown as an error');
+  assert.match(m.text, /decal_outer\.file/);
+  assert.match(m.text, /expected a PNG image/);
+  assert.deepEqual(await values(page), v0, 'nothing applied');
+  // A good one (the shipped wordmark's bytes, under another name), on the outer wall.
+  const png = fs.readFileSync(new URL('../../presets/decals/wordmark.png', import.meta.url));
+  await page.setInputFiles('#decal', { name: 'my logo.png', mimeType: 'image/png', buffer: png });
+  await page.waitForFunction(() => /outer decal/.test(document.getElementById('message').textContent));
+  m = await message(page);
+  assert.ok(!m.error, m.text);
+  const v = await values(page);
+  assert.match(v['decal_outer.file'], /^\/decals\/\d+\/my_logo\.png$/);
+  assert.equal(v['decal_inner.file'], '');
+  // Large and black, to stand out of the small test canvas.
+  assert.equal(await page.evaluate(() => window.draught.setParam('decal_outer.color', '0.02,0.02,0.02')), '');
+  assert.equal(await page.evaluate(() => window.draught.setParam('decal_outer.width', '0.08')), '');
+  await waitFrames(page, 3);
+  await page.screenshot({ path: path.join(artifacts, 'lager-with-a-decal.png') });
+  const d = blockDifference(before, await snapshot(page), box, 2);
+  note(`with the decal ${d.toFixed(2)}, noise ${n.toFixed(2)}`);
+  assert.ok(d > changed(d, n), `the decal shows: difference ${d.toFixed(2)} (noise ${n.toFixed(2)})`);
+  // The panel's text field takes a shipped name, and "" takes it off.
+  assert.equal(await page.evaluate(() => window.draught.setParam('decal_outer.file', 'crest')), '');
+  assert.equal(await page.evaluate(() => window.draught.setParam('decal_outer.file', '')), '');
+  await page.selectOption('#drink', 'stout');
+  await page.selectOption('#drink', 'lager');  // the preset's own values again
+});
+
 test('devicemotion tilts the liquid (rig picks up the gyro)', async () => {
   const page = await desktop();
   await page.selectOption('#drink', 'lager');

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace draught {
@@ -22,5 +23,18 @@ Image downsample(const Image&, int factor);
 std::string encode_png(const Image&);
 void write_png(const std::filesystem::path&, const Image&);  // atomic
 Image read_png(const std::filesystem::path&);                // throws InputError
+
+// The largest PNG a user may give (decals): 4096 pixels a side, and a file of at most
+// kMaxPngFileBytes (a 4096 x 4096 RGBA PNG that does not compress is 64 MiB).
+inline constexpr int kMaxPngSide = 4096;
+inline constexpr std::uintmax_t kMaxPngFileBytes = 80u << 20;
+
+// Decodes a whole PNG file's bytes, strictly: the signature, every chunk's length and
+// checksum, the header's size (1 .. max_side pixels a side) and format, image data and
+// the end chunk are checked before stb decodes it (stb trusts a file cut short and
+// decodes what is missing as black). Throws InputError beginning with `name` and saying
+// what was expected: not a PNG (naming what it is instead), no pixels, too large,
+// damaged or cut short. Any colour type and bit depth comes out as 8-bit RGBA.
+Image decode_png(std::string_view bytes, const std::string& name, int max_side = kMaxPngSide);
 
 }  // namespace draught

@@ -1,6 +1,7 @@
 #include "core/params/params.hpp"
 
 #include "core/environment/environment_files.hpp"
+#include "core/vessel/decal_files.hpp"
 #include "core/io/files.hpp"
 #include "core/params/param_row.hpp"
 #include "core/text/echo.hpp"
@@ -49,8 +50,44 @@ void add_light_rows(std::vector<ParamDesc>& rows, const std::string& g, const st
       "Power of " + what + ": radiant flux of a Lambertian emitter (0: off)"));
 }
 
+// The rows of one decal layer (decal_outer, decal_inner): the same fields on either wall.
+template <auto Group>
+void add_decal_rows(std::vector<ParamDesc>& rows, const std::string& g, const std::string& wall) {
+  using D = DecalParams;
+  rows.push_back(with_file_check(param_row<ParamType::File, Group, &D::file>(g + ".file", 0, 0, "",
+      "A decal on " + wall + ": a PNG with alpha (at most 4096 x 4096), or the name of a shipped decal "
+      "(presets/decals: crest, gold-band, wordmark); \"\": none"), &check_decal_image));
+  rows.push_back(param_row<ParamType::Enum, Group, &D::kind>(g + ".kind", 0, 0, "",
+      "enamel: printed paint, opaque, lit like a matte surface; etched: frosted glass that scatters the light "
+      "behind it; metallic: a metal leaf (gilding) that mirrors the studio in its colour",
+      std::vector<std::string>{"enamel", "etched", "metallic"}));
+  rows.push_back(param_row<ParamType::Float, Group, &D::angle>(g + ".angle", -180.0f, 180.0f, "deg",
+      "Where the decal's centre faces, about the glass's axis from its front (+z, the camera's side), "
+      "counter-clockwise seen from above"));
+  rows.push_back(param_row<ParamType::Float, Group, &D::height>(g + ".height", 0.0f, 0.6f, "m",
+      "Height of the decal's centre above the glass's foot"));
+  rows.push_back(param_row<ParamType::Float, Group, &D::width>(g + ".width", 0.0f, 1.0f, "m",
+      "Width of the decal around the wall (its height along the profile follows from the image's aspect); "
+      "0: each copy fills its share of the turn, so the copies join into a band"));
+  rows.push_back(param_row<ParamType::Int, Group, &D::repeat>(g + ".repeat", 1.0f, 64.0f, "",
+      "Copies of the decal spaced evenly around the glass"));
+  rows.push_back(param_row<ParamType::Color, Group, &D::color>(g + ".color", 0.0f, 1.0f, "",
+      "Multiplies the image's colour: the paint's colour, the frost's tint, or the metal's reflectance (gold: 1, 0.77, 0.34)"));
+  rows.push_back(param_row<ParamType::Float, Group, &D::opacity>(g + ".opacity", 0.0f, 1.0f, "",
+      "Multiplies the image's alpha (0: the decal is not there)"));
+  rows.push_back(param_row<ParamType::Float, Group, &D::roughness>(g + ".roughness", 0.005f, 1.0f, "",
+      "Roughness of a metallic decal: how much it blurs the lights it mirrors (polished gold 0.05, satin gold 0.3)"));
+}
+
 std::vector<ParamDesc> make_table() {
   std::vector<ParamDesc> rows = make_object_and_env_rows();
+  // The decals after the glass's other per-object groups (before env).
+  std::vector<ParamDesc> decals;
+  add_decal_rows<&VesselParams::decal_outer>(decals, "decal_outer", "the outer wall");
+  add_decal_rows<&VesselParams::decal_inner>(decals, "decal_inner",
+                                             "the inner wall (the cavity's side: seen through the glass)");
+  const auto env = std::find_if(rows.begin(), rows.end(), [](const ParamDesc& d) { return d.path.starts_with("env."); });
+  rows.insert(env, decals.begin(), decals.end());
   add_light_rows<&SceneParams::light>(rows, "light", "the key light");
   rows.push_back(ROW(SceneParams, light, intensity, Float, 0.0f, 100.0f, "",
                      "Deprecated, has no effect: the key light's power is light.power (W)"));

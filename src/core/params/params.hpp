@@ -161,6 +161,27 @@ struct ClipParams {
   float offset = 0.0f;               // metres along the normal from the glass's axis foot
 };
 
+// What a decal is made of (docs/DECALS.md): printed enamel (opaque paint, lit like a
+// matte painted surface), etched or frosted glass (rough glass that scatters what lies
+// behind it) or metal (gilding: a gold rim band).
+enum class DecalKind { Enamel = 0, Etched = 1, Metallic = 2 };
+
+// One decal layer on a wall (core/vessel/decal.hpp): an image with alpha placed by its
+// centre's angle around the axis and height, and its width around the wall; its extent
+// along the profile follows from the image's aspect, measured by arc length, so it is not
+// stretched on a curved bowl.
+struct DecalParams {
+  std::string file;  // a PNG, or the name of a shipped decal (presets/decals/); "": none
+  int kind = int(DecalKind::Enamel);  // DecalKind
+  float angle = 0.0f;   // degrees about the axis from the glass's front (+z), counter-clockwise seen from above
+  float height = 0.07f;  // m: the centre's height above the foot
+  float width = 0.05f;   // m around the wall at the centre; 0: each copy fills its share of the turn (a band)
+  int repeat = 1;        // copies spaced evenly around the axis
+  glm::vec3 color{1.0f};  // multiplies the image: paint colour, frost tint, or the metal's reflectance
+  float opacity = 1.0f;   // multiplies the image's alpha
+  float roughness = 0.3f;  // a metallic decal's: 0 a mirror, more a satin metal
+};
+
 struct RenderParams {
   int tonemap = int(Tonemap::Aces);  // Tonemap
   float exposure = 1.15f;
@@ -176,6 +197,8 @@ struct VesselParams {
   FoamParams foam;
   BubbleParams bubbles;
   ClipParams clip;
+  DecalParams decal_outer;  // printed on the outside of the glass
+  DecalParams decal_inner;  // on the cavity's side: seen through the glass, and through the drink from behind
 };
 
 // The groups that belong to the scene as a whole: surroundings, light, camera, output.

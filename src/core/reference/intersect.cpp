@@ -300,4 +300,13 @@ Hit first_hit(const SceneGeometry& s, const Ray& world_ray, double tmin) {
   return best;
 }
 
+DecalHit decal_hit(const VesselGeometry& s, const Hit& h, const Ray& world_ray) {
+  if (!s.decals || (h.m != Material::GlassOuter && h.m != Material::GlassInner)) return {};
+  const int layer = h.m == Material::GlassInner ? 1 : 0;
+  const glm::dvec3 local = glm::inverse(s.pose.orientation) * (world_ray.at(h.t) - s.pose.position);
+  const std::optional<glm::dvec2> uv = decal_uv(*s.vessel, s.decals->arcs, s.decals->layers[size_t(layer)], local);
+  if (!uv) return {};
+  return {layer, *uv};
+}
+
 }  // namespace draught

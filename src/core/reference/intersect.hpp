@@ -7,12 +7,14 @@
 
 #include "core/scene/motion.hpp"
 #include "core/liquid/slosh.hpp"
+#include "core/vessel/decal.hpp"
 #include "core/vessel/vessel.hpp"
 #include "generated/constants.hpp"
 
 #include <glm/glm.hpp>
 
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace draught {
@@ -65,6 +67,7 @@ struct VesselGeometry {
   LiquidPlane liquid;
   Pose pose;
   glm::dvec4 clip{0, 0, 0, 1};  // cross-section (glass frame): dot(n, p) > offset is cut away; n = 0: none
+  std::shared_ptr<const VesselDecals> decals;  // its decals, placed (scene_geometry with decals); null: none
   bool clipped(const glm::dvec3& local) const { return glm::dot(glm::dvec3(clip), local) > clip.w; }
 };
 
@@ -84,5 +87,15 @@ Hit hit_vessel(const VesselGeometry&, const Ray& world_ray, double tmin = 1e-7);
 // Nearest surface along the world ray over every object and the backdrop (Material::Floor:
 // its floor, curve or wall); normals in the world.
 Hit first_hit(const SceneGeometry&, const Ray&, double tmin = 1e-7);
+
+// The decal a wall hit `h` of the world ray meets on its vessel (`s`: the geometry of
+// h.object): its layer (0 the outer wall's, 1 the inner wall's; -1 none) and (u, v) over
+// its image (core/vessel/decal.hpp decal_uv). GLSL twin: the Decal debug view
+// (shaders/lib/vessel/decal.glsl decal_uv), compared by tests/gpu/test_decals.cpp.
+struct DecalHit {
+  int layer = -1;
+  glm::dvec2 uv{0.0};
+};
+DecalHit decal_hit(const VesselGeometry& s, const Hit& h, const Ray& world_ray);
 
 }  // namespace draught

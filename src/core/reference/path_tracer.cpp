@@ -27,6 +27,10 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kEps = 1e-7;  // where a path starts again past the surface it left
+// Of the light an etched (frosted) decal scatters, the part it sends back to the side it
+// came from; the rest goes through, scattered (the picture's lib/vessel/decal.glsl uses
+// the same share).
+constexpr double kFrostBackscatter = 0.2;
 
 double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 double mean3(const glm::dvec3& v) { return (v.x + v.y + v.z) / 3.0; }
@@ -102,7 +106,7 @@ struct AirEvent {
 class Tracer {
  public:
   Tracer(const FrameState& f, const ReferenceSettings& s)
-      : frame_(f), settings_(s), geo_(scene_geometry(f)), studio_(f.params), environment_(studio_),
+      : frame_(f), settings_(s), geo_(scene_geometry(f, true)), studio_(f.params), environment_(studio_),
         lights_(f.lights.lights) {
     for (size_t i = 0; i < f.vessels.size(); ++i) {
       const VesselFrame& vf = f.vessels[i];
@@ -220,13 +224,33 @@ class Tracer {
       // A dielectric interface (glass, liquid surface, a cut face).
       if (++surfaces > settings_.max_surfaces) break;
       const VesselMedia& m = media_[size_t(h.object)];
-      const bool below = geo_.vessels[size_t(h.object)].liquid.below(m.local_point(p));
+      const VesselGeometry& g = geo_.vessels[size_t(h.object)];
+      const bool below = g.liquid.below(m.local_point(p));
       const MediumKind next = medium_across(h.m, medium, below);
       const glm::dvec3 n = glm::dot(h.n, ray.d) < 0 ? h.n : -h.n;
       const double n1 = m.ior(medium), n2 = m.ior(next);
       const double F = fresnel_dielectric(-glm::dot(n, ray.d), n1, n2);
       ray.o = p;
-      if (rng.uniform() < F) {
+      // A decal on the wall: from the air it lies under the surface's gloss (Fresnel
+      // first); from inside the glass or the drink the ink, frost or metal meets the
+      // path first (no total internal reflection off a painted face).
+      double u = rng.uniform();
+      const bool wall = h.m == Material::GlassOuter || h.m == Material::GlassInner;
+      const DecalSample decal = g.decals && wall ? g.decals->sample(*g.vessel, h.m == Material::GlassInner, m.local_point(p))
+                                                 : DecalSample{};
+      if (decal.cover > 0) {
+        const double before = medium == MediumKind::Air ? F : 0.0;
+        const double share = medium == MediumKind::Air ? (1 - F) * decal.cover : decal.cover;
+        if (u >= before && u < before + share) {
+          if (!decal_event(decal, n, next, h.object, ray, medium, obj, thr, L, mis, rng)) break;
+          if (!roulette(thr, surfaces + scatters, rng)) break;
+          continue;
+        }
+        // Past the decal the rest of the surface as it is: from inside, u is taken back to
+        // [0, 1) for Fresnel's choice; from the air, u >= F already refracts.
+        if (medium != MediumKind::Air) u = (u - share) / std::max(1 - share, 1e-12);
+      }
+      if (u < F) {
         ray.d = reflect_dir(ray.d, n);
       } else {
         ray.d = glm::normalize(*refract_dir(ray.d, n, n1 / n2));  // F < 1: it refracts
@@ -246,6 +270,38 @@ class Tracer {
     if (q <= 0 || rng.uniform() >= q) return false;
     thr /= q;
     return true;
+  }
+
+  // The path meets a decal at p (n: the surface's normal facing the path; next: the medium
+  // beyond it): enamel reflects diffusely with the decal's colour; etched glass scatters
+  // diffusely, a fifth back and the rest through to the far side; metal mirrors in its
+  // colour. Diffuse vertices sample the lights (multiple importance sampling). False: the
+  // path ends.
+  bool decal_event(const DecalSample& decal, const glm::dvec3& n, MediumKind next, int object, Ray& ray,
+                   MediumKind& medium, int& obj, glm::dvec3& thr, glm::dvec3& L, MisVertex& mis, Rng& rng) const {
+    const glm::dvec3 p = ray.o;
+    thr *= decal.tint;
+    if (decal.kind == DecalKind::Metallic) {
+      // A rough mirror: the reflection about a microfacet normal drawn from GGX (alpha =
+      // roughness squared), its colour the decal's (masking left out).
+      const double a = decal.roughness * decal.roughness, u = rng.uniform();
+      const double cos_h = std::sqrt((1 - u) / (1 + (a * a - 1) * u));
+      const glm::dvec3 d = reflect_dir(ray.d, around(n, cos_h, 2 * kPi * rng.uniform()));
+      ray.d = glm::dot(d, n) > 0 ? d : reflect_dir(ray.d, n);
+      mis.pdf = -1;
+      return max3(thr) > 0;
+    }
+    glm::dvec3 side = n;  // the side the light leaves to
+    if (decal.kind == DecalKind::Etched && rng.uniform() >= kFrostBackscatter) {
+      side = -n;
+      medium = next;
+      obj = next == MediumKind::Air ? -1 : object;
+    }
+    L += thr * direct_light(p, side, ray.d, 0.0, rng);
+    const double cos_t = std::sqrt(rng.uniform());
+    ray.d = around(side, cos_t, 2 * kPi * rng.uniform());
+    mis = {cos_t / kPi, p, side};
+    return max3(thr) > 0;
   }
 
   // The heads along the world ray over [0, t_end] in order of entry, as (t0, t1, object);

@@ -210,7 +210,7 @@ FrameState make_frame(const Scene& s) {
 
 FrameState make_frame(const Params& p) { return make_frame(single_glass_scene(p)); }
 
-SceneGeometry scene_geometry(const FrameState& f) {
+SceneGeometry scene_geometry(const FrameState& f, bool with_decals) {
   SceneGeometry g;
   g.backdrop = f.backdrop;
   g.backdrop.present = f.backdrop.present && !f.params.render.transparent;
@@ -219,6 +219,7 @@ SceneGeometry scene_geometry(const FrameState& f) {
     const ClipParams& c = v.params.clip;
     const double len = glm::length(glm::dvec3(c.normal));
     if (c.enabled && len > 1e-4) vg.clip = glm::dvec4(glm::dvec3(c.normal) / len, c.offset);
+    if (with_decals) vg.decals = vessel_decals(v.vessel, v.params);
     g.vessels.push_back(vg);
   }
   return g;

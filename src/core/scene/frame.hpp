@@ -73,8 +73,10 @@ FrameState make_frame(const Params&);  // a single glass
 // reach out of that picture, backed away along its line of sight until it is inside.
 CameraParams frame_camera(const CameraParams& c, const std::vector<VesselFrame>&, double aspect = 1.0);
 CameraParams frame_camera(const CameraParams& c, const Vessel&);  // one upright glass at the origin
-// The reference intersector's view of the frame (every object, the floor, clip planes).
-SceneGeometry scene_geometry(const FrameState&);
+// The reference intersector's view of the frame (every object, the floor, clip planes);
+// with_decals: each vessel's decals placed too (their images read, through the cache of
+// core/vessel/decal_files), for the reference path tracer and the decal probes.
+SceneGeometry scene_geometry(const FrameState&, bool with_decals = false);
 
 // The camera basis of a width x height picture of the frame (camera_for the part `view` of
 // the picture, then the basis, its lens shifted to that part).

@@ -60,7 +60,9 @@ ParamValue other_value(const ParamDesc& d) {
         if (c != std::get<std::string>(d.def)) return c;
       return std::string();
     case ParamType::Curve: return Curve{{0.02f, 0.0f}, {0.025f, 0.03f}, {0.03f, 0.09f}};
-    case ParamType::File: return std::string(std::get<std::string>(d.def) == "bar" ? "studio" : "bar");  // shipped
+    case ParamType::File:  // shipped: an environment, or a decal
+      if (d.path.starts_with("decal_")) return std::string(std::get<std::string>(d.def) == "crest" ? "wordmark" : "crest");
+      return std::string(std::get<std::string>(d.def) == "bar" ? "studio" : "bar");
   }
   return 0.0f;
 }
@@ -125,7 +127,7 @@ std::vector<ParamValue> out_of_range(const ParamDesc& d) {
 
 TEST(ParamTable, PathsAreUniqueAndGrouped) {
   std::set<std::string> seen;
-  const std::set<std::string> groups = {"glass", "liquid", "foam", "bubbles", "env", "light", "strips", "backlight", "camera", "clip", "render"};
+  const std::set<std::string> groups = {"glass", "liquid", "foam", "bubbles", "env", "light", "strips", "backlight", "camera", "clip", "decal_outer", "decal_inner", "render"};
   for (const auto& d : param_table()) {
     EXPECT_TRUE(seen.insert(d.path).second) << "duplicate path " << d.path;
     const auto dot = d.path.find('.');
@@ -234,7 +236,7 @@ TEST(ParamTable, EveryDefaultIsWithinItsRange) {
 }
 
 TEST(ParamTable, ScopeComesFromTheStructThatHoldsTheRow) {
-  const std::set<std::string> vessel_groups = {"glass", "liquid", "foam", "bubbles", "clip"};
+  const std::set<std::string> vessel_groups = {"glass", "liquid", "foam", "bubbles", "clip", "decal_outer", "decal_inner"};
   int vessel = 0, scene = 0;
   for (const auto& d : param_table()) {
     const bool is_vessel = vessel_groups.count(d.path.substr(0, d.path.find('.'))) > 0;

@@ -81,6 +81,47 @@ TEST(ReferenceFurnace, AScatteringOnlyHeadComesOutAtTheEnvironmentsBrightness) {
   EXPECT_LT(worst_error(render(p, 16, 4)), 0.03);
 }
 
+// A band of the shipped gold-band decal (white, its middle opaque) round the pint at
+// 7 cm, and a camera that sees only that opaque middle, straight on.
+Params decal_furnace(DecalKind kind, glm::vec3 colour) {
+  Params p = furnace_params();
+  p.liquid.fill = 0;
+  p.decal_outer.file = "gold-band";
+  p.decal_outer.kind = int(kind);
+  p.decal_outer.width = 0;
+  p.decal_outer.height = 0.07f;
+  p.decal_outer.color = colour;
+  p.camera.auto_frame = false;
+  p.camera.eye = {0.0f, 0.07f, 0.08f};  // 4 mm of the band's middle in view
+  p.camera.target = {0.0f, 0.07f, 0.0f};
+  p.camera.vfov = 5;
+  return p;
+}
+
+TEST(ReferenceFurnace, AWhiteDecalOfAnyKindIsInvisible) {
+  // White paint, white frost and a white mirror lose nothing: in a uniform environment they
+  // show it, like the clear glass around them (the decals' energy is conserved).
+  for (DecalKind kind : {DecalKind::Enamel, DecalKind::Etched, DecalKind::Metallic}) {
+    Params p = decal_furnace(kind, glm::vec3(1));
+    p.camera.vfov = 28;  // the whole band and the glass around it
+    EXPECT_LT(worst_error(render(p, 16, 4)), 0.02) << int(kind);
+  }
+}
+
+TEST(ReferenceFurnace, AColouredDecalShowsItsColourUnderTheGlassGloss) {
+  // From the air a decal lies under the surface's gloss: F of the environment, and of the
+  // rest the paint's albedo (enamel) or the metal's reflectance (metallic).
+  const double F = std::pow((1.52 - 1.0) / (1.52 + 1.0), 2);  // straight on
+  const glm::vec3 colour{0.8f, 0.5f, 0.2f};
+  for (DecalKind kind : {DecalKind::Enamel, DecalKind::Metallic}) {
+    // The mean of 4 x 4 pixels of 64 paths: a path is either reflected (F) or coloured.
+    const RadianceImage img = render(decal_furnace(kind, colour), 4, 64);
+    glm::dvec3 mean(0.0);
+    for (const glm::dvec3& c : img.pixels) mean += c / double(img.pixels.size());
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(mean[i] / kEnv[i], F + (1 - F) * colour[i], 0.02) << int(kind) << " channel " << i;
+  }
+}
+
 TEST(ReferenceFurnace, AnAbsorbingDrinkIsNotInvisible) {  // the tests above can fail
   Params p = furnace_params();
   p.liquid.fill = 0.8f;
