@@ -26,6 +26,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/environment/environment_map.cpp
   src/core/environment/environment_files.cpp
   src/core/environment/environment_bake.cpp
+  src/core/environment/screen.cpp
   src/core/bubbles/bubbles.cpp
   src/core/bubbles/bubble_view.cpp
   src/core/reference/intersect.cpp
@@ -37,6 +38,8 @@ set(DRAUGHT_CORE_SOURCES
   src/core/io/hdr_image.cpp
   src/core/io/files.cpp
   src/core/io/temporaries.cpp
+  src/core/io/process.cpp
+  src/core/io/video_source.cpp
   src/core/text/echo.cpp
   src/core/text/suggest.cpp
   src/core/input/gesture.cpp

@@ -47,7 +47,8 @@ set(web_gpu
   "${DRAUGHT_ROOT}/src/gpu/shader_source.cpp"
   "${DRAUGHT_ROOT}/src/gpu/program.cpp"
   "${DRAUGHT_ROOT}/src/gpu/scene_data.cpp"
-  "${DRAUGHT_ROOT}/src/gpu/renderer.cpp")
+  "${DRAUGHT_ROOT}/src/gpu/renderer.cpp"
+  "${DRAUGHT_ROOT}/src/gpu/screen_texture.cpp")
 include("${CMAKE_CURRENT_LIST_DIR}/shaders.cmake")
 draught_embed_shaders(web_embedded)
 

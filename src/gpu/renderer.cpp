@@ -3,6 +3,7 @@
 #include "core/bubbles/bubble_view.hpp"
 #include "gpu/program.hpp"
 #include "gpu/scene_data.hpp"
+#include "gpu/screen_texture.hpp"
 
 #include <GLES3/gl3.h>
 
@@ -66,7 +67,8 @@ void bind_interface(const Program& program, const std::string& what) {
                       contract::kFrameBlockUsedBytes, sizeof(contract::FrameBlock), contract::kFrameBlockBinding, what);
   glUseProgram(program.id());
   for (const contract::Sampler& s : {contract::kObjectSampler, contract::kKnotsSampler, contract::kFloorLightSampler,
-                                       contract::kBackdropLightSampler, contract::kEnvImageSampler})
+                                       contract::kBackdropLightSampler, contract::kEnvImageSampler,
+                                       contract::kScreenSampler})
     if (GLint at = glGetUniformLocation(program.id(), s.name); at >= 0) glUniform1i(at, s.unit);
 }
 }  // namespace
@@ -78,6 +80,8 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kFoam) frag = with_define(std::move(frag), "FOAM_HEAD");
   if (variant & kDebug) frag = with_define(std::move(frag), "DEBUG_VIEWS");
   if (variant & kImage) frag = with_define(std::move(frag), "ENV_IMAGE");
+  if (variant & (kScreenCard | kScreenBackground))  // 1: a card in the scene, 2: the background
+    frag = with_define(std::move(frag), "SCREEN", variant & kScreenCard ? "1" : "2");
   if (const int held = variant >> kHeldShift)
     frag = with_define(std::move(frag), "HELD_OBJECTS", std::to_string(held));
   auto program = std::make_unique<Program>(vert, frag);
@@ -89,6 +93,7 @@ Renderer::Renderer(const std::filesystem::path& shader_dir) : shader_dir_(shader
   if (const char* env = std::getenv("DRAUGHT_SHADER_DIR"); shader_dir_.empty() && env && *env) shader_dir_ = env;
   programs_[0] = build_program(0);  // compiles now, so a broken shader is reported at once
   textures_ = std::make_unique<SceneTextures>();
+  screen_ = std::make_unique<ScreenTexture>();
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &ubo_);
   glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
@@ -108,10 +113,13 @@ void Renderer::set_floor_light(const FloorLightSettings& s, bool on, int draft_p
 
 void Renderer::draw(const FrameState& f, int width, int height, DebugView debug, int event) {
   textures_->update(f);  // only rows that changed; the floor's light when its inputs did
+  screen_->update(f.screen);  // only when another frame comes, into the texture not drawn from
+  screen_->bind();
   textures_->bind();
   contract::FrameBlock block = pack_frame_block(f, width, height, debug, event);
   textures_->describe_floor_light(block);
   textures_->describe_backdrop_light(block);
+  pack_screen(f, width, height, block);
   glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
   glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof block, &block);
   glBindBufferBase(GL_UNIFORM_BUFFER, contract::kFrameBlockBinding, ubo_);
@@ -128,7 +136,9 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   const int objects = int(f.vessels.size());
   const int held = held_objects_ && objects >= 1 && objects <= kMaxHeldObjects ? objects : 0;
   const int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0) | (debug != DebugView::None ? kDebug : 0) |
-                      (f.environment.image ? kImage : 0) | (held << kHeldShift);
+                      (f.environment.image ? kImage : 0) | (held << kHeldShift) |
+                      (f.screen.mode == ScreenMode::Card ? kScreenCard : 0) |
+                      (f.screen.mode == ScreenMode::Background ? kScreenBackground : 0);
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
   glUseProgram(program->id());

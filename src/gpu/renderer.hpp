@@ -18,6 +18,7 @@ namespace draught::gpu {
 
 class Program;
 class SceneTextures;
+class ScreenTexture;
 
 // Debug views, declared in src/interface/constants.def (shared with the shaders).
 using contract::DebugView;
@@ -69,6 +70,9 @@ class Renderer {
   void finish();
   // The scene's data textures (tests check what a frame uploads).
   const SceneTextures& scene_textures() const { return *textures_; }
+  // The screen's picture (gpu/screen_texture): uploaded from the frame's screen, or
+  // streamed into by the app (the web page's video and camera).
+  ScreenTexture& screen_texture() { return *screen_; }
   // Scenes of up to kMaxHeldObjects objects are drawn with a shader variant that holds
   // every object's records per pixel (object loops resolved at compile time; the same
   // pictures, much faster on llvmpipe). Four: a tasting flight; every held object costs
@@ -87,13 +91,14 @@ class Renderer {
   // What the path pass is compiled with (software rasterizers pay for code even where a
   // uniform branch skips it, so frames get only the code they use): these bits, and the
   // number of held objects (0: the general path) from bit kHeldShift on.
-  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kHeldShift = 4 };
+  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kScreenCard = 16, kScreenBackground = 32, kHeldShift = 6 };
   std::unique_ptr<Program> build_program(int variant) const;
 
   std::filesystem::path shader_dir_;
   std::map<int, std::unique_ptr<Program>> programs_;  // by variant, built when first needed
   std::unique_ptr<Program> bubble_program_;  // pass 2: rising bubbles, built when first needed
   std::unique_ptr<SceneTextures> textures_;  // u_objects, u_knots, u_floor_light
+  std::unique_ptr<ScreenTexture> screen_;    // u_screen
   unsigned bubble_vao_ = 0, bubble_vbo_ = 0;
   unsigned vao_ = 0, ubo_ = 0;
   bool held_objects_ = true;
