@@ -30,10 +30,11 @@ declare -A seeds=(
   [preset]="presets/glasses presets/drinks presets/scenes"
   [timeline]="presets/timelines"
   [hdr_image]="fuzz/seeds/hdr_image fuzz/regressions/hdr_image"
+  [video_source]="fuzz/seeds/video_source"
 )
-declare -A dicts=([preset]=fuzz/json.dict [timeline]=fuzz/json.dict [hdr_image]=fuzz/hdr.dict)
+declare -A dicts=([preset]=fuzz/json.dict [timeline]=fuzz/json.dict [hdr_image]=fuzz/hdr.dict [video_source]=fuzz/video.dict)
 status=0
-for target in preset timeline hdr_image; do
+for target in preset timeline hdr_image video_source; do
   corpus="build-fuzz/corpus/$target"
   mkdir -p "$corpus" build-fuzz/findings
   log="build-fuzz/fuzz_$target.log"

@@ -211,17 +211,31 @@ std::unique_ptr<VideoSource> open_pattern(const std::string& pattern) {
 
 #ifndef __EMSCRIPTEN__
 
-// The first lines of what a tool wrote to its error stream (a temporary file), short.
+// The first two different things a tool wrote to its error stream (a temporary file),
+// without its "[h264 @ 0x55d1...]" prefixes (addresses that differ every run).
 std::string first_lines(std::FILE* f) {
   if (!f) return "";
   std::rewind(f);
-  char buf[2048];
-  const size_t n = std::fread(buf, 1, sizeof buf - 1, f);
-  std::string text(buf, n);
-  while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ')) text.pop_back();
-  for (char& c : text)
-    if (c == '\n' || c == '\r') c = ' ';
-  return shorten(make_valid_utf8(text), 300);
+  char buf[4096];
+  const size_t n = std::fread(buf, 1, sizeof buf, f);
+  const std::string text(buf, n);
+  std::vector<std::string> lines;
+  for (size_t at = 0; at < text.size() && lines.size() < 2;) {
+    size_t end = text.find('\n', at);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(at, end - at);
+    at = end + 1;
+    while (!line.empty() && line.front() == '[') {
+      const size_t close = line.find("] ");
+      if (close == std::string::npos || line.find(" @ 0x") > close) break;
+      line.erase(0, close + 2);
+    }
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '.')) line.pop_back();
+    if (!line.empty() && std::find(lines.begin(), lines.end(), line) == lines.end()) lines.push_back(line);
+  }
+  std::string out;
+  for (const auto& l : lines) out += (out.empty() ? "" : "; ") + l;
+  return shorten(make_valid_utf8(out), 300);
 }
 
 // Runs a tool to its end; stdout collected (at most `max_out` bytes), stderr into `err`.

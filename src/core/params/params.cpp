@@ -60,7 +60,7 @@ void add_screen_rows(std::vector<ParamDesc>& rows) {
           (std::vector<std::string>{"off", "card", "background"})),
       with_file_check(ROW(SceneParams, screen, source, File, 0, 0, "",
                           "What the screen shows: a video file (decoded by ffmpeg), a folder of PNG frames, a pattern "
-                          "such as clip/frame_%04d.png, a PNG file, or a shipped clip (pour-loop); \"\": the app "
+                          "such as clip/frame_%04d.png, a PNG file, or a shipped clip (draught-loop); \"\": the app "
                           "streams it (the web page's video or camera)"),
                       &check_screen_source),
       ROW(SceneParams, screen, fps, Float, 0.0f, 240.0f, "1/s",
