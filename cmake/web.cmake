@@ -76,7 +76,7 @@ target_link_options(draught_web PRIVATE
   -sALLOW_MEMORY_GROWTH=1
   -sMODULARIZE=1 -sEXPORT_NAME=createDraught
   -sENVIRONMENT=web
-  -sEXPORTED_RUNTIME_METHODS=UTF8ToString
+  -sEXPORTED_RUNTIME_METHODS=UTF8ToString,GL,FS
   -sEXPORTED_FUNCTIONS=_main,_malloc,_free
   -sFILESYSTEM=1
   "--embed-file=${DRAUGHT_ROOT}/presets@/presets"

@@ -2,6 +2,7 @@
 
 #include "core/environment/lights.hpp"
 #include "core/io/files.hpp"
+#include "core/io/process.hpp"
 #include "core/output/tonemap.hpp"
 #include "core/params/preset.hpp"
 #include "core/text/echo.hpp"
@@ -165,8 +166,25 @@ std::shared_ptr<VideoSource> screen_source(const std::string& name) {
   return source;
 }
 
+bool screen_source_played_by_app(const std::string& name) {
+  if (name.empty() || can_start_processes() || name.find('%') != std::string::npos) return false;
+  const fs::path file = resolve_screen_source(name);
+  std::error_code ec;
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return !fs::is_directory(file, ec) && ext != ".png";
+}
+
 void check_screen_source(const std::string& name) {
-  if (!name.empty()) screen_source(name);
+  if (name.empty()) return;
+  if (screen_source_played_by_app(name)) {
+    std::error_code ec;
+    const fs::path file = resolve_screen_source(name);
+    if (!fs::is_regular_file(file, ec))
+      throw InputError(shorten(name, kEchoPathBytes) + ": no such video file");
+    return;
+  }
+  screen_source(name);
 }
 
 ScreenFrame screen_frame(const SceneParams& p, const glm::dvec3& aim, double time) {
@@ -180,6 +198,9 @@ ScreenFrame screen_frame(const SceneParams& p, const glm::dvec3& aim, double tim
                                         : double(sp.start) + (sp.playing ? std::max(time, 0.0) : 0.0);
   if (sp.source.empty()) {
     s.external = true;
+  } else if (screen_source_played_by_app(sp.source)) {
+    s.external = true;
+    s.app_file = resolve_screen_source(sp.source).string();
   } else {
     std::lock_guard lock(g_mutex);
     const std::shared_ptr<VideoSource> src = screen_source(sp.source);

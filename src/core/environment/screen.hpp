@@ -42,6 +42,7 @@ struct ScreenFrame {
   // the app streams the picture into the texture itself (the web page's video or camera).
   std::shared_ptr<const Image> picture;
   bool external = false;
+  std::string app_file;   // a video the app plays itself (screen_source_played_by_app), resolved
   int index = 0;          // which frame of the source
   double position = 0;    // seconds into the source
   std::string source;     // screen.source
@@ -88,8 +89,14 @@ std::filesystem::path resolve_screen_source(const std::string& name);
 // again). Throws InputError naming the file and what was expected.
 std::shared_ptr<VideoSource> screen_source(const std::string& name);
 
-// The parameter table's check of screen.source: "" (the app streams the picture) or a
-// source that opens.
+// Whether the app plays the video `name` itself instead of the core decoding it: in a build
+// that runs no programs (the web page, where the browser plays it in a <video> element and
+// streams its frames in) a video file is the app's; a PNG sequence never is. Throws
+// InputError for a name that resolves to nothing.
+bool screen_source_played_by_app(const std::string& name);
+
+// The parameter table's check of screen.source: "" (the app streams the picture), a video
+// the app plays (its file exists), or a source that opens.
 void check_screen_source(const std::string& name);
 
 }  // namespace draught
