@@ -29,6 +29,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/environment/environment_files.cpp
   src/core/environment/environment_sampling.cpp
   src/core/environment/environment_bake.cpp
+  src/core/environment/screen.cpp
   src/core/bubbles/bubbles.cpp
   src/core/bubbles/bubble_view.cpp
   src/core/reference/intersect.cpp
@@ -40,6 +41,8 @@ set(DRAUGHT_CORE_SOURCES
   src/core/io/hdr_image.cpp
   src/core/io/files.cpp
   src/core/io/temporaries.cpp
+  src/core/io/process.cpp
+  src/core/io/video_source.cpp
   src/core/text/echo.cpp
   src/core/text/suggest.cpp
   src/core/input/gesture.cpp

@@ -48,7 +48,8 @@ set(web_gpu
   "${DRAUGHT_ROOT}/src/gpu/program.cpp"
   "${DRAUGHT_ROOT}/src/gpu/scene_data.cpp"
   "${DRAUGHT_ROOT}/src/gpu/decal_textures.cpp"
-  "${DRAUGHT_ROOT}/src/gpu/renderer.cpp")
+  "${DRAUGHT_ROOT}/src/gpu/renderer.cpp"
+  "${DRAUGHT_ROOT}/src/gpu/screen_texture.cpp")
 include("${CMAKE_CURRENT_LIST_DIR}/shaders.cmake")
 draught_embed_shaders(web_embedded)
 
@@ -76,7 +77,7 @@ target_link_options(draught_web PRIVATE
   -sALLOW_MEMORY_GROWTH=1
   -sMODULARIZE=1 -sEXPORT_NAME=createDraught
   -sENVIRONMENT=web
-  -sEXPORTED_RUNTIME_METHODS=UTF8ToString
+  -sEXPORTED_RUNTIME_METHODS=UTF8ToString,GL,FS
   -sEXPORTED_FUNCTIONS=_main,_malloc,_free
   -sFILESYSTEM=1
   "--embed-file=${DRAUGHT_ROOT}/presets@/presets"

@@ -31,10 +31,11 @@ declare -A seeds=(
   [timeline]="presets/timelines"
   [hdr_image]="fuzz/seeds/hdr_image fuzz/regressions/hdr_image"
   [decal_image]="fuzz/seeds/decal_image"
+  [video_source]="fuzz/seeds/video_source"
 )
-declare -A dicts=([preset]=fuzz/json.dict [timeline]=fuzz/json.dict [hdr_image]=fuzz/hdr.dict [decal_image]=fuzz/png.dict)
+declare -A dicts=([preset]=fuzz/json.dict [timeline]=fuzz/json.dict [hdr_image]=fuzz/hdr.dict [decal_image]=fuzz/png.dict [video_source]=fuzz/video.dict)
 status=0
-for target in preset timeline hdr_image decal_image; do
+for target in preset timeline hdr_image decal_image video_source; do
   corpus="build-fuzz/corpus/$target"
   mkdir -p "$corpus" build-fuzz/findings
   log="build-fuzz/fuzz_$target.log"

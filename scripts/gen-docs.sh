@@ -23,7 +23,7 @@ out=${2:-docs/PRESETS.md}
   echo "Vectors and colours are written \`x,y,z\` on the command line and \`[x, y, z]\` in JSON;"
   echo "a profile curve is \`r,y;r,y;...\` on the command line and \`[[r, y], ...]\` in JSON."
   echo
-  echo "The *scope* says whose parameter it is. A *scene* parameter (env, light, strips, backlight, camera, render)"
+  echo "The *scope* says whose parameter it is. A *scene* parameter (env, light, strips, backlight, screen, camera, render)"
   echo "belongs to the whole scene. A *per object* parameter"
   echo "belongs to each glass (glass, liquid, foam, bubbles, clip, decal_outer, decal_inner): in a scene preset with \`objects\` it goes into an object's own \`params\`."
   echo "On the command line and in a timeline's \`set\` action, \`objects[N].\` in front of the path"

@@ -2,15 +2,22 @@
 // test: it prints a table and asserts nothing.
 #include "commands.hpp"
 
+#include "core/io/process.hpp"
+#include "core/io/temporaries.hpp"
+#include "core/io/video_source.hpp"
 #include "core/scene/frame.hpp"
 #include "core/params/timeline.hpp"
 #include "gpu/context.hpp"
 #include "gpu/renderer.hpp"
+#include "gpu/screen_texture.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <thread>
+#include <unistd.h>
 
 namespace draught::cli {
 
@@ -123,6 +130,76 @@ double median_ms(gpu::Renderer& renderer, const FrameState& f, int w, int h, int
   return median(ms);
 }
 
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+// A 1280 x 720 frame of the screen's bench: a pattern that differs from frame to frame.
+std::shared_ptr<const Image> frame_720p(int k) {
+  Image img{1280, 720, std::vector<std::uint8_t>(size_t(1280) * 720 * 4, 255)};
+  for (int y = 0; y < 720; ++y)
+    for (int x = 0; x < 1280; ++x) {
+      std::uint8_t* p = img.px(x, y);
+      p[0] = std::uint8_t(x + 7 * k);
+      p[1] = std::uint8_t(y + 13 * k);
+      p[2] = std::uint8_t((x ^ y) + k);
+    }
+  return std::make_shared<const Image>(std::move(img));
+}
+
+// The screen's upload (gpu/screen_texture): a new 720p frame each time into the back
+// texture with its mipmaps. "call": what the drawing thread spends in the upload;
+// "finished": until the GPU has done it too (glFinish), the upper bound.
+void bench_screen_upload(gpu::Renderer& renderer, int frames) {
+  gpu::ScreenTexture tex;
+  const std::shared_ptr<const Image> pictures[2] = {frame_720p(0), frame_720p(1)};
+  std::vector<double> call, finished;
+  ScreenFrame s;
+  s.mode = ScreenMode::Card;
+  for (int i = 0; i < frames + 2; ++i) {
+    s.picture = pictures[i % 2];
+    renderer.finish();
+    const auto t0 = Clock::now();
+    tex.update(s);
+    const double c = ms_since(t0);
+    renderer.finish();
+    const double f = ms_since(t0);
+    if (i >= 2) call.push_back(c), finished.push_back(f);
+  }
+  std::printf("%-26s %-9s %10.2f %10.2f %10.2f  (call; finished: median %.2f ms)\n", "screen-upload-720p", "1280x720",
+              median(call), *std::min_element(call.begin(), call.end()), *std::max_element(call.begin(), call.end()),
+              median(finished));
+}
+
+// The screen's decoding (core/io/video_source): the next 720p frame of an H.264 video read
+// from ffmpeg's pipe (ffmpeg decodes in its own process, a frame ahead).
+void bench_screen_decode(int frames) {
+  if (find_ffmpeg("bench").empty()) {
+    std::printf("%-26s (ffmpeg not found: skipped)\n", "screen-decode-720p");
+    return;
+  }
+  const std::filesystem::path clip = temporary_path_beside(std::filesystem::temp_directory_path() / "bench.mp4");
+  const std::string video = clip.string() + ".mp4";
+  const std::string make = find_ffmpeg("bench") + " -nostdin -y -loglevel error -f lavfi -i testsrc2=size=1280x720:rate=25:duration=" +
+                           std::to_string((frames + 12) / 25 + 1) + " -pix_fmt yuv420p '" + video + "'";
+  if (std::system(make.c_str()) != 0) {
+    std::printf("%-26s (ffmpeg could not make a test video: skipped)\n", "screen-decode-720p");
+    return;
+  }
+  std::vector<double> ms;
+  {
+    const std::unique_ptr<VideoSource> src = open_video_source(video);
+    for (int i = 1; i < frames + 3; ++i) {
+      const auto t0 = Clock::now();
+      src->frame(i);
+      if (i >= 3) ms.push_back(ms_since(t0));
+    }
+  }
+  std::error_code ec;
+  std::filesystem::remove(video, ec);
+  std::printf("%-26s %-9s %10.2f %10.2f %10.2f\n", "screen-decode-720p", "1280x720", median(ms),
+              *std::min_element(ms.begin(), ms.end()), *std::max_element(ms.begin(), ms.end()));
+}
+
 }  // namespace
 
 int bench(int frames, const std::vector<int>& sizes, const std::vector<std::string>& only, bool verbose) {
@@ -148,6 +225,10 @@ int bench(int frames, const std::vector<int>& sizes, const std::vector<std::stri
       {"pint-lager-flight-camera", {"lager", "pint", {"camera.auto_frame=false"}, {"eye=0,0.17,0.8", "target=0,0.1,0", "vfov=26"}}},
       {"flight", {"", "", {}, {"eye=0,0.17,0.8", "target=0,0.1,0", "vfov=26"}}, nullptr, 0, true},
       {"flight-angle", {"", "", {}, {"eye=0.62,0.26,0.5", "target=-0.01,0.09,0", "vfov=30"}}, nullptr, 0, true},
+      // The screen (issue 12): the shipped clip on a card behind the pint, and as the
+      // background (the AR view); the frame is the same, so nothing is uploaded per frame.
+      {"pint-lager-screen-card", {"screen-lager", "", {}, {}}},
+      {"pint-lager-screen-backgr", {"lager", "pint", {"screen.mode=background", "screen.source=draught-loop"}, {}}},
   };
   auto ctx = gpu::HeadlessContext::create();
   gpu::Renderer renderer;
@@ -205,6 +286,9 @@ int bench(int frames, const std::vector<int>& sizes, const std::vector<std::stri
       std::fflush(stdout);
     }
   }
+  auto wanted = [&](const char* name) { return only.empty() || std::find(only.begin(), only.end(), name) != only.end(); };
+  if (wanted("screen-upload-720p")) bench_screen_upload(renderer, frames);
+  if (wanted("screen-decode-720p")) bench_screen_decode(frames);
   return 0;
 }
 

@@ -2,10 +2,9 @@
 
 #include "cleanup.hpp"
 #include "core/io/files.hpp"
+#include "core/io/process.hpp"
 #include "core/io/temporaries.hpp"
 
-#include <fcntl.h>
-#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -18,67 +17,9 @@ namespace draught::cli {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string find_on_path(const std::string& exe) {
-  const char* path = std::getenv("PATH");
-  std::string dirs = path ? path : "/usr/bin:/bin";
-  for (size_t start = 0; start <= dirs.size();) {
-    size_t end = dirs.find(':', start);
-    if (end == std::string::npos) end = dirs.size();
-    const fs::path candidate = fs::path(dirs.substr(start, end - start)) / exe;
-    if (access(candidate.c_str(), X_OK) == 0) return candidate.string();
-    start = end + 1;
-  }
-  return "";
-}
-
-// Starts `args` with stdin from `in` (or /dev/null when -1). The child dies with us
-// (PR_SET_PDEATHSIG) and sits in its own process group. Throws if exec fails.
-pid_t spawn(const std::vector<std::string>& args, int in) {
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  int status_pipe[2];  // carries exec's errno; closed by a successful exec (O_CLOEXEC)
-  if (pipe2(status_pipe, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
-  const pid_t parent = getpid();
-  const pid_t pid = fork();
-  if (pid == 0) {  // the child: async-signal-safe calls only until exec
-    prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (getppid() != parent) _exit(127);  // the parent died before prctl
-    setpgid(0, 0);
-    const int fd = in >= 0 ? in : open("/dev/null", O_RDONLY);
-    if (fd < 0 || dup2(fd, 0) < 0) _exit(127);
-    execv(argv[0], argv.data());
-    const int err = errno;
-    (void)!write(status_pipe[1], &err, sizeof err);
-    _exit(127);
-  }
-  close(status_pipe[1]);
-  if (pid < 0) {
-    close(status_pipe[0]);
-    throw std::runtime_error(std::string("cannot start ffmpeg: fork: ") + std::strerror(errno));
-  }
-  int err = 0;
-  ssize_t n;
-  while ((n = read(status_pipe[0], &err, sizeof err)) < 0 && errno == EINTR) {
-  }
-  close(status_pipe[0]);
-  if (n > 0) {
-    waitpid(pid, nullptr, 0);
-    throw std::runtime_error("cannot start " + args[0] + ": " + std::strerror(err));
-  }
-  return pid;
-}
-
-}  // namespace
-
 Encoder::Encoder(const fs::path& dest, const std::string& shown, int w, int h, double fps)
     : dest_(dest), shown_(shown) {
-  const char* pinned = std::getenv("DRAUGHT_FFMPEG");
-  if (pinned && *pinned && access(pinned, X_OK) != 0)
-    throw InputError("-o " + shown + ": DRAUGHT_FFMPEG=" + pinned + " is not an executable ffmpeg");
-  ffmpeg_ = pinned && *pinned ? std::string(pinned) : find_on_path("ffmpeg");
+  ffmpeg_ = find_ffmpeg("-o " + shown);
   if (ffmpeg_.empty())
     throw InputError("-o " + shown +
                      ": ffmpeg was not found on PATH (Debian: apt install ffmpeg); or write PNG frames with -o DIR/");
@@ -98,9 +39,9 @@ Encoder::Encoder(const fs::path& dest, const std::string& shown, int w, int h, d
                              "18", "-movflags", "+faststart", "-f", "mp4", part_.string()});
   }
   int fds[2];
-  if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  make_pipe(fds);
   try {
-    pid_ = spawn(args, fds[0]);
+    pid_ = spawn_process(args, fds[0]);
   } catch (...) {
     close(fds[0]);
     close(fds[1]);
@@ -116,8 +57,7 @@ Encoder::Encoder(const fs::path& dest, const std::string& shown, int w, int h, d
 Encoder::~Encoder() {
   if (fd_ >= 0) close(fd_);
   if (pid_ > 0) {  // unfinished (an error): stop it rather than let it complete a file
-    kill(pid_, SIGKILL);
-    waitpid(pid_, nullptr, 0);
+    kill_process(pid_);
     set_child_process(0);
   }
   remove_temporaries();
@@ -151,9 +91,7 @@ void Encoder::write(const Image& img) {
 }
 
 void Encoder::wait_for_child(const char* what) {
-  int status = 0;
-  while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
-  }
+  const int status = wait_process(pid_);
   pid_ = -1;
   set_child_process(0);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
@@ -162,7 +100,7 @@ void Encoder::wait_for_child(const char* what) {
 
 void Encoder::run_to_end(std::vector<std::string> args) {
   args.insert(args.begin(), {ffmpeg_, "-nostdin", "-y", "-loglevel", "error"});
-  pid_ = spawn(args, -1);
+  pid_ = spawn_process(args);
   set_child_process(pid_);
   wait_for_child("writing");
 }

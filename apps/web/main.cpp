@@ -14,6 +14,7 @@
 #include "core/text/echo.hpp"
 #include "core/vessel/vessel.hpp"
 #include "gpu/renderer.hpp"
+#include "gpu/screen_texture.hpp"
 
 #include <GLES3/gl3.h>
 #include <emscripten/emscripten.h>
@@ -94,6 +95,10 @@ struct App {
   double startup_ms = 0;
   double cpu_ms = 0;  // smoothed time spent in frame(): simulation, bubble placement, GL calls
   std::string error;  // a failure that stopped drawing
+  // The page's live picture for the screen (screen.source ""): the size of the last frame
+  // page.js uploaded from its <video> element or the camera, and how many it uploaded.
+  int screen_w = 16, screen_h = 9;
+  long screen_frames = 0;
 };
 
 App* app = nullptr;
@@ -192,6 +197,7 @@ void frame() {
   try {
     app->sim->advance(*app->rig.driver, t);
     FrameState f = app->sim->frame();
+    if (f.screen.external) f.screen.set_external_size(app->screen_w, app->screen_h, f.params);  // the card takes its aspect
     if (app->quality.events_cap)
       f.params.render.max_events = std::min(f.params.render.max_events, app->quality.events_cap);
     emscripten_webgl_make_context_current(app->gl);
@@ -244,6 +250,16 @@ EM_BOOL on_context_restored(int, const void*, void*) {
   app->last = -1;  // the pause is no frame time
   app->quality.samples = 0;
   return EM_TRUE;
+}
+
+// The file of a video screen.source names that the page plays itself (the module decodes
+// no video), in the module's file system; "" for none.
+std::string app_video(const std::string& source) {
+  try {
+    return screen_source_played_by_app(source) ? resolve_screen_source(source).string() : std::string();
+  } catch (const std::exception&) {
+    return "";
+  }
 }
 
 InputRig make_rig(const std::string& name) {
@@ -367,6 +383,10 @@ EMSCRIPTEN_KEEPALIVE const char* draught_status() {
             {"fraction", app->sim && app->sim->vessel(app->scene.selected) ? app->sim->vessel(app->scene.selected)->fraction() : 0.0},
             {"tilt", selected_tilt_degrees()},
             {"context_lost", app->context_lost},
+            {"screen_mode", app->scene.params.screen.mode},
+            {"screen_file", app_video(app->scene.params.screen.source)},
+            {"screen_frames", app->screen_frames},
+            {"screen_size", std::to_string(app->screen_w) + "x" + std::to_string(app->screen_h)},
             {"context_restores", app->restores},
             {"error", app->error}};
   return answer_json(j);
@@ -669,6 +689,31 @@ EMSCRIPTEN_KEEPALIVE void draught_touch(int kind, int id, double x, double y, do
 EMSCRIPTEN_KEEPALIVE void draught_device_motion(double t, double gx, double gy, double gz, double ax, double ay,
                                                 double az) {
   if (app && app->rig.device) app->rig.device->motion(t, {gx, gy, gz}, {ax, ay, az});
+}
+
+// The screen's live picture from the page (screen.source "": page.js plays a video file the
+// user picked, or the camera, in a <video> element). A new frame of width x height goes into
+// the screen's back texture, whose GL name this returns (page.js finds its WebGLTexture in
+// Emscripten's GL.textures and uploads the element with texSubImage2D, rows top-down), then
+// draught_screen_commit shows it; the texture drawn from is never written. 0: no texture
+// now (no renderer, a lost context) or a frame larger than a screen shows.
+EMSCRIPTEN_KEEPALIVE unsigned draught_screen_begin(int width, int height) {
+  if (!app || !app->renderer || app->context_lost) return 0;
+  if (width < 1 || height < 1 || width > kMaxVideoSide || height > kMaxVideoSide ||
+      (long long)width * height > kMaxVideoPixels)
+    return 0;
+  emscripten_webgl_make_context_current(app->gl);
+  return app->renderer->screen_texture().begin_external(width, height);
+}
+
+// The frame draught_screen_begin gave the texture for is complete: mipmaps, then shown.
+EMSCRIPTEN_KEEPALIVE void draught_screen_commit(int width, int height) {
+  if (!app || !app->renderer || app->context_lost) return;
+  emscripten_webgl_make_context_current(app->gl);
+  app->renderer->screen_texture().commit_external();
+  app->screen_w = width;
+  app->screen_h = height;
+  ++app->screen_frames;
 }
 
 // screen.orientation.angle

@@ -145,6 +145,8 @@
       touch: fn('draught_touch', null, ['number', 'number', 'number', 'number', 'number', 'number']),
       motion: fn('draught_device_motion', null, ['number', 'number', 'number', 'number', 'number', 'number', 'number']),
       screen: fn('draught_screen_orientation', null, ['number']),
+      screenBegin: fn('draught_screen_begin', 'number', ['number', 'number']),
+      screenCommit: fn('draught_screen_commit', null, ['number', 'number']),
     });
     page.api = api;
     const scale = parseFloat(query.get('scale') || '0') || 0;
@@ -162,6 +164,7 @@
     buildObjectPicker();
     buildPanel();
     wireButtons();
+    wireScreen();
     wireInput();
     setInterval(showStatus, 250);
     page.ready = true;
@@ -205,6 +208,7 @@
     if (!s.adaptive) q += ' (fixed)';
     $('quality').textContent = `${q} · ${s.width}×${s.height} · ${shown.toFixed(shown < 10 ? 1 : 0)} fps`;
     $('input').textContent = 'input: ' + s.input;
+    followModuleVideo(s.screen_file || '');
     $('selected').textContent = objects.length > 1 ? ` · ${objects[selected].name} (${selected + 1} of ${objects.length})` : '';
     if (s.error && s.error !== shownError) {
       shownError = page.error = s.error;
@@ -631,6 +635,167 @@
         say('motion sensors: ' + (e.message || e), true);
       }
     });
+  }
+
+  // ---- the screen's live picture: a video file the user picks, or the camera ----
+  // It plays in a <video> element; each new frame of it (requestVideoFrameCallback where
+  // the browser has it, else whenever its time moves) goes into the screen's back texture:
+  // the module gives the GL name (draught_screen_begin), Emscripten's GL.textures the
+  // WebGLTexture, texSubImage2D the upload, draught_screen_commit shows it. A source that
+  // fails (not a video the browser plays, a refused camera, frames too large) changes
+  // nothing: the one playing before plays on.
+  const kMaxScreenSide = 4096, kMaxScreenPixels = 4096 * 2160;  // core/io/video_source.hpp
+  const live = { video: null, stream: null, name: '', uploads: 0 };
+  page.screen = {
+    uploads: () => live.uploads,
+    source: () => live.name,
+    video: () => live.video,
+  };
+
+  function uploadFrame(v) {
+    const w = v.videoWidth, h = v.videoHeight;
+    if (!w || !h || v.readyState < 2) return false;
+    const id = api.screenBegin(w, h);
+    if (!id) return false;  // no renderer now (a lost context)
+    const gl = M.GL.currentContext.GLctx;
+    gl.bindTexture(gl.TEXTURE_2D, M.GL.textures[id]);
+    gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, false);  // rows top-down, as the screen reads them
+    gl.pixelStorei(gl.UNPACK_PREMULTIPLY_ALPHA_WEBGL, false);
+    gl.pixelStorei(gl.UNPACK_COLORSPACE_CONVERSION_WEBGL, gl.NONE);
+    try {
+      gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, gl.RGBA, gl.UNSIGNED_BYTE, v);
+    } finally {
+      api.screenCommit(w, h);
+    }
+    ++live.uploads;
+    return true;
+  }
+
+  // Uploads every new frame of `v` while it is the live source.
+  function follow(v) {
+    if (typeof v.requestVideoFrameCallback === 'function') {
+      const onFrame = () => {
+        if (live.video !== v) return;
+        uploadFrame(v);
+        v.requestVideoFrameCallback(onFrame);
+      };
+      v.requestVideoFrameCallback(onFrame);
+      return;
+    }
+    let last = -1;
+    const tick = () => {
+      if (live.video !== v) return;
+      if (v.currentTime !== last && uploadFrame(v)) last = v.currentTime;
+      requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  }
+
+  // Makes `v` (playing, its first frame loaded) the live source; the screen shows what the
+  // page streams (screen.source "") and comes on as a card when it was off.
+  function adopt(v, stream, name, keepSource = false) {
+    const w = v.videoWidth, h = v.videoHeight;
+    if (w > kMaxScreenSide || h > kMaxScreenSide || w * h > kMaxScreenPixels) {
+      stopTracks(stream);
+      return `${name}: frames of ${w} x ${h} pixels, larger than a screen shows (at most ${kMaxScreenSide} a side and 4096 x 2160 in all)`;
+    }
+    const old = live.video, oldStream = live.stream;
+    Object.assign(live, { video: v, stream, name, fromModule: keepSource });
+    if (old) old.pause();
+    stopTracks(oldStream);
+    let err = keepSource ? '' : api.setParam('screen.source', '');
+    const mode = JSON.parse(api.getParam('screen.mode'));
+    if (!err && mode.value === 'off') err = api.setParam('screen.mode', 'card');
+    refreshValues();
+    uploadFrame(v);
+    follow(v);
+    return err;
+  }
+  function stopTracks(stream) {
+    if (stream) for (const t of stream.getTracks()) t.stop();
+  }
+
+  // A <video> element for `setup` (it sets src or srcObject), muted and looping, resolved
+  // once its first frame is there, rejected with a message when it cannot play.
+  function playable(setup, name) {
+    return new Promise((resolve, reject) => {
+      const v = document.createElement('video');
+      v.muted = true;
+      v.loop = true;
+      v.playsInline = true;
+      v.crossOrigin = 'anonymous';
+      v.addEventListener('loadeddata', () => v.play().then(() => resolve(v), (e) => reject(`${name}: cannot play (${e.message || e})`)), { once: true });
+      v.addEventListener('error', () => {
+        const code = v.error ? v.error.code : 0;
+        const why = { 1: 'loading was aborted', 2: 'a network error', 3: 'it could not be decoded', 4: 'not a video this browser plays' }[code] || 'it could not be played';
+        reject(`${name}: ${why}; the screen keeps what it showed`);
+      }, { once: true });
+      setup(v);
+    });
+  }
+
+  async function useVideoFile(file, keepSource = false) {
+    const url = URL.createObjectURL(file);
+    try {
+      const v = await playable((v) => (v.src = url), file.name);
+      const err = adopt(v, null, file.name, keepSource);
+      say(err || `the screen plays ${file.name} (${v.videoWidth} x ${v.videoHeight})`, !!err);
+      return err;
+    } catch (e) {
+      URL.revokeObjectURL(url);
+      say(String(e), true);
+      return String(e);
+    }
+  }
+
+  async function useCamera() {
+    let stream;
+    try {
+      if (!navigator.mediaDevices || !navigator.mediaDevices.getUserMedia) throw new Error('this browser offers no camera (getUserMedia) here');
+      stream = await navigator.mediaDevices.getUserMedia({ video: { width: { ideal: 1280 }, height: { ideal: 720 }, facingMode: 'environment' }, audio: false });
+      const v = await playable((v) => (v.srcObject = stream), 'the camera');
+      const err = adopt(v, stream, 'the camera');
+      say(err || `the screen shows the camera (${v.videoWidth} x ${v.videoHeight}); screen.mode background puts it behind the glass`, !!err);
+      return err;
+    } catch (e) {
+      stopTracks(stream);
+      const msg = 'camera: ' + (e && e.message ? e.message : String(e)) + '; the screen keeps what it showed';
+      say(msg, true);
+      return msg;
+    }
+  }
+  // A video screen.source names (a preset's shipped clip: the module decodes no video) is
+  // read from the module's files and played here; when the source moves on, it stops.
+  let moduleVideo = '';
+  function followModuleVideo(file) {
+    if (file === moduleVideo) return;
+    moduleVideo = file;
+    if (!file) {
+      if (live.fromModule && live.video) {
+        live.video.pause();
+        Object.assign(live, { video: null, stream: null, name: '', fromModule: false });
+      }
+      return;
+    }
+    try {
+      const bytes = M.FS.readFile(file);
+      const name = file.split('/').pop();
+      useVideoFile(new File([bytes], name, { type: /\.webm$/i.test(name) ? 'video/webm' : 'video/mp4' }), true);
+    } catch (e) {
+      say(`${file}: cannot be read (${e.message || e})`, true);
+    }
+  }
+
+  page.screen.useFile = useVideoFile;
+  page.screen.useCamera = useCamera;
+
+  function wireScreen() {
+    $('screen-file').addEventListener('change', (e) => {
+      const file = e.target.files[0];
+      e.target.value = '';
+      if (file) useVideoFile(file);
+    });
+    $('screen-camera').addEventListener('click', () => useCamera());
   }
 
   // ---- input ----

@@ -4,6 +4,7 @@
 #include "gpu/decal_textures.hpp"
 #include "gpu/program.hpp"
 #include "gpu/scene_data.hpp"
+#include "gpu/screen_texture.hpp"
 
 #include <GLES3/gl3.h>
 
@@ -68,7 +69,8 @@ void bind_interface(const Program& program, const std::string& what) {
   glUseProgram(program.id());
   for (const contract::Sampler& s : {contract::kObjectSampler, contract::kKnotsSampler, contract::kFloorLightSampler,
                                        contract::kBackdropLightSampler, contract::kEnvImageSampler,
-                                       contract::kDecalImagesSampler, contract::kDecalArcsSampler})
+                                       contract::kDecalImagesSampler, contract::kDecalArcsSampler,
+                                       contract::kScreenSampler})
     if (GLint at = glGetUniformLocation(program.id(), s.name); at >= 0) glUniform1i(at, s.unit);
 }
 }  // namespace
@@ -81,6 +83,8 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kDebug) frag = with_define(std::move(frag), "DEBUG_VIEWS");
   if (variant & kImage) frag = with_define(std::move(frag), "ENV_IMAGE");
   if (variant & kDecals) frag = with_define(std::move(frag), "DECALS");
+  if (variant & (kScreenCard | kScreenBackground))  // 1: a card in the scene, 2: the background
+    frag = with_define(std::move(frag), "SCREEN", variant & kScreenCard ? "1" : "2");
   if (const int held = variant >> kHeldShift)
     frag = with_define(std::move(frag), "HELD_OBJECTS", std::to_string(held));
   auto program = std::make_unique<Program>(vert, frag);
@@ -93,6 +97,7 @@ Renderer::Renderer(const std::filesystem::path& shader_dir) : shader_dir_(shader
   programs_[0] = build_program(0);  // compiles now, so a broken shader is reported at once
   textures_ = std::make_unique<SceneTextures>();
   decals_ = std::make_unique<DecalTextures>();
+  screen_ = std::make_unique<ScreenTexture>();
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &ubo_);
   glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
@@ -113,11 +118,14 @@ void Renderer::set_floor_light(const FloorLightSettings& s, bool on, int draft_p
 void Renderer::draw(const FrameState& f, int width, int height, DebugView debug, int event) {
   textures_->update(f);  // only rows that changed; the floor's light when its inputs did
   const bool decals = decals_->update(f);  // the images when they change, arc rows when a glass does
+  screen_->update(f.screen);  // only when another frame comes, into the texture not drawn from
+  screen_->bind();
   textures_->bind();  // (after the updates, which bind what they upload to the active unit)
   if (decals) decals_->bind();
   contract::FrameBlock block = pack_frame_block(f, width, height, debug, event);
   textures_->describe_floor_light(block);
   textures_->describe_backdrop_light(block);
+  pack_screen(f, width, height, block);
   glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
   glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof block, &block);
   glBindBufferBase(GL_UNIFORM_BUFFER, contract::kFrameBlockBinding, ubo_);
@@ -134,7 +142,9 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   const int objects = int(f.vessels.size());
   const int held = held_objects_ && objects >= 1 && objects <= kMaxHeldObjects ? objects : 0;
   const int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0) | (debug != DebugView::None ? kDebug : 0) |
-                      (f.environment.image ? kImage : 0) | (decals ? kDecals : 0) | (held << kHeldShift);
+                      (f.environment.image ? kImage : 0) | (decals ? kDecals : 0) | (held << kHeldShift) |
+                      (f.screen.mode == ScreenMode::Card ? kScreenCard : 0) |
+                      (f.screen.mode == ScreenMode::Background ? kScreenBackground : 0);
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
   glUseProgram(program->id());

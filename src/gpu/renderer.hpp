@@ -19,6 +19,7 @@ namespace draught::gpu {
 class DecalTextures;
 class Program;
 class SceneTextures;
+class ScreenTexture;
 
 // Debug views, declared in src/interface/constants.def (shared with the shaders).
 using contract::DebugView;
@@ -71,6 +72,9 @@ class Renderer {
   // The scene's data textures (tests check what a frame uploads).
   const SceneTextures& scene_textures() const { return *textures_; }
   const DecalTextures& decal_textures() const { return *decals_; }
+  // The screen's picture (gpu/screen_texture): uploaded from the frame's screen, or
+  // streamed into by the app (the web page's video and camera).
+  ScreenTexture& screen_texture() { return *screen_; }
   // Scenes of up to kMaxHeldObjects objects are drawn with a shader variant that holds
   // every object's records per pixel (object loops resolved at compile time; the same
   // pictures, much faster on llvmpipe). Four: a tasting flight; every held object costs
@@ -89,7 +93,7 @@ class Renderer {
   // What the path pass is compiled with (software rasterizers pay for code even where a
   // uniform branch skips it, so frames get only the code they use): these bits, and the
   // number of held objects (0: the general path) from bit kHeldShift on.
-  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kHeldShift = 5 };
+  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kScreenCard = 32, kScreenBackground = 64, kHeldShift = 7 };
   std::unique_ptr<Program> build_program(int variant) const;
 
   std::filesystem::path shader_dir_;
@@ -97,6 +101,7 @@ class Renderer {
   std::unique_ptr<Program> bubble_program_;  // pass 2: rising bubbles, built when first needed
   std::unique_ptr<SceneTextures> textures_;  // u_objects, u_knots, u_floor_light
   std::unique_ptr<DecalTextures> decals_;    // u_decal_images, u_decal_arcs
+  std::unique_ptr<ScreenTexture> screen_;    // u_screen
   unsigned bubble_vao_ = 0, bubble_vbo_ = 0;
   unsigned vao_ = 0, ubo_ = 0;
   bool held_objects_ = true;

@@ -130,6 +130,9 @@ INSTANTIATE_TEST_SUITE_P(
         GoldenCase{"tulip_amber_studio_image",
                    {"amber-ale", "tulip", {"env.mode=image", "env.image=studio", "env.rotation=40", "env.blur=4"}, {}},
                    160, 160, 3, 0.002, 64},
+        // The screen (issue 12): the shipped clip's frame at 1 s (presets/videos/draught-loop.mp4,
+        // decoded by ffmpeg with bit-exact colour conversion) on a card behind a pint of lager.
+        GoldenCase{"pint_lager_screen", {"screen-lager", "", {}, {}}, 160, 160, 3, 0.002, 64},
         GoldenCase{"flight", {}, 256, 128, 3, 0.002, 64, nullptr, 0, flight_front},
         GoldenCase{"flight_angle", {}, 192, 144, 3, 0.002, 64, nullptr, 0, flight_angle},
         // Decals (docs/DECALS.md): an enamel wordmark on the front; the same on the back,

@@ -2,6 +2,7 @@
 // downloaded browser), the static server, pictures read back from the canvas.
 import { chromium } from 'playwright-core';
 import fs from 'node:fs';
+import { spawnSync } from 'node:child_process';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { serve, defaultRoot } from './server.mjs';
@@ -21,14 +22,28 @@ export const chromiumFlags = [
   '--disable-sync',
   '--no-first-run',
   '--disable-quic',
+  // The camera: chromium's own test pattern (a moving picture), granted without asking.
+  '--use-fake-device-for-media-stream',
+  '--use-fake-ui-for-media-stream',
+  '--autoplay-policy=no-user-gesture-required',
 ];
+
+// The fake camera plays a clip whose colours turn a full circle every second, so every part
+// of its picture moves (chromium's own pattern moves only a small disc); without ffmpeg,
+// chromium's own.
+function fakeCamera() {
+  const clip = path.join(artifacts, 'fake-camera.y4m');
+  const made = spawnSync('ffmpeg', ['-nostdin', '-y', '-loglevel', 'error', '-f', 'lavfi', '-i',
+    'testsrc2=size=320x180:rate=15:duration=2,hue=H=2*PI*t', '-pix_fmt', 'yuv420p', clip]);
+  return made.status === 0 ? [`--use-file-for-fake-video-capture=${clip}`] : [];
+}
 
 export async function start() {
   if (!fs.existsSync(path.join(defaultRoot, 'draught.wasm'))) throw new Error(`${defaultRoot}/draught.wasm is missing: run scripts/build-web.sh`);
   fs.mkdirSync(artifacts, { recursive: true });
   const server = await serve(0);
   const executablePath = process.env.CHROMIUM || '/usr/bin/chromium';
-  const browser = await chromium.launch({ executablePath, args: chromiumFlags, headless: true });
+  const browser = await chromium.launch({ executablePath, args: [...chromiumFlags, ...fakeCamera()], headless: true });
   const base = `http://127.0.0.1:${server.address().port}/`;
   return {
     browser,

@@ -4,6 +4,7 @@
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
+import { spawnSync } from 'node:child_process';
 import { start, openPage, waitFrames, snapshot, difference, blockDifference, stats, artifacts } from './lib.mjs';
 
 const tests = [];
@@ -727,6 +728,134 @@ test('a lost WebGL context is restored: programs and textures rebuilt, drawing a
 
     // And it keeps working: an edit changes the picture.
     await editStillWorks(page, 'env.sky_horizon', '0.5,0,0');  // the whole backdrop, not one glass of three
+    assert.deepEqual(pageErrors(page), []);
+  } finally {
+    await page.context().close();
+  }
+});
+
+// ---- the screen: the camera and a video file seen through the drink ----
+
+// The canvas pixels (x, y) where the drink is the first thing seen (the module's own picking),
+// on a grid, a few pixels in from the glass's edges.
+async function drinkPixels(page) {
+  return page.evaluate(() => {
+    const c = document.getElementById('canvas').getBoundingClientRect();
+    const out = [];
+    for (let y = 4; y < c.height - 4; y += 2)
+      for (let x = 4; x < c.width - 4; x += 2) {
+        let inside = true;
+        for (const [dx, dy] of [[0, 0], [-4, 0], [4, 0], [0, -4], [0, 4]]) inside = inside && window.draught.pick(x + dx, y + dy) >= 0;
+        if (inside) out.push([x, y]);
+      }
+    return out;
+  });
+}
+// Mean absolute difference per channel over those pixels.
+function differenceAt(a, b, pixels) {
+  let sum = 0;
+  for (const [x, y] of pixels)
+    for (let c = 0; c < 3; ++c) sum += Math.abs(a.data[4 * (y * a.width + x) + c] - b.data[4 * (y * a.width + x) + c]);
+  return sum / Math.max(1, 3 * pixels.length);
+}
+const uploads = (page) => page.evaluate(() => window.draught.screen.uploads());
+async function waitUploads(page, n) {
+  const u0 = await uploads(page);
+  await page.waitForFunction((u) => window.draught.screen.uploads() >= u, u0 + n, { timeout: 30000, polling: 50 });
+}
+
+test('the camera on the screen: its moving picture is seen through the drink', async () => {
+  const page = await openPage(env);
+  try {
+    await page.evaluate(() => window.draught.setParam('bubbles.max_bubbles', '0'));  // nothing else moves
+    await waitFrames(page, 3);
+    const plain = await snapshot(page);
+    const inDrink = await drinkPixels(page);
+    assert.ok(inDrink.length > 100, `the drink covers ${inDrink.length} grid pixels`);
+    const still = differenceAt(plain, (await waitFrames(page, 3), await snapshot(page)), inDrink);
+
+    assert.equal(await page.evaluate(() => window.draught.screen.useCamera()), '');
+    assert.match((await message(page)).text, /the screen shows the camera \(\d+ x \d+\)/);
+    const v = await values(page);
+    assert.equal(v['screen.mode'], 'card', 'the screen came on as a card');
+    assert.equal(v['screen.source'], '', 'fed by the page');
+    assert.equal(await page.evaluate(() => window.draught.setParam('screen.mode', 'background')), '');
+    await waitUploads(page, 5);
+    await waitFrames(page, 2);
+    const a = await snapshot(page);
+    await waitUploads(page, 4);
+    await waitFrames(page, 2);
+    const b = await snapshot(page);
+    const st = await status(page);
+    assert.ok(st.screen_frames >= 9, `frames uploaded: ${st.screen_frames}`);
+    assert.equal(st.screen_size, '320x180', 'the fake camera plays the test clip');
+    const moved = differenceAt(a, b, inDrink), versusPlain = differenceAt(plain, a, inDrink);
+    note(`camera ${st.screen_size}: through the drink it moved ${moved.toFixed(2)} between frames (a still scene ${still.toFixed(2)}); differs ${versusPlain.toFixed(1)} from the studio`);
+    assert.ok(versusPlain > 10, `the camera's picture is behind the drink: ${versusPlain.toFixed(1)}`);
+    assert.ok(moved > Math.max(1.0, 4 * still), `the picture moves through the drink: ${moved.toFixed(2)} (still: ${still.toFixed(2)})`);
+    await page.screenshot({ path: path.join(artifacts, 'screen-camera.png') });
+    assert.deepEqual(pageErrors(page), []);
+  } finally {
+    await page.context().close();
+  }
+});
+
+test('a video file on the screen plays behind the glass; a file that is no video changes nothing', async () => {
+  const clip = path.join(artifacts, 'screen-test.webm');
+  const made = spawnSync('ffmpeg', ['-nostdin', '-y', '-loglevel', 'error', '-f', 'lavfi', '-i',
+    'testsrc2=size=160x90:rate=25:duration=3,hue=H=2*PI*t', '-c:v', 'libvpx', '-b:v', '400k', '-pix_fmt', 'yuv420p', clip]);
+  assert.equal(made.status, 0, `ffmpeg made the test clip: ${made.stderr}`);
+  const page = await openPage(env);
+  try {
+    await page.evaluate(() => window.draught.setParam('bubbles.max_bubbles', '0'));
+    const inDrink = await drinkPixels(page);
+    await page.setInputFiles('#screen-file', clip);
+    await page.waitForFunction(() => /the screen plays screen-test\.webm/.test(document.getElementById('message').textContent), null, { timeout: 30000 });
+    await waitUploads(page, 5);
+    await waitFrames(page, 2);
+    const a = await snapshot(page);
+    await waitUploads(page, 5);
+    await waitFrames(page, 2);
+    const b = await snapshot(page);
+    const moved = differenceAt(a, b, inDrink);
+    note(`video through the drink moved ${moved.toFixed(2)}`);
+    assert.ok(moved > 1.0, `the video moves behind the glass: ${moved.toFixed(2)}`);
+    assert.equal((await status(page)).screen_size, '160x90');
+
+    const before = await uploads(page);
+    await page.setInputFiles('#screen-file', { name: 'notes.webm', mimeType: 'video/webm', buffer: Buffer.from('not a video at all') });
+    await page.waitForFunction(() => /notes\.webm/.test(document.getElementById('message').textContent), null, { timeout: 30000 });
+    const m = await message(page);
+    assert.ok(m.error, 'shown as an error');
+    assert.match(m.text, /notes\.webm: .*the screen keeps what it showed/);
+    await waitUploads(page, 3);  // the clip before plays on
+    assert.ok((await uploads(page)) > before);
+    assert.equal(await page.evaluate(() => window.draught.screen.source()), 'screen-test.webm');
+    assert.deepEqual(pageErrors(page), []);
+  } finally {
+    await page.context().close();
+  }
+});
+
+test('the shipped screen scene plays its clip through the browser', async () => {
+  const page = await openPage(env);
+  try {
+    await page.selectOption('#drink', 'screen-lager');
+    await page.waitForFunction(() => window.draught.status().screen_file === '/presets/videos/draught-loop.mp4', null, { timeout: 30000 });
+    await page.waitForFunction(() => window.draught.screen.uploads() >= 5, null, { timeout: 30000, polling: 50 });
+    const st = await status(page);
+    assert.equal(st.screen_size, '480x270');
+    assert.equal((await values(page))['screen.source'], 'draught-loop', 'the preset keeps its source');
+    assert.match((await message(page)).text, /the screen plays draught-loop\.mp4/);
+    await waitFrames(page, 2);
+    await page.screenshot({ path: path.join(artifacts, 'screen-lager.png') });
+    // Back to a drink without a screen: the clip stops.
+    await page.selectOption('#drink', 'lager');
+    await page.waitForFunction(() => window.draught.status().screen_file === '', null, { timeout: 10000 });
+    await page.waitForTimeout(600);
+    const u = await uploads(page);
+    await page.waitForTimeout(600);
+    assert.equal(await uploads(page), u, 'no uploads once the screen is gone');
     assert.deepEqual(pageErrors(page), []);
   } finally {
     await page.context().close();

@@ -104,6 +104,9 @@ vec3 shade_floor(vec3 p, vec3 n, vec3 d, float dist, bool occluded) {
 // What a ray from o in the air sees past the glasses: the nearest of a light's front
 // and the backdrop (shaded), else the sky. roughness: of the surface that sent it.
 vec3 background(vec3 o, vec3 d, float roughness) {
+#if defined(SCREEN) && SCREEN == 2
+  return sky_seen(d, roughness);  // the AR view: the picture is what lies behind (lib/environment/screen.glsl)
+#endif
   float tb, tl;
   vec3 nb;
   bool on_backdrop = intersect(backdrop_surface(), o, d, 0.0, tb, nb);

@@ -8,6 +8,7 @@
 #include "generated/frame.glsl"
 #include "lib/common/math.glsl"
 #include "lib/environment/studio.glsl"
+#include "lib/environment/screen.glsl"
 
 struct AreaLight {
   bool sphere;
@@ -153,7 +154,7 @@ vec3 rig_irradiance_far(vec3 x, vec3 n, int count) {
 // (symmetric about the edge, so the box's area is kept).
 float soft_box(float s, float w) { return 1.0 - smoothstep(1.0 - w, 1.0 + w, abs(s)); }
 
-// The nearest light front the ray o + t d (d unit) meets before t_max: rgb its radiance,
+// The nearest light front (or the screen card's) the ray o + t d (d unit) meets before t_max: rgb its radiance,
 // a the part of the pixel's ray it covers (its edges spread by the GGX roughness of the
 // surface that sent the ray, symmetrically so its solid angle and its light are kept; a
 // hair at least, against aliasing). t: where, INF for none. Behind a partly covering
@@ -195,12 +196,18 @@ vec4 lights_seen(vec3 o, vec3 d, float roughness, float t_max, out float t) {
       seen = vec4(l.radiance, cover);
     }
   }
+#if defined(SCREEN) && SCREEN == 1
+  seen = screen_with_light(seen, o, d, roughness, t_max, t);  // the screen card, a front like a light's
+#endif
   return seen;
 }
 
 // What a ray from o sees of the surroundings without the backdrop (from inside a glass
 // or a drink, where the way out is not traced): a light's front, else the sky.
 vec3 lights_and_sky(vec3 o, vec3 d, float roughness) {
+#if defined(SCREEN) && SCREEN == 2
+  return sky_seen(d, roughness);  // the AR view: the rig's lights show only in outer reflections
+#endif
   float tl;
   vec4 light = lights_seen(o, d, roughness, INF, tl);
   return light.rgb * light.a + sky_seen(d, roughness) * (1.0 - light.a);

@@ -6,6 +6,7 @@
 #include "generated/frame.glsl"
 #include "lib/common/math.glsl"
 #include "lib/environment/image.glsl"
+#include "lib/environment/screen.glsl"
 
 // The sky's radiance in direction d. Twin of Studio::sky
 // (core/environment/studio.cpp). Under an environment image (the ENV_IMAGE variant) the
@@ -38,6 +39,9 @@ vec3 studio_backdrop(vec3 d) {
 // the level of detail of the reflected lobe (twin of Studio::sky(d, roughness)); the
 // procedural studio is smooth enough to be read as it is.
 vec3 sky_seen(vec3 d, float roughness) {
+#if defined(SCREEN) && SCREEN == 2
+  return screen_background(d, roughness);  // the screen is the background (the AR view)
+#endif
 #ifdef ENV_IMAGE
   return env_image(d, roughness);
 #else

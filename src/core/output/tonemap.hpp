@@ -18,6 +18,17 @@ inline double aces_filmic(double x) {
   return std::clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
 }
 
+// Its inverse on [0, 1]: the linear value aces_filmic maps to y (the root of a quadratic;
+// y = 1 has a finite preimage, 7.2, since the fit tends to 1.033). Twin of
+// aces_filmic_inverse in lib/output/tonemap.glsl.
+inline double aces_filmic_inverse(double y) {
+  y = std::clamp(y, 0.0, 1.0);
+  const double a = 2.43 * y - 2.51, b = 0.59 * y - 0.03, c = 0.14 * y;
+  return std::max(0.0, (-b - std::sqrt(std::max(b * b - 4 * a * c, 0.0))) / (2 * a));
+}
+
+inline double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
+
 inline double linear_to_srgb(double c) {
   c = std::clamp(c, 0.0, 1.0);
   return c < 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;

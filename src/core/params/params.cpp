@@ -1,6 +1,7 @@
 #include "core/params/params.hpp"
 
 #include "core/environment/environment_files.hpp"
+#include "core/environment/screen.hpp"
 #include "core/vessel/decal_files.hpp"
 #include "core/io/files.hpp"
 #include "core/params/param_row.hpp"
@@ -77,6 +78,34 @@ void add_decal_rows(std::vector<ParamDesc>& rows, const std::string& g, const st
       "Multiplies the image's alpha (0: the decal is not there)"));
   rows.push_back(param_row<ParamType::Float, Group, &D::roughness>(g + ".roughness", 0.005f, 1.0f, "",
       "Roughness of a metallic decal: how much it blurs the lights it mirrors (polished gold 0.05, satin gold 0.3)"));
+// The screen (core/environment/screen.hpp): a moving picture behind and through the glass.
+void add_screen_rows(std::vector<ParamDesc>& rows) {
+  const std::vector<ParamDesc> screen = {
+      ROW(SceneParams, screen, mode, Enum, 0, 0, "",
+          "off: no screen; card: a screen showing screen.source in the scene, placed like a light (screen.direction, "
+          "distance, width, height) and seen through the drinks; background: screen.source is the whole background "
+          "(the AR view: a phone's camera seen through the beer; no floor)",
+          (std::vector<std::string>{"off", "card", "background"})),
+      with_file_check(ROW(SceneParams, screen, source, File, 0, 0, "",
+                          "What the screen shows: a video file (decoded by ffmpeg), a folder of PNG frames, a pattern "
+                          "such as clip/frame_%04d.png, a PNG file, or a shipped clip (draught-loop); \"\": the app "
+                          "streams it (the web page's video or camera)"),
+                      &check_screen_source),
+      ROW(SceneParams, screen, fps, Float, 0.0f, 240.0f, "1/s",
+          "Frames per second the source plays at (0: the video's own rate; 25 for a PNG sequence)"),
+      ROW(SceneParams, screen, loop, Bool, 0.0f, 1.0f, "", "Play the source from its start again after its last frame (else hold the last)"),
+      ROW(SceneParams, screen, start, Float, 0.0f, 36000.0f, "s", "Where in the source the scene's time 0 is (a still shows this moment)"),
+      ROW(SceneParams, screen, playing, Bool, 0.0f, 1.0f, "",
+          "Play as the scene's time runs (else hold screen.start); timelines start, seek and stop it with play, seek and stop"),
+      ROW(SceneParams, screen, direction, Vec3, -1.0f, 1.0f, "", "Direction from the scene's centre towards the card (normalised)"),
+      ROW(SceneParams, screen, distance, Float, 0.05f, 20.0f, "m", "Distance of the card from the scene's centre"),
+      ROW(SceneParams, screen, width, Float, 0.01f, 20.0f, "m", "Width of the card"),
+      ROW(SceneParams, screen, height, Float, 0.0f, 20.0f, "m", "Height of the card (0: from the picture's aspect)"),
+      ROW(SceneParams, screen, brightness, Float, 0.0f, 100.0f, "",
+          "Card: the radiance of a white pixel (1 is about as bright as the lit paper); background: 1 shows the picture "
+          "as it was taken"),
+  };
+  rows.insert(rows.end(), screen.begin(), screen.end());
 }
 
 std::vector<ParamDesc> make_table() {
@@ -95,6 +124,7 @@ std::vector<ParamDesc> make_table() {
                      "Deprecated, has no effect: the key light's size is light.width and light.height (m)"));
   add_light_rows<&SceneParams::strips>(rows, "strips", "each strip softbox (the right one mirrors the left)");
   add_light_rows<&SceneParams::backlight>(rows, "backlight", "the backlight");
+  add_screen_rows(rows);
   const std::vector<ParamDesc> rest = make_camera_and_render_rows();
   rows.insert(rows.end(), rest.begin(), rest.end());
   return rows;

@@ -78,6 +78,9 @@ enum class LightShape { Rect = 0, Sphere = 1 };
 // itself, seen from behind, is not seen).
 enum class LightFacing { Scene = 0, Away = 1 };
 enum class Tonemap { None = 0, Aces = 1 };
+// The screen (core/environment/screen.hpp): none, a card in the scene, or the whole
+// background (the AR view).
+enum class ScreenMode { Off = 0, Card = 1, Background = 2 };
 
 struct EnvParams {
   int mode = int(EnvMode::Studio);  // EnvMode
@@ -148,6 +151,26 @@ inline LightParams default_backlight() {
   return l;
 }
 
+// A moving picture seen through the drinks (core/environment/screen.hpp): a screen card
+// placed like a light, or the whole background; its source a video or a PNG sequence.
+struct ScreenParams {
+  int mode = int(ScreenMode::Off);  // ScreenMode
+  std::string source;               // a video, a PNG sequence or a shipped clip; "": the app streams it (web page)
+  float fps = 0.0f;                 // frames per second; 0: the video's own (kSequenceFps for a PNG sequence)
+  bool loop = true;                 // from the start again after the last frame; else it holds the last
+  float start = 0.0f;               // seconds into the source shown at the scene's time 0
+  bool playing = true;              // plays as the scene's time runs; false: holds screen.start
+  glm::vec3 direction{0.0f, 0.3f, -1.0f};  // from the scene's centre towards the card (behind the glasses)
+  float distance = 0.25f;           // m from the scene's centre
+  float width = 0.32f;              // m
+  float height = 0.0f;              // m; 0: from the picture's aspect
+  float brightness = 1.0f;          // card: radiance of a white texel; background: 1 shows the picture as it is
+  // Not a parameter: where a timeline's play, seek and stop actions put the source at the
+  // frame's time (s, resolved by Timeline::scene_at in double precision, so frame i of a
+  // clip is exactly i / fps); < 0: none, screen.start and screen.playing apply.
+  double timeline_position = -1;
+};
+
 struct CameraParams {
   bool auto_frame = true;  // place the camera to frame the scene; eye/target then only give the direction
   glm::vec3 eye{0.0f, 0.13f, 0.42f};
@@ -207,6 +230,7 @@ struct SceneParams {
   LightParams light;  // the key light
   LightParams strips = default_strips();
   LightParams backlight = default_backlight();
+  ScreenParams screen;
   CameraParams camera;
   RenderParams render;
 };

@@ -22,6 +22,7 @@ using nlohmann::json;
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+constexpr const char* kActionKinds = "tilt, rotate, shake, sip, orbit, set, pour, play, seek, stop";
 double rad(double deg) { return deg * kPi / 180.0; }
 
 // Progress of an action at time t, eased: 0 before, 1 after.
@@ -122,7 +123,7 @@ void parse_object(const Reader& r, const json& a, const std::string& at, Timelin
 TimelineAction parse_action(const Reader& r, const json& a, const std::string& at) {
   if (!a.is_object()) r.fail(at, "expected an action object, got " + short_dump(a));
   if (!a.contains("action"))
-    r.fail(at + ".action", "missing, expected one of tilt, rotate, shake, sip, orbit, set, pour");
+    r.fail(at + ".action", "missing, expected one of " + std::string(kActionKinds));
   const std::string kind = r.string(a, "action", at + ".action");
   TimelineAction act{};
   const double zero = 0, one = 1;
@@ -192,8 +193,23 @@ TimelineAction parse_action(const Reader& r, const json& a, const std::string& a
   } else if (kind == "pour") {
     check_keys(r, a, f, {"at", "action", "object"});
     act.kind = TimelineAction::Kind::Pour;
+  } else if (kind == "play" || kind == "seek" || kind == "stop") {
+    // The screen's source: the scene has one screen, so these take no object.
+    if (a.contains("object")) r.fail(f + "object", kind + " drives the scene's screen: it takes no object");
+    if (kind == "play") {
+      check_keys(r, a, f, {"at", "action", "from"});
+      act.kind = TimelineAction::Kind::Play;
+      if (a.contains("from")) act.position = r.number(a, "from", f + "from", 0, 36000, " (seconds into the source)");
+    } else if (kind == "seek") {
+      check_keys(r, a, f, {"at", "action", "to"});
+      act.kind = TimelineAction::Kind::Seek;
+      act.position = r.number(a, "to", f + "to", 0, 36000, " (seconds into the source)");
+    } else {
+      check_keys(r, a, f, {"at", "action"});
+      act.kind = TimelineAction::Kind::Stop;
+    }
   } else {
-    r.fail(at + ".action", "expected one of tilt, rotate, shake, sip, orbit, set, pour, got " + quote_input(kind));
+    r.fail(at + ".action", "expected one of " + std::string(kActionKinds) + ", got " + quote_input(kind));
   }
   parse_object(r, a, at, act);
   return act;
@@ -377,7 +393,31 @@ Scene Timeline::scene_at(double t, const Scene& base) const {
         set_param(v->params, *a.param, blended(a, get_param(v->params, *a.param), x));
   }
   if (orbit != 0) orbit_camera(s.params.camera, orbit);
+  s.params.screen.timeline_position =
+      screen_position_at(t, base.params.screen.start, base.params.screen.playing);
   return s;
+}
+
+double Timeline::screen_position_at(double t, double start, bool playing) const {
+  double position = start, since = 0;
+  for (const TimelineAction& a : actions) {  // sorted by `at`
+    if (a.at > t) break;
+    if (a.kind != TimelineAction::Kind::Play && a.kind != TimelineAction::Kind::Seek &&
+        a.kind != TimelineAction::Kind::Stop)
+      continue;
+    if (playing) position += a.at - since;
+    since = a.at;
+    if (a.kind == TimelineAction::Kind::Play) {
+      playing = true;
+      if (a.position >= 0) position = a.position;
+    } else if (a.kind == TimelineAction::Kind::Seek) {
+      position = a.position;
+    } else {
+      playing = false;
+    }
+  }
+  if (playing) position += t - since;
+  return std::max(position, 0.0);
 }
 
 void bind_timeline(Timeline& tl, const Scene& scene) {

@@ -10,7 +10,10 @@
 //       { "at": 0,   "action": "rotate", "degrees": 90, "duration": 2 },
 //       { "at": 0,   "action": "orbit",  "degrees": 45, "duration": 4 },
 //       { "at": 1,   "action": "set",    "param": "liquid.srm", "value": 12, "duration": 2 },
-//       { "at": 0,   "action": "pour" } ] }
+//       { "at": 0,   "action": "pour" },
+//       { "at": 1,   "action": "play", "from": 0 },
+//       { "at": 3,   "action": "seek", "to": 12.5 },
+//       { "at": 5,   "action": "stop" } ] }
 //
 // tilt: lean the glass `angle` degrees towards `toward` (degrees from screen right, +X,
 // towards the viewer, +Z), tipping on its foot; from wherever it leans at `at`.
@@ -20,6 +23,11 @@
 // and vectors blend over `duration`, others switch at `at`. pour: the glass is filled to
 // liquid.fill and a fresh head builds (foam.rise_time), then settles. Easing is smooth
 // (zero speed at both ends) unless "ease": "linear".
+// play, seek, stop drive the screen's source (core/environment/screen.hpp): play starts it
+// (from `from` seconds into the source when given, else where it stands), seek jumps to
+// `to` (playing on if it played), stop holds the frame it shows. Without them the source
+// plays from screen.start as the scene's time runs (unless screen.playing is false). The
+// position at time t is resolved by scene_at, so the frame shown is a function of t.
 //
 // In a scene of several objects, an action may carry "object": N (an index) or "object":
 // "name" (an object's name in the scene preset): tilt, rotate, shake, sip and pour then
@@ -48,13 +56,14 @@ inline constexpr int kTimelineFormat = 1;
 inline constexpr int kUnboundObject = -2;
 
 struct TimelineAction {
-  enum class Kind { Tilt, Rotate, Shake, Sip, Orbit, Set, Pour } kind;
+  enum class Kind { Tilt, Rotate, Shake, Sip, Orbit, Set, Pour, Play, Seek, Stop } kind;
   double at = 0, duration = 0;
   bool linear = false;
   double angle = 0, toward = 0;               // tilt (radians)
   double degrees = 0;                         // rotate, orbit (radians despite the name in JSON)
   double amplitude = 0, frequency = 0;        // shake (m, Hz); direction in `toward`
   double amount = 0;                          // sip
+  double position = -1;                       // play (from; < 0: where it stands), seek (to): seconds into the source
   const ParamDesc* param = nullptr;           // set
   ParamValue value;
   int index = 0;            // its place in the file's "actions" (for messages: actions[3])
@@ -84,8 +93,12 @@ struct Timeline {
   // The parameters at time t: `base` with the set and orbit actions applied (a single
   // glass: the actions for every object and for object 0).
   Params params_at(double t, const Params& base) const;
-  // The same for a scene: set actions reach every object, or the one they address.
+  // The same for a scene: set actions reach every object, or the one they address; the
+  // screen's position at t resolved from the play, seek and stop actions.
   Scene scene_at(double t, const Scene& base) const;
+  // Seconds into the screen's source at time t, from screen.start and screen.playing at 0
+  // and the play, seek and stop actions up to t.
+  double screen_position_at(double t, double start, bool playing) const;
 
   // Where each tilt starts, per object that actions address (and -1 for the others), and
   // the tilts that drive it in the order they start: computed by parse_timeline and

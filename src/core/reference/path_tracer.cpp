@@ -105,9 +105,9 @@ struct AirEvent {
 
 class Tracer {
  public:
-  Tracer(const FrameState& f, const ReferenceSettings& s)
+  Tracer(const FrameState& f, const ReferenceSettings& s, const CameraBasis& cam)
       : frame_(f), settings_(s), geo_(scene_geometry(f, true)), studio_(f.params), environment_(studio_),
-        lights_(f.lights.lights) {
+        lights_(f.lights.lights), cam_(cam) {
     for (size_t i = 0; i < f.vessels.size(); ++i) {
       const VesselFrame& vf = f.vessels[i];
       heads_.emplace_back(vf, geo_.vessels[i]);
@@ -140,6 +140,10 @@ class Tracer {
     // (backdrop or head); none for the camera, or after a mirror or a refraction.
     MisVertex mis;
     int surfaces = 0, scatters = 0;
+    // With the screen as background, a light is seen only as the picture's are: in a
+    // reflection off a surface seen from the air, or by a path a head scattered (the other
+    // half of its light sampling).
+    bool sees_lights = false;
     const glm::dvec3 eye = ray.o;
     for (;;) {
       const Hit h = first_hit(geo_, ray, kEps);
@@ -164,6 +168,11 @@ class Tracer {
         // A light's front before the next surface ends the stretch there.
         double t_light = t_end;
         const int light = nearest_light(ray, t_light);
+        // The screen card: an emitter found by the paths alone (no light sampling of it).
+        double t_screen = 0;
+        glm::dvec2 uv;
+        const bool screen = frame_.screen.intersect(ray.o, ray.d, kEps, t_screen, uv) && t_screen < t_light;
+        if (screen) t_light = t_screen;
         const AirEvent e = air_segment(ray, t_light, rng);
         if (e.kind == AirEvent::Scatter) {
           if (++scatters > settings_.max_scatters) break;
@@ -174,6 +183,7 @@ class Tracer {
           ray.o = p;
           const glm::dvec3 d = sample_hg(ray.d, m.foam_g, rng);
           mis = {hg_phase(glm::dot(ray.d, d), m.foam_g), p, glm::dvec3(0.0)};
+          sees_lights = true;
           ray.d = d;
           if (!roulette(thr, surfaces + scatters, rng)) break;
           continue;
@@ -186,16 +196,22 @@ class Tracer {
           if (rng.uniform() < 2 * F / (1 + F)) {
             ray.d = reflect_dir(ray.d, e.n);
             mis.pdf = -1;
+            sees_lights = false;
           }
           continue;
         }
+        if (screen) {  // the path sees the screen
+          L += thr * frame_.screen.card_radiance(uv);
+          break;
+        }
         if (light >= 0) {  // the path sees a light
-          L += thr * lights_[size_t(light)].radiance * light_weight(mis, light, ray.d);
+          if (frame_.screen.mode != ScreenMode::Background || sees_lights)
+            L += thr * lights_[size_t(light)].radiance * light_weight(mis, light, ray.d);
           break;
         }
       }
       if (!h.valid()) {  // out into the studio
-        L += thr * studio_.sky(ray.d) * environment_weight(mis, ray.d);
+        L += thr * surroundings(ray.d) * environment_weight(mis, ray.d);
         break;
       }
       const glm::dvec3 p = ray.at(h.t);
@@ -250,8 +266,10 @@ class Tracer {
         // [0, 1) for Fresnel's choice; from the air, u >= F already refracts.
         if (medium != MediumKind::Air) u = (u - share) / std::max(1 - share, 1e-12);
       }
+      sees_lights = false;
       if (u < F) {
         ray.d = reflect_dir(ray.d, n);
+        sees_lights = medium == MediumKind::Air;
       } else {
         ray.d = glm::normalize(*refract_dir(ray.d, n, n1 / n2));  // F < 1: it refracts
         medium = next;
@@ -263,6 +281,14 @@ class Tracer {
   }
 
  private:
+  // What a path sees when it leaves the scene: the studio's sky, or the screen when it is
+  // the background.
+  glm::dvec3 surroundings(const glm::dvec3& d) const {
+    if (frame_.screen.mode == ScreenMode::Background)
+      return frame_.screen.background_radiance(d, cam_, frame_.params.render);
+    return studio_.sky(d);
+  }
+
   // Russian roulette once a path is long: survivors carry the lost weight.
   static bool roulette(glm::dvec3& thr, int events, Rng& rng) {
     if (events < 8) return true;
@@ -476,6 +502,7 @@ class Tracer {
   Studio studio_;
   EnvironmentSampler environment_;  // empty unless studio_ has an image
   const std::vector<AreaLight>& lights_;
+  CameraBasis cam_;  // the picture's camera: the screen as background is seen across its picture plane
   std::vector<HeadVolume> heads_;
   std::vector<VesselMedia> media_;
 };
@@ -488,8 +515,8 @@ RadianceImage render_reference(const FrameState& f, int width, int height, const
   img.width = width;
   img.height = height;
   img.pixels.assign(size_t(width) * size_t(height), glm::dvec3(0.0));
-  const Tracer tracer(f, s);
   const CameraBasis cam = camera_basis(f, width, height);
+  const Tracer tracer(f, s, cam);
   const int spp = std::max(1, s.samples);
   std::atomic<int> next_row{0};
   std::mutex progress_lock;

@@ -12,7 +12,11 @@
 //   combined with the other paths by multiple importance sampling; the studio is an
 //   environment of its own radiance;
 // - the backdrop (core/environment/backdrop: the sweep or the checker floor) is
-//   Lambertian; the checker fades into the studio's ground as the picture's does.
+//   Lambertian; the checker fades into the studio's ground as the picture's does;
+// - the screen (core/environment/screen): a card is an emitter with its frame's texel
+//   radiance, found by the paths alone (not light-sampled, so it lights the backdrop only
+//   through paths that happen to meet it); as the background it is what a path that
+//   leaves the scene sees.
 // Left out: the drink's rising bubbles and the lacing on the wall (the picture draws both).
 // docs/REFERENCE.md says how to use it and what it is for.
 #pragma once

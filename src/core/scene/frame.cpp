@@ -156,9 +156,12 @@ CameraBasis camera_basis(const FrameState& f, int width, int height) {
   return camera_basis(f.camera_for(w, h), width, height, f.view);
 }
 
-FrameState assemble_frame(const SceneParams& p, std::vector<VesselFrame> vessels, int selected) {
+FrameState assemble_frame(const SceneParams& scene, std::vector<VesselFrame> vessels, int selected, double time) {
   FrameState f;
-  f.params = p;
+  f.params = scene;
+  if (scene.screen.mode == int(ScreenMode::Background)) f.params.env.floor = false;
+  const SceneParams& p = f.params;
+  f.time = time;
   f.vessels = std::move(vessels);
   f.selected = std::clamp(selected, 0, std::max(0, int(f.vessels.size()) - 1));
   f.camera = frame_camera(p.camera, f.vessels);
@@ -166,6 +169,7 @@ FrameState assemble_frame(const SceneParams& p, std::vector<VesselFrame> vessels
   f.lights = light_rig(p, aim, drink_aim(f.vessels));
   f.backdrop = backdrop_surface(p.env, aim);
   f.environment = environment_frame(p, f.lights, f.backdrop);
+  f.screen = screen_frame(p, aim, time);
   return f;
 }
 

@@ -7,6 +7,7 @@
 #include "core/environment/backdrop.hpp"
 #include "core/environment/lights.hpp"
 #include "core/environment/reflection.hpp"
+#include "core/environment/screen.hpp"
 #include "core/foam/foam.hpp"
 #include "core/params/params.hpp"
 #include "core/scene/camera.hpp"
@@ -53,6 +54,8 @@ struct FrameState {
   EnvironmentFrame environment;  // what the surroundings give the renderer (core/environment)
   LightRig lights;               // the studio's area lights, placed around scene_aim
   BackdropSurface backdrop;      // what the scene stands on (the sweep around scene_aim)
+  double time = 0;               // the scene's time (s): what the screen shows depends on it
+  ScreenFrame screen;            // the moving picture on a card or as the background (screen.*)
 };
 
 // The scene's centre the studio's lights (and the sweep) are placed around: the middle of
@@ -63,8 +66,10 @@ glm::dvec3 scene_aim(const std::vector<VesselFrame>&);
 // where there is none), at scene_aim's x and z: what the backlight shines through.
 glm::dvec3 drink_aim(const std::vector<VesselFrame>&);
 
-// The frame of these vessels in a scene with these parameters (the camera framed).
-FrameState assemble_frame(const SceneParams&, std::vector<VesselFrame>, int selected = 0);
+// The frame of these vessels in a scene with these parameters (the camera framed) at the
+// scene's time `time` (what the screen shows). A screen in the background leaves out the
+// floor: the picture is the surroundings.
+FrameState assemble_frame(const SceneParams&, std::vector<VesselFrame>, int selected = 0, double time = 0);
 // A still frame: every glass upright at rest at its placement, filled to its liquid.fill.
 FrameState make_frame(const Scene&);
 FrameState make_frame(const Params&);  // a single glass

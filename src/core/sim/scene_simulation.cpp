@@ -130,7 +130,7 @@ FrameState SceneSimulation::frame() const {
       vessels.push_back(sims_[i]->frame());
       vessels.back().placement = scene_.objects[i].placement;
     }
-  return assemble_frame(scene_.params, std::move(vessels), scene_.selected);
+  return assemble_frame(scene_.params, std::move(vessels), scene_.selected, time());
 }
 
 double SceneSimulation::time() const {
