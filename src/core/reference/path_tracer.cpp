@@ -454,7 +454,7 @@ class Tracer {
   // Henyey-Greenstein phase of anisotropy g. One light is sampled (selection), weighted
   // against the vertex's own sampling by the power heuristic.
   glm::dvec3 direct_light(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& d, double g, Rng& rng) const {
-    if (!environment_.empty()) return environment_light(p, n, d, g, rng);
+    if (samples_environment()) return environment_light(p, n, d, g, rng);
     Selection prob;
     if (!selection(p, n, prob)) return glm::dvec3(0.0);
     double u = rng.uniform();
@@ -491,10 +491,13 @@ class Tracer {
   // The MIS weight of a path that left into an environment image along d, against the
   // last vertex's sampling of the image (1 without an image or such a vertex).
   double environment_weight(const MisVertex& v, const glm::dvec3& d) const {
-    if (v.pdf < 0 || environment_.empty()) return 1.0;
+    if (v.pdf < 0 || !samples_environment()) return 1.0;
     return power_weight(v.pdf, environment_.pdf(d));
   }
   static constexpr double kEnvironmentShadowReach = 1e5;  // m: anything in the way blocks
+  // Whether vertices sample an environment image's light: there is one, and it is what
+  // paths leaving the scene see (not a screen as the background).
+  bool samples_environment() const { return !environment_.empty() && frame_.screen.mode != ScreenMode::Background; }
 
   const FrameState& frame_;
   ReferenceSettings settings_;
