@@ -114,8 +114,8 @@ DecalEffect decal_effect(Vessel v, Hit h, int medium, vec3 p, vec3 pl, vec3 d, b
   DecalEffect e = DecalEffect(vec3(0.0), 1.0, vec3(0.0), false, vec3(0.0), 0, d, 0.0, vec2(0.0));
   // (Counts, not branches, pick what runs: llvmpipe runs both sides of a branch for every
   // pixel, but leaves a loop as soon as all its pixels have.)
-  // (Loops keep a constant bound and break: a bound that varies per pixel lost the rig's
-  // light on llvmpipe, which indexed the Frame block's arrays wrongly in such a loop.)
+  // (Loops keep a constant bound and break, as lib/environment/lights.glsl's: with a bound
+  // that varied per pixel, a loop over the Frame block's lights added nothing on llvmpipe.)
   bool wall = h.m == M_GLASS_OUTER || h.m == M_GLASS_INNER;
   for (int once = 0; once < 1; ++once) {
     if (!wall) break;
