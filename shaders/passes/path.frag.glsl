@@ -119,10 +119,10 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
     // ink, frost or metal meets the path first (no total internal reflection off it); from
     // the air it lies under the surface's gloss (after the reflection, below).
     DecalEffect decal = decal_effect(v, h, path.medium, p, pl, path.d, below);
-    vec3 decal_mirror = vec3(0.0);
+    vec3 decal_look = vec3(0.0);  // what the decal's own look-up of the surroundings weighs
     if (path.medium != MEDIUM_AIR) {
       path.radiance += path.thr * decal.light;
-      decal_mirror = path.thr * decal.mirror;
+      decal_look = path.thr * (decal.behind + decal.mirror);
       path.thr *= decal.pass;
     }
 #endif
@@ -138,20 +138,18 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
 #endif
     c = crossing_at(path, h, v, g, below);
 #if DECALS
-    if (path.medium == MEDIUM_AIR) decal_mirror = path.thr * (1.0 - c.F) * decal.mirror;
-    if (c.F >= 1.0) path.thr += decal_mirror;  // total internal reflection goes where the metal sends it
+    if (path.medium == MEDIUM_AIR) decal_look = path.thr * (1.0 - c.F) * (decal.behind + decal.mirror);
+    if (decal.metal) decal.look = reflect(path.d, c.n);  // from inside: where it leaves the glass (below)
+    if (decal.metal && c.F >= 1.0) {  // total internal reflection: the path goes where the metal sends it
+      path.thr += decal_look;
+      decal_look = vec3(0.0);
+    }
 #endif
     // The lights are seen in the reflection (blurred by the surface's roughness) or
     // through the refraction, along the ray from its point: no highlight on top.
     float rough = h.m == M_LIQUID_SURFACE || h.m == M_CLIP_LIQUID ? v.liquid.roughness : g.glass_roughness;
-#if DECALS
-    rough = mix(rough, decal.rough, decal.metal);  // a satin metal shows the lights broader
-#endif
     if (c.F < 1.0) {
       vec3 mirrored = path.thr * c.F;  // what the reflection carries
-#if DECALS
-      mirrored += decal_mirror;
-#endif
       // The reflection sees the surroundings: a light, the backdrop or the sky from the
       // air; the lights and the sky from inside a glass.
       if (frame.transparent == 0 || path.medium != MEDIUM_AIR) {
@@ -176,6 +174,12 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
           vec3 out_dir;
           vec3 tr = reflected_light(v, g, h.m, path.medium, below, pl, to_local_dir(v, r), to_local_dir(v, c.n), out_dir);
           path.radiance += mirrored * tr * lights_and_sky(p, to_world_dir(v, out_dir), rough);
+#if DECALS
+          if (decal.metal) {  // the metal's reflection takes the same way out
+            decal_look *= tr;
+            decal.look = to_world_dir(v, out_dir);
+          }
+#endif
         }
       }
       path.thr *= 1.0 - c.F;
@@ -186,6 +190,9 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
       }
 #endif
     }
+#if DECALS
+    path.radiance += decal_look * decal_surroundings(p, decal.look, decal.spread, decal.rough, max3(decal_look) > 0.0 ? decal.taps : 0);
+#endif
   }
   if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_n, floor_d, floor_dist, on_floor);
   if (on_floor) return false;

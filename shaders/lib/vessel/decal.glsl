@@ -74,68 +74,100 @@ DecalSample decal_at(Vessel v, int m, vec3 p, float footprint) {
   return s;
 }
 
-// The mean radiance of the surroundings over the hemisphere around unit m, cosine
-// weighted: what a frosted face scatters through from that side. Seven directions, each
-// standing for a seventh of the cosine-weighted hemisphere (m itself and a ring at 50
-// degrees): the dark sky above and beside a glass counts as the reference's frost sees it,
-// not only the lit backdrop straight behind.
-vec3 frost_behind(vec3 p, vec3 m) {
-  vec3 t = normalize(abs(m.y) < 0.9 ? cross(m, vec3(0.0, 1.0, 0.0)) : cross(m, vec3(1.0, 0.0, 0.0)));
-  vec3 b = cross(m, t);
-  vec3 sum = background(p, m, 1.0);
-  for (int i = 0; i < 6; ++i) {
-    float a = float(i) * (PI / 3.0);
-    sum += background(p, normalize(0.643 * m + 0.766 * (cos(a) * t + sin(a) * b)), 1.0);
-  }
-  return sum / 7.0;
+// The light the backdrop's floor sends a face of normal n at p, beyond the sky's: the
+// floor under p as a glass's reflection sees it (lit, unshadowed) over the part of what
+// the face sees that an endless floor fills, its view factor (1 - n.y) / 2. A decal facing
+// the camera gets about a third of its light from the lit paper in front of it.
+vec3 floor_bounce(vec3 p, vec3 n) {
+  vec3 q = vec3(p.x, 0.0, p.z);
+  vec3 up = shade_floor(q, vec3(0.0, 1.0, 0.0), length(q - frame.cam_eye), false) - frame.ground;
+  return frame.floor_on != 0 ? PI * max(up, vec3(0.0)) * 0.5 * (1.0 - n.y) : vec3(0.0);
 }
 
 // What a decal does to a path that meets it: the light it sends along the path (enamel
-// and frost), the part it mirrors (metal: added to the surface's reflection) and the part
-// of the path that goes on past it.
+// and frost), the part it passes on, and what it looks up in the surroundings on its own:
+// `behind` (frost: what it scatters through from the other side) and `mirror` (metal:
+// what it reflects) weigh the mean of the surroundings over `taps` directions about
+// `look` (frost: the hemisphere behind, its axis and a ring at 50 degrees; metal: set by
+// the pass to the reflection, the GGX lobe's mirror direction and two rings, `spread`).
 struct DecalEffect {
   vec3 light;
-  vec3 mirror;
   float pass;
-  float metal;  // the part of the surface that is metal, and its roughness
+  vec3 behind;
+  bool metal;
+  vec3 mirror;
+  int taps;
+  vec3 look;
   float rough;
+  vec2 spread;  // the rings' angles from `look`, rad
 };
 
 // The decal at the surface h of vessel v (world point p, local pl) for a path in `medium`
 // going along d; below: p lies under the drink's surface. Light on a face that looks into
 // the drink has crossed it (the drink's mean chord, as the head's underside); so has what
-// shows through a frosted face from the drink's side. The rig's light is taken unshadowed
-// (a decal is lit as the glass is: through clear glass), and what lies behind frost is
-// the surroundings along the path (the blur of a frosted face leaves only its mean).
+// shows through a frosted face from the drink's side. The rig's light is exact and
+// unshadowed (a decal is lit as the glass is: through clear glass). Frost scatters light from the
+// other side only through the escape cone of the medium there, (1 / n)^2 of it: the rest
+// is guided round the glass and leaves anywhere, so it sees the surroundings' mean over
+// the sphere (what a rising bubble mirrors, core/environment/reflection).
 DecalEffect decal_effect(Vessel v, Hit h, int medium, vec3 p, vec3 pl, vec3 d, bool below) {
-  DecalEffect e = DecalEffect(vec3(0.0), vec3(0.0), 1.0, 0.0, 0.0);
-  float footprint = 2.0 * frame.cam_tan_half_vfov * frame.viewport_inv.y * length(p - frame.cam_eye);
-  DecalSample s = decal_at(v, h.m, pl, footprint);
-  if (s.cover <= 0.0) return e;
-  e.pass = 1.0 - s.cover;
-  if (s.kind == DECAL_METALLIC) {
-    e.mirror = s.cover * s.tint;
-    e.metal = s.cover;
+  DecalEffect e = DecalEffect(vec3(0.0), 1.0, vec3(0.0), false, vec3(0.0), 0, d, 0.0, vec2(0.0));
+  // (Counts, not branches, pick what runs: llvmpipe runs both sides of a branch for every
+  // pixel, but leaves a loop as soon as all its pixels have.)
+  // (Loops keep a constant bound and break, as lib/environment/lights.glsl's: with a bound
+  // that varied per pixel, a loop over the Frame block's lights added nothing on llvmpipe.)
+  bool wall = h.m == M_GLASS_OUTER || h.m == M_GLASS_INNER;
+  for (int once = 0; once < 1; ++once) {
+    if (!wall) break;
+    float footprint = 2.0 * frame.cam_tan_half_vfov * frame.viewport_inv.y * length(p - frame.cam_eye);
+    DecalSample s = decal_at(v, h.m, pl, footprint);
+    bool frost = s.kind == DECAL_ETCHED, lit = s.cover > 0.0 && s.kind != DECAL_METALLIC;
+    e.metal = s.cover > 0.0 && s.kind == DECAL_METALLIC;
+    e.pass = 1.0 - s.cover;
+    e.mirror = e.metal ? s.cover * s.tint : vec3(0.0);
     e.rough = s.rough;
-    return e;
+    float a = s.rough * s.rough;  // GGX alpha: rings at tan(theta_h) = 0.67 and 1.83 alpha hold equal shares of its normals
+    e.spread = e.metal ? 2.0 * atan(vec2(0.67, 1.83) * a) : vec2(radians(50.0), 0.0);
+    e.taps = e.metal ? 13 : (lit && frost ? 7 : 0);
+    vec3 n = dot(h.n, d) < 0.0 ? h.n : -h.n;  // the face the path sees
+    e.look = -n;
+    bool faces_drink = below && ((h.m == M_GLASS_INNER) != (medium == MEDIUM_GLASS));
+    vec3 drink = below ? exp(-v.body.absorption * fetch_object_foam(v.row).under_chord) : vec3(1.0);
+    vec3 light = (rig_irradiance(p, n, lit ? frame.light_count : 0) + sky_irradiance(n) + floor_bounce(p, n)) / PI *
+                 (faces_drink ? drink : vec3(1.0));
+    float n_far = medium_ior(v, glass_of(v.row), medium_across(h.m, medium, below));
+    float escape = 1.0 / (n_far * n_far);
+    vec3 through = (below && !faces_drink ? drink : vec3(1.0)) * s.cover * s.tint * (1.0 - FROST_BACKSCATTER);
+    e.behind = lit && frost ? escape * through : vec3(0.0);
+    e.light = !lit ? vec3(0.0)
+                   : frost ? s.cover * s.tint * FROST_BACKSCATTER * light + (1.0 - escape) * through * frame.bubble_env
+                           : s.cover * s.tint * light;
   }
-  vec3 n = dot(h.n, d) < 0.0 ? h.n : -h.n;  // the face the path sees
-  bool faces_drink = below && ((h.m == M_GLASS_INNER) != (medium == MEDIUM_GLASS));
-  vec3 drink = below ? exp(-v.body.absorption * fetch_object_foam(v.row).under_chord) : vec3(1.0);
-  vec3 lit = (rig_irradiance(p, n, frame.light_count) + sky_irradiance(n)) / PI * (faces_drink ? drink : vec3(1.0));
-  if (s.kind == DECAL_ENAMEL) {
-    e.light = s.cover * s.tint * lit;
-    return e;
-  }
-  // Into glass or a drink the frost scatters light from behind only through the escape
-  // cone of that medium's surfaces, (1 / n)^2 of it; the rest is guided round the glass
-  // and leaves anywhere: it sees the surroundings' mean over the sphere (what a rising
-  // bubble mirrors, core/environment/reflection).
-  float n_far = medium_ior(v, glass_of(v.row), medium_across(h.m, medium, below));
-  float escape = 1.0 / (n_far * n_far);
-  vec3 behind = (escape * frost_behind(p, -n) + (1.0 - escape) * frame.bubble_env) * (below && !faces_drink ? drink : vec3(1.0));
-  e.light = s.cover * s.tint * (FROST_BACKSCATTER * lit + (1.0 - FROST_BACKSCATTER) * behind);
   return e;
+}
+
+// The mean of what the surroundings show from p over `taps` directions about unit m: m
+// itself, then a ring of six at spread.x from it, then a ring of six at spread.y (turned
+// by 30 degrees). Each direction sees a light's front, else the backdrop (lit as a glass's
+// reflection of it is: lights as points, no shadows), else the sky. One call site in the
+// path pass (llvmpipe pays for every copy of inlined code, run or not).
+vec3 decal_surroundings(vec3 p, vec3 m, vec2 spread, float rough, int taps) {
+  vec3 t = normalize(abs(m.y) < 0.9 ? cross(m, vec3(0.0, 1.0, 0.0)) : cross(m, vec3(1.0, 0.0, 0.0)));
+  vec3 b = cross(m, t);
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < 13; ++i) {
+    if (i >= taps) break;
+    int k = i - 1;
+    float off = i == 0 ? 0.0 : (k < 6 ? spread.x : spread.y), phi = float(k) * (PI / 3.0) + (k < 6 ? 0.0 : PI / 6.0);
+    vec3 d = cos(off) * m + sin(off) * (cos(phi) * t + sin(phi) * b);
+    float tb, tl;
+    vec3 nb;
+    bool on_backdrop = intersect(backdrop_surface(), p, d, 0.0, tb, nb);
+    vec4 light = lights_seen(p, d, rough, tb, tl);
+    vec3 beyond = on_backdrop ? shade_floor(p + tb * d, nb, tb, false) : studio_backdrop(d);
+    sum += light.rgb * light.a + beyond * (1.0 - light.a);
+  }
+  return sum / max(float(taps), 1.0);
 }
 
 #endif  // LIB_VESSEL_DECAL_GLSL

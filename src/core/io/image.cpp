@@ -99,7 +99,7 @@ std::string what_it_is(std::string_view b) {
   if (starts("\xFF\xD8\xFF")) return "a JPEG image";
   if (starts("GIF8")) return "a GIF image";
   if (starts("BM")) return "a BMP image";
-  if (starts("RIFF") && b.substr(8, 4) == "WEBP") return "a WebP image";
+  if (starts("RIFF") && b.size() >= 12 && b.substr(8, 4) == "WEBP") return "a WebP image";
   if (starts("#?RADIANCE") || starts("#?RGBE")) return "a Radiance HDR image";
   if (starts(std::string_view("\x76\x2f\x31\x01", 4))) return "an OpenEXR image";
   if (starts("<?xml") || starts("<svg")) return "an SVG or XML file (rasterise it to a PNG first)";

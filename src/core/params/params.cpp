@@ -78,6 +78,8 @@ void add_decal_rows(std::vector<ParamDesc>& rows, const std::string& g, const st
       "Multiplies the image's alpha (0: the decal is not there)"));
   rows.push_back(param_row<ParamType::Float, Group, &D::roughness>(g + ".roughness", 0.005f, 1.0f, "",
       "Roughness of a metallic decal: how much it blurs the lights it mirrors (polished gold 0.05, satin gold 0.3)"));
+}
+
 // The screen (core/environment/screen.hpp): a moving picture behind and through the glass.
 void add_screen_rows(std::vector<ParamDesc>& rows) {
   const std::vector<ParamDesc> screen = {

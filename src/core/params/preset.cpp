@@ -343,6 +343,11 @@ namespace {
 // or a path (relative to the scene file).
 Preset load_object_preset(const Preset& scene, const std::string& name, const std::string& kind,
                           const std::string& field) {
+  // A control character names no preset (a NUL would cut the path short where the file
+  // system reads it: "glasses/\u0000pint" is the folder).
+  if (std::any_of(name.begin(), name.end(), [](unsigned char c) { return c < 0x20 || c == 0x7f; }))
+    throw InputError(scene.file + ": field '" + field + "': expected a " + kind + " preset's name or path, got " +
+                     quote_input(name));
   std::filesystem::path path;
   if (name.find('/') != std::string::npos || name.ends_with(".json")) {
     path = name;

@@ -88,6 +88,8 @@ TEST(PngDecode, RefusesWhatIsNotAPng) {
   EXPECT_TRUE(test::has(error_of("hello, world"), {"logo.png", "expected a PNG image", "not an image"}));
   EXPECT_TRUE(test::has(error_of("\xFF\xD8\xFF\xE0 JFIF"), {"logo.png", "a JPEG image"}));
   EXPECT_TRUE(test::has(error_of("GIF89a...."), {"a GIF image"}));
+  EXPECT_TRUE(test::has(error_of("RIFF....WEBPVP8 "), {"a WebP image"}));
+  EXPECT_TRUE(test::has(error_of("RIFF\r"), {"expected a PNG image"}));  // shorter than a RIFF header (fuzz_decal_image)
   EXPECT_TRUE(test::has(error_of("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n"), {"a Radiance HDR image"}));
   EXPECT_TRUE(test::has(error_of("<svg xmlns=...>"), {"SVG", "rasterise it to a PNG"}));
   EXPECT_TRUE(test::has(error_of("\x89PN"), {"logo.png", "damaged", "signature"}));

@@ -50,7 +50,7 @@ TEST(PresetFuzz, MutatedPresetsAreAcceptedWholeOrRejectedWithInputError) {
           }
           ++accepted;
         } catch (const InputError& e) {
-          EXPECT_NE(std::string(e.what()).find("fuzz.json"), std::string::npos) << e.what();
+          EXPECT_NE(std::string(e.what()).find("fuzz.json"), std::string::npos) << e.what() << "\non input:\n" << m;
           ++rejected;
         } catch (const std::exception& e) {
           ADD_FAILURE() << "unexpected " << typeid(e).name() << ": " << e.what() << "\non input:\n" << m;

@@ -277,6 +277,9 @@ TEST(ScenePresetErrors, GlassAndDrinkNamesMustExist) {
   EXPECT_TRUE(has(kind, {"s.json", "objects[0].glass", "expected a glass preset", "lager.json is a drink preset"}));
   EXPECT_TRUE(has(scene_error(scene_json(R"([{ "name": "a", "drink": "nowhere/x.json" }])")),
                   {"s.json", "objects[0].drink", "no such drink preset file"}));
+  // A NUL in a name would cut the path short at the folder (found by the mutation fuzzer).
+  EXPECT_TRUE(has(scene_error(scene_json(R"([{ "name": "a", "glass": "\u0000pint" }])")),
+                  {"s.json", "objects[0].glass", "expected a glass preset's name or path", "\\u0000pint"}));
 }
 
 TEST(ScenePresetErrors, OverlappingGlassesNameBothObjects) {
