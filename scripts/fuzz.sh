@@ -30,7 +30,7 @@ declare -A seeds=(
   [preset]="presets/glasses presets/drinks presets/scenes"
   [timeline]="presets/timelines"
   [hdr_image]="fuzz/seeds/hdr_image fuzz/regressions/hdr_image"
-  [video_source]="fuzz/seeds/video_source"
+  [video_source]="fuzz/seeds/video_source fuzz/regressions/video_source"
 )
 declare -A dicts=([preset]=fuzz/json.dict [timeline]=fuzz/json.dict [hdr_image]=fuzz/hdr.dict [video_source]=fuzz/video.dict)
 status=0
