@@ -31,7 +31,7 @@ declare -A seeds=(
   [timeline]="presets/timelines"
   [hdr_image]="fuzz/seeds/hdr_image fuzz/regressions/hdr_image"
   [decal_image]="fuzz/seeds/decal_image fuzz/regressions/decal_image"
-  [video_source]="fuzz/seeds/video_source"
+  [video_source]="fuzz/seeds/video_source fuzz/regressions/video_source"
 )
 declare -A dicts=([preset]=fuzz/json.dict [timeline]=fuzz/json.dict [hdr_image]=fuzz/hdr.dict [decal_image]=fuzz/png.dict [video_source]=fuzz/video.dict)
 status=0

@@ -468,8 +468,10 @@ Image decode_png_frame(std::string_view bytes, const std::string& file) {
   unsigned char* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &x,
                                               &y, &n, 4);
   if (!data) {
-    const char* why = stbi_failure_reason();
-    throw InputError(file + ": an undecodable PNG (" + std::string(why ? why : "damaged data") + ")");
+    // stb's reason, kept to printable ASCII (stb has been seen to leave a stale one).
+    std::string why = stbi_failure_reason() ? std::string(stbi_failure_reason()).substr(0, 60) : "";
+    const bool readable = !why.empty() && std::all_of(why.begin(), why.end(), [](char c) { return c >= 0x20 && c < 0x7f; });
+    throw InputError(file + ": an undecodable PNG (" + (readable ? why : std::string("damaged data")) + ")");
   }
   if (x != w || y != h) {
     stbi_image_free(data);
@@ -491,7 +493,8 @@ VideoInfo parse_video_probe(std::string_view report, const std::string& file) {
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     const size_t eq = line.find('=');
     if (eq == std::string_view::npos || eq == 0 || eq > 64) continue;  // not a key=value line
-    values.emplace(std::string(line.substr(0, eq)), std::string(line.substr(eq + 1, 200)));
+    // (Values are echoed in messages: made valid UTF-8, whatever the file's metadata held.)
+    values.emplace(make_valid_utf8(line.substr(0, eq)), make_valid_utf8(line.substr(eq + 1, 200)));
   }
   auto value = [&](const char* key) -> std::string {
     const auto it = values.find(key);

@@ -5,6 +5,7 @@
 #include "core/io/image.hpp"
 #include "core/io/process.hpp"
 #include "core/io/video_source.hpp"
+#include "core/text/echo.hpp"
 #include "test_common.hpp"
 
 #include <gtest/gtest.h>
@@ -249,6 +250,10 @@ TEST(VideoProbe, ReadsTheStreamAndRefusesWhatIsNoVideo) {
   EXPECT_TRUE(has(error("codec_type=video\nwidth=100\nheight=10\navg_frame_rate=0/0\nr_frame_rate=1/0\n"), {"x.mp4", "no frame rate"}));
   EXPECT_TRUE(has(error("codec_type=video\nwidth=10000\nheight=10\navg_frame_rate=25/1\n"), {"x.mp4", "larger"}));
   EXPECT_TRUE(has(error("codec_type=video\nwidth=100\nheight=10\navg_frame_rate=25/1\nnb_frames=0\n"), {"x.mp4", "no frames"}));
+  // A file's metadata echoed in a message is made valid UTF-8 (found by fuzz_video_source).
+  const std::string broken = error(std::string("codec_type=video\nwidth=4\x89P\x14\0\0t\nheight=10\n", 38));
+  EXPECT_TRUE(has(broken, {"x.mp4", "no frame size"}));
+  EXPECT_EQ(make_valid_utf8(broken), broken);
 }
 
 }  // namespace

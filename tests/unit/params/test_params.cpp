@@ -60,8 +60,9 @@ ParamValue other_value(const ParamDesc& d) {
         if (c != std::get<std::string>(d.def)) return c;
       return std::string();
     case ParamType::Curve: return Curve{{0.02f, 0.0f}, {0.025f, 0.03f}, {0.03f, 0.09f}};
-    case ParamType::File:  // shipped: an environment, or a decal
+    case ParamType::File:  // shipped: an environment, a decal, or the screen's clip
       if (d.path.starts_with("decal_")) return std::string(std::get<std::string>(d.def) == "crest" ? "wordmark" : "crest");
+      if (d.path == "screen.source") return std::string("draught-loop");
       return std::string(std::get<std::string>(d.def) == "bar" ? "studio" : "bar");
   }
   return 0.0f;
@@ -127,7 +128,7 @@ std::vector<ParamValue> out_of_range(const ParamDesc& d) {
 
 TEST(ParamTable, PathsAreUniqueAndGrouped) {
   std::set<std::string> seen;
-  const std::set<std::string> groups = {"glass", "liquid", "foam", "bubbles", "env", "light", "strips", "backlight", "camera", "clip", "decal_outer", "decal_inner", "render"};
+  const std::set<std::string> groups = {"glass", "liquid", "foam", "bubbles", "env", "light", "strips", "backlight", "screen", "camera", "clip", "decal_outer", "decal_inner", "render"};
   for (const auto& d : param_table()) {
     EXPECT_TRUE(seen.insert(d.path).second) << "duplicate path " << d.path;
     const auto dot = d.path.find('.');
