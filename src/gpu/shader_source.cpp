@@ -35,6 +35,9 @@ void append(const std::string& name, const std::filesystem::path& dir, ShaderSou
   std::string line;
   int lineno = 0;
   static const std::regex include_re(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
+  // An include in a disabled #if block has its restoring #line skipped too: say it again
+  // where a block ends or turns.
+  static const std::regex branch_re(R"(^\s*#\s*(else|elif|endif)\b.*$)");
   while (std::getline(in, line)) {
     ++lineno;
     std::smatch m;
@@ -44,6 +47,8 @@ void append(const std::string& name, const std::filesystem::path& dir, ShaderSou
       out.text += "#line " + std::to_string(lineno + 1) + " " + std::to_string(index) + "\n";
     } else {
       out.text += line + "\n";
+      if (std::regex_match(line, branch_re))
+        out.text += "#line " + std::to_string(lineno + 1) + " " + std::to_string(index) + "\n";
     }
   }
   stack.pop_back();

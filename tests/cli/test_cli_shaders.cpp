@@ -83,16 +83,24 @@ TEST_F(Shaders, SyntaxErrorInIncludedFileGivesItsLine) {
 }
 
 TEST_F(Shaders, SyntaxErrorAfterIncludesGivesTheEntryFileLine) {
-  // Just after the last #include of the entry file: the line numbers must have been
-  // restored after the included files.
+  // Just after the last #include of the entry file, outside any #if (an include may sit in
+  // a variant's block): the line numbers must have been restored after the included files.
   auto lines = read_lines(shaders() / kEntryFile);
+  const std::regex include(R"(^\s*#\s*include\s)"), open_if(R"(^\s*#\s*if)"), end_if(R"(^\s*#\s*endif)");
   size_t last_include = 0;
   for (size_t i = 0; i < lines.size(); ++i)
-    if (std::regex_search(lines[i], std::regex(R"(^\s*#\s*include\s)"))) last_include = i + 1;
+    if (std::regex_search(lines[i], include)) last_include = i + 1;
   ASSERT_GT(last_include, 0u) << kEntryFile << " includes nothing?";
-  break_line(kEntryFile, last_include + 1);
-  auto r = render_with_shaders();
-  expect_blames(r, kEntryFile, last_include + 1);
+  int depth = 0;
+  size_t spot = 0;
+  for (size_t i = 0; i < lines.size() && spot == 0; ++i) {
+    if (std::regex_search(lines[i], open_if)) ++depth;
+    else if (std::regex_search(lines[i], end_if)) --depth;
+    else if (i + 1 > last_include && depth == 0) spot = i + 1;
+  }
+  ASSERT_GT(spot, 0u) << kEntryFile << " has no top-level line after its includes";
+  break_line(kEntryFile, spot);
+  expect_blames(render_with_shaders(), kEntryFile, spot);
 }
 
 TEST_F(Shaders, MissingShaderFileIsNamed) {

@@ -108,6 +108,7 @@ TEST(EnvironmentImageTwin, UnderAConstantImageANonAbsorbingGlassIsInvisible) {
 }
 
 TEST(EnvironmentImageTwin, TheImageIsUploadedOnceNotEveryFrame) {
+  gpu_instance();  // the GL context the textures are made in
   gpu::SceneTextures textures;
   const FrameState f = environment_frame_of("bar", {});
   textures.update(f);
