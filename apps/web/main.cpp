@@ -445,8 +445,9 @@ EMSCRIPTEN_KEEPALIVE const char* draught_set_param(const char* path, const char*
     ParamValue value;
     try {
       value = parse_param_text(*ref.desc, text);
-    } catch (const ParamError&) {  // its message repeats the whole text; this one a short part
-      return answer(set_error(path, expected_text(*ref.desc), text));
+    } catch (const ParamError& e) {  // its message repeats the whole text; this one a short part
+      // (A file's says what is wrong with the file.)
+      return answer(set_error(path, ref.desc->type == ParamType::File ? e.expected : expected_text(*ref.desc), text));
     }
     Scene s = app->scene;
     set_param(s, ref, value);
@@ -556,6 +557,33 @@ EMSCRIPTEN_KEEPALIVE const char* draught_load_preset(const char* text, const cha
     }
     return answer_json(json{{"error", ""}, {"kind", pr.kind}, {"name", shorten(pr.name)}});
   } catch (const std::exception& e) {
+    return answer_json(json{{"error", e.what()}});
+  }
+}
+
+// An HDR environment file from the page's file input (its bytes, `size` of them) as the
+// surroundings: written to /uploads/environments/, then env.image and env.mode image, read and
+// validated before anything changes. {"error": ""}; on error the file is removed and the
+// state kept.
+EMSCRIPTEN_KEEPALIVE const char* draught_load_environment(const char* file, const char* bytes, int size) {
+  if (!app) return answer_json(json{{"error", "not started"}});
+  const std::filesystem::path dir = "/uploads/environments";
+  const std::filesystem::path path = dir / std::filesystem::path(file).filename();
+  try {
+    std::filesystem::create_directories(dir);
+    write_file_atomic(path, std::string(bytes, size_t(std::max(size, 0))));
+    Scene s = app->scene;
+    set_param(s, parse_param_ref(s, "env.image"), ParamValue(path.string()));  // reads the image
+    set_param(s, parse_param_ref(s, "env.mode"), ParamValue(std::string("image")));
+    use_scene(s, Refill::none);
+    return answer_json(json{{"error", ""}});
+  } catch (const ParamError& e) {
+    std::error_code ec;
+    std::filesystem::remove(path, ec);
+    return answer_json(json{{"error", "env.image: expected " + e.expected}});
+  } catch (const std::exception& e) {
+    std::error_code ec;
+    std::filesystem::remove(path, ec);
     return answer_json(json{{"error", e.what()}});
   }
 }

@@ -41,7 +41,7 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
     b.light_radiance[i] = {glm::vec3(l.radiance), 0.0f};
   }
   for (int i = 0; i < 9; ++i) b.sky_sh[i] = {glm::vec3(f.environment.sky.coef[size_t(i)]), 0.0f};
-  b.backdrop_kind = int(f.backdrop.kind);
+  b.backdrop_kind = f.backdrop.kind == Backdrop::Checker ? 1 : f.backdrop.plane ? 2 : 0;
   b.sweep_z_curve = float(f.backdrop.z_curve);
   b.sweep_radius = float(f.backdrop.radius);
   b.sweep_albedo = glm::vec3(f.backdrop.sweep_albedo);
@@ -205,6 +205,15 @@ std::vector<glm::vec4> pack_backdrop_light(const BackdropLightMap& m) {
 }
 
 namespace {
+// Linear filtering of the bound texture (min_filter: within a level, or across mipmaps
+// too), clamped to its edges except across when wrap_s is GL_REPEAT.
+void set_sampling(GLint min_filter, GLint wrap_s) {
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min_filter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap_s);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
 // A filtered RGBA16F texture of the floor's light factor or the backdrop's light (ES 3.0 and WebGL2 filter
 // half floats; they take float data for them).
 unsigned make_floor_texture(int width, int height, const float* rgba) {
@@ -212,15 +221,10 @@ unsigned make_floor_texture(int width, int height, const float* rgba) {
   glGenTextures(1, &tex);
   glBindTexture(GL_TEXTURE_2D, tex);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, width, height, 0, GL_RGBA, GL_FLOAT, rgba);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  set_sampling(GL_LINEAR, GL_CLAMP_TO_EDGE);
   return tex;
 }
-}  // namespace
 
-namespace {
 // The environment's chain as one mipmapped RGBA16F texture: level i is the chain's level i,
 // and the texture stops there (GL_TEXTURE_MAX_LEVEL), so GL filters exactly as
 // EnvironmentMap::radiance does: bilinear in a level, wrapping across, linear between levels.
@@ -238,10 +242,7 @@ unsigned make_environment_texture(const EnvironmentMap& m) {
   }
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(m.levels.size() - 1));
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  set_sampling(GL_LINEAR_MIPMAP_LINEAR, GL_REPEAT);
   return tex;
 }
 }  // namespace

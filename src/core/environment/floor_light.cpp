@@ -531,7 +531,7 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
   auto put3 = [&put](const auto& v) { put(v.x, v.y, v.z); };
   const BackdropSurface& b = scene_geometry(f).backdrop;
   const LightRig emitters = floor_emitters(f);
-  put(b.present ? 1 : 0, int(b.kind), b.z_curve, b.radius, emitters.lights.size(), f.vessels.size());
+  put(b.present ? 1 : 0, int(b.kind), b.plane ? 1 : 0, b.z_curve, b.radius, emitters.lights.size(), f.vessels.size());
   const glm::dvec3 sky = f.environment.image ? f.environment.sky.at({0, 1, 0}) : glm::dvec3(0.0);
   put3(sky);
   for (const AreaLight& l : emitters.lights) {

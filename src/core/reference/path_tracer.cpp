@@ -1,5 +1,7 @@
 #include "core/reference/path_tracer.hpp"
 
+#include "core/environment/environment_sampling.hpp"
+
 #include "core/environment/lights.hpp"
 #include "core/environment/studio.hpp"
 #include "core/foam/head_volume.hpp"
@@ -100,7 +102,8 @@ struct AirEvent {
 class Tracer {
  public:
   Tracer(const FrameState& f, const ReferenceSettings& s, const CameraBasis& cam)
-      : frame_(f), settings_(s), geo_(scene_geometry(f)), studio_(f.params), lights_(f.lights.lights), cam_(cam) {
+      : frame_(f), settings_(s), geo_(scene_geometry(f)), studio_(f.params), environment_(studio_),
+        lights_(f.lights.lights), cam_(cam) {
     for (size_t i = 0; i < f.vessels.size(); ++i) {
       const VesselFrame& vf = f.vessels[i];
       heads_.emplace_back(vf, geo_.vessels[i]);
@@ -204,14 +207,14 @@ class Tracer {
         }
       }
       if (!h.valid()) {  // out into the studio
-        L += thr * surroundings(ray.d);
+        L += thr * surroundings(ray.d, mis);
         break;
       }
       const glm::dvec3 p = ray.at(h.t);
       if (h.m == Material::Floor) {  // the backdrop: Lambertian
         // The checker floor fades into the studio with distance (as the picture's); under an
         // environment image the floor fades into the image: the path goes on through it.
-        if ((geo_.backdrop.kind == Backdrop::Checker || studio_.image) &&
+        if (geo_.backdrop.plane &&
             rng.uniform() >= Studio::floor_visibility(glm::length(p - eye))) {
           if (studio_.image) {
             L += thr * studio_.sky(ray.d);
@@ -254,12 +257,13 @@ class Tracer {
   }
 
  private:
-  // What a path sees when it leaves the scene: the studio's sky, or the screen when it is
-  // the background.
-  glm::dvec3 surroundings(const glm::dvec3& d) const {
+  // What a path sees when it leaves the scene: the studio's sky (an image's weighted
+  // against the last vertex's sampling of it), or the screen when it is the background
+  // (found by the paths alone: weight 1).
+  glm::dvec3 surroundings(const glm::dvec3& d, const MisVertex& mis) const {
     if (frame_.screen.mode == ScreenMode::Background)
       return frame_.screen.background_radiance(d, cam_, frame_.params.render);
-    return studio_.sky(d);
+    return studio_.sky(d) * environment_weight(mis, d);
   }
 
   // Russian roulette once a path is long: survivors carry the lost weight.
@@ -395,6 +399,7 @@ class Tracer {
   // Henyey-Greenstein phase of anisotropy g. One light is sampled (selection), weighted
   // against the vertex's own sampling by the power heuristic.
   glm::dvec3 direct_light(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& d, double g, Rng& rng) const {
+    if (!environment_.empty()) return environment_light(p, n, d, g, rng);
     Selection prob;
     if (!selection(p, n, prob)) return glm::dvec3(0.0);
     double u = rng.uniform();
@@ -411,10 +416,36 @@ class Tracer {
     return lights_[j].radiance * (vis * f / pdf_light * power_weight(pdf_light, f));
   }
 
+  // Under an environment image (which replaces the rig: no lights then) its light at p,
+  // per unit albedo, towards -d: one direction sampled in proportion to the image's light
+  // (core/environment/environment_sampling), weighted against the vertex's own sampling.
+  // The floor blocks what lies below it (a path through its fading far part is not
+  // counted by this strategy: it takes weight 1 there).
+  glm::dvec3 environment_light(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& d, double g, Rng& rng) const {
+    double pdf;
+    const double u1 = rng.uniform(), u2 = rng.uniform(), u3 = rng.uniform(), u4 = rng.uniform();
+    const glm::dvec3 dir = environment_.sample(u1, u2, u3, u4, pdf);
+    const bool surface = glm::length(n) > 0;
+    const double f = surface ? std::max(glm::dot(dir, n), 0.0) / kPi : hg_phase(glm::dot(d, dir), g);
+    if (f <= 0 || !(pdf > 0)) return glm::dvec3(0.0);
+    const double vis = visibility({p, dir}, kEnvironmentShadowReach, rng);
+    if (vis <= 0) return glm::dvec3(0.0);
+    return studio_.sky(dir) * (vis * f / pdf * power_weight(pdf, f));
+  }
+
+  // The MIS weight of a path that left into an environment image along d, against the
+  // last vertex's sampling of the image (1 without an image or such a vertex).
+  double environment_weight(const MisVertex& v, const glm::dvec3& d) const {
+    if (v.pdf < 0 || environment_.empty()) return 1.0;
+    return power_weight(v.pdf, environment_.pdf(d));
+  }
+  static constexpr double kEnvironmentShadowReach = 1e5;  // m: anything in the way blocks
+
   const FrameState& frame_;
   ReferenceSettings settings_;
   SceneGeometry geo_;
   Studio studio_;
+  EnvironmentSampler environment_;  // empty unless studio_ has an image
   const std::vector<AreaLight>& lights_;
   CameraBasis cam_;  // the picture's camera: the screen as background is seen across its picture plane
   std::vector<HeadVolume> heads_;

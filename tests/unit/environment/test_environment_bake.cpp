@@ -161,7 +161,9 @@ namespace {
 TEST(EnvironmentBake, TheShippedEnvironmentsAreTodaysBakes) {
   for (const std::string& name : baked_environment_names()) {
     const HdrImage shipped = read_hdr_image(test::preset_source_dir() / "environments" / (name + ".hdr"));
-    ASSERT_EQ(shipped.width, 1024) << name;
+    // The studio is soft light and smooth paper: 512 wide keeps it, at a quarter of the
+    // bytes (the web page embeds both); the bar's bottles want 1024.
+    ASSERT_EQ(shipped.width, name == "studio" ? 512 : 1024) << name;
     const HdrImage baked = bake_environment(name, default_params(), shipped.width);
     size_t off = 0;
     for (size_t i = 0; i < baked.rgb.size(); ++i)
