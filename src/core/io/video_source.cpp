@@ -7,6 +7,7 @@
 #include <stb_image.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <climits>
 #include <cmath>
@@ -18,6 +19,7 @@
 #include <stdexcept>
 
 #ifndef __EMSCRIPTEN__
+#include <sys/wait.h>
 #include <unistd.h>
 #endif
 

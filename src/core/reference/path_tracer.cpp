@@ -211,7 +211,7 @@ class Tracer {
         }
       }
       if (!h.valid()) {  // out into the studio
-        L += thr * surroundings(ray.d) * environment_weight(mis, ray.d);
+        L += thr * surroundings(ray.d, mis);
         break;
       }
       const glm::dvec3 p = ray.at(h.t);
@@ -281,12 +281,13 @@ class Tracer {
   }
 
  private:
-  // What a path sees when it leaves the scene: the studio's sky, or the screen when it is
-  // the background.
-  glm::dvec3 surroundings(const glm::dvec3& d) const {
+  // What a path sees when it leaves the scene: the studio's sky (an image's weighted
+  // against the last vertex's sampling of it), or the screen when it is the background
+  // (found by the paths alone: weight 1).
+  glm::dvec3 surroundings(const glm::dvec3& d, const MisVertex& mis) const {
     if (frame_.screen.mode == ScreenMode::Background)
       return frame_.screen.background_radiance(d, cam_, frame_.params.render);
-    return studio_.sky(d);
+    return studio_.sky(d) * environment_weight(mis, d);
   }
 
   // Russian roulette once a path is long: survivors carry the lost weight.
