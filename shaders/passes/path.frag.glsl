@@ -22,11 +22,9 @@
 #include "lib/environment/backdrop.glsl"
 #include "lib/environment/floor.glsl"
 #include "lib/output/tonemap.glsl"
-#ifndef DECALS
-#define DECALS 0
-#endif
-#if DECALS
 #include "lib/vessel/decal.glsl"
+#ifndef DECALS
+#define DECALS 0  // 1: some glass has a decal (its functions are used only then)
 #endif
 
 out vec4 frag_color;
