@@ -27,6 +27,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/environment/backdrop_light.cpp
   src/core/environment/environment_map.cpp
   src/core/environment/environment_files.cpp
+  src/core/environment/environment_sampling.cpp
   src/core/environment/environment_bake.cpp
   src/core/bubbles/bubbles.cpp
   src/core/bubbles/bubble_view.cpp

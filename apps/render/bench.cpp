@@ -135,6 +135,10 @@ int bench(int frames, const std::vector<int>& sizes, const std::vector<std::stri
       {"wine-red", {"red-wine", "wine", {}, {}}},
       {"tulip-amber-floorless", {"amber-ale", "tulip", {"env.floor=false"}, {}}},
       {"pint-lager-fresh-pour", {"lager", "", {}, {}}, "fresh-pour", 1.0},
+      // The default pint under environment images (issue 12): a texture look-up per ray
+      // leaving the scene instead of the studio's lights and sweep.
+      {"pint-lager-bar", {"lager", "pint", {"env.mode=image", "env.image=bar"}, {}}},
+      {"pint-lager-studio-image", {"lager", "pint", {"env.mode=image", "env.image=studio"}, {}}},
       {"nonic-stout-head-closeup", {"stout", "nonic", {}, {"eye=0,0.2,0.3", "target=0,0.14,0", "vfov=22"}}},
       {"pint-lager-sloshing", {"lager", "", {}, {}}, "shake-and-settle", 1.3},
       {"wine-red-spilling", {"red-wine", "", {}, {}}, "tilt-until-spill", 3.0},

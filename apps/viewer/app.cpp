@@ -256,6 +256,16 @@ void Viewer::handle(const SDL_Event& e) {
     case SDL_MOUSEBUTTONUP:
     case SDL_MOUSEMOTION:
     case SDL_MOUSEWHEEL: mouse(e); break;
+    case SDL_DROPFILE: {
+      // A file dropped on the window: an HDR image becomes the environment, anything else
+      // is loaded as a preset (each refused with its error, nothing changed).
+      const std::string file = e.drop.file;
+      SDL_free(e.drop.file);
+      const std::string ext = std::filesystem::path(file).extension().string();
+      if (ext == ".hdr" || ext == ".exr" || ext == ".HDR" || ext == ".EXR") editor_.use_environment(file);
+      else editor_.load(file);
+      break;
+    }
     default: break;
   }
 }

@@ -123,6 +123,20 @@ bool Editor::load(const std::string& path_text) {
   return ok;
 }
 
+bool Editor::use_environment(const std::string& path) {
+  if (path.empty()) return fail("type the path of an HDR environment (.hdr or .exr) or a shipped name");
+  State st = now_;
+  try {
+    set_param(st.scene, parse_param_ref(st.scene, "env.image"), ParamValue(path));  // reads the file
+    set_param(st.scene, parse_param_ref(st.scene, "env.mode"), ParamValue(std::string("image")));
+  } catch (const ParamError& e) {
+    return fail("env.image: expected " + e.expected);
+  }
+  replace(st);
+  status_ = {"environment: " + path, false};
+  return true;
+}
+
 bool Editor::save_as(const std::string& path_text, const std::string& kind) {
   if (path_text.empty()) return fail("type the path of the file to save");
   std::vector<std::string> groups;

@@ -49,6 +49,10 @@ class Editor {
   bool choose_drink(const std::string& name_or_path);
   bool choose_glass(const std::string& name_or_path);
   bool load(const std::string& path);
+  // An HDR environment (a .hdr or .exr file, or a shipped name) as the surroundings:
+  // env.mode image with env.image the file, one undo step. A file that cannot be used sets
+  // an error status and changes nothing.
+  bool use_environment(const std::string& path);
   // kind: "scene" (every parameter), "drink" (liquid, foam, bubbles) or "glass", of the
   // selected object; a scene of several objects cannot be saved as one preset yet.
   // Validated and written atomically; the file then is what save() writes.

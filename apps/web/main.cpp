@@ -442,7 +442,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_set_param(const char* path, const char*
 }
 
 // A decal image the page was given (`size` bytes at `data`, the file named `name`): written
-// into the page's file system as /decals/N/NAME (a folder per upload: a new file never
+// into the page's file system as /uploads/decals/N/NAME (a folder per upload: a new file never
 // replaces one a glass uses) and set as the selected glass's outer (layer 0) or inner
 // (layer 1) decal. "" or the error; a file the loader refuses (not a PNG, too large,
 // damaged) is removed again and the glass keeps its decal.
@@ -454,7 +454,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_load_decal(const char* name, const char
   for (const char* c = name; *c && safe.size() < 100; ++c)
     safe += std::isalnum(static_cast<unsigned char>(*c)) || *c == '-' || *c == '_' || (*c == '.' && !safe.empty()) ? *c : '_';
   if (safe.empty()) safe = "decal.png";
-  const std::filesystem::path dir = "/decals/" + std::to_string(++uploads), file = dir / safe;
+  const std::filesystem::path dir = "/uploads/decals/" + std::to_string(++uploads), file = dir / safe;
   const ParamDesc* d = find_param(layer == 0 ? "decal_outer.file" : "decal_inner.file");
   try {
     std::filesystem::create_directories(dir);
@@ -571,6 +571,33 @@ EMSCRIPTEN_KEEPALIVE const char* draught_load_preset(const char* text, const cha
     }
     return answer_json(json{{"error", ""}, {"kind", pr.kind}, {"name", shorten(pr.name)}});
   } catch (const std::exception& e) {
+    return answer_json(json{{"error", e.what()}});
+  }
+}
+
+// An HDR environment file from the page's file input (its bytes, `size` of them) as the
+// surroundings: written to /uploads/environments/, then env.image and env.mode image, read and
+// validated before anything changes. {"error": ""}; on error the file is removed and the
+// state kept.
+EMSCRIPTEN_KEEPALIVE const char* draught_load_environment(const char* file, const char* bytes, int size) {
+  if (!app) return answer_json(json{{"error", "not started"}});
+  const std::filesystem::path dir = "/uploads/environments";
+  const std::filesystem::path path = dir / std::filesystem::path(file).filename();
+  try {
+    std::filesystem::create_directories(dir);
+    write_file_atomic(path, std::string(bytes, size_t(std::max(size, 0))));
+    Scene s = app->scene;
+    set_param(s, parse_param_ref(s, "env.image"), ParamValue(path.string()));  // reads the image
+    set_param(s, parse_param_ref(s, "env.mode"), ParamValue(std::string("image")));
+    use_scene(s, Refill::none);
+    return answer_json(json{{"error", ""}});
+  } catch (const ParamError& e) {
+    std::error_code ec;
+    std::filesystem::remove(path, ec);
+    return answer_json(json{{"error", "env.image: expected " + e.expected}});
+  } catch (const std::exception& e) {
+    std::error_code ec;
+    std::filesystem::remove(path, ec);
     return answer_json(json{{"error", e.what()}});
   }
 }

@@ -54,6 +54,9 @@
   // value: far above any real one (a 32-point profile curve takes under 1 KiB).
   const kMaxFileBytes = 16 * 1024 * 1024;
   const kMaxDecalBytes = 80 * 1024 * 1024;  // kMaxPngFileBytes (core/io/image.hpp)
+  // An environment image: a 4k x 2k Radiance file is about 20-30 MiB; its chain of levels
+  // as floats takes about 1.4 x 12 bytes per texel of the heap.
+  const kMaxEnvironmentBytes = 64 * 1024 * 1024;
   const kMaxValueBytes = 4096;
   const encoder = new TextEncoder();
   // (Text longer than the file limit in characters is over it in bytes too: no need to encode it.)
@@ -88,8 +91,8 @@
       const held = [];
       try {
         const argv = values.map((v, i) => {
-          if (args[i] !== 'string') return v;
-          const bytes = encoder.encode(String(v));
+          if (args[i] !== 'string' && args[i] !== 'bytes') return v;
+          const bytes = args[i] === 'bytes' ? v : encoder.encode(String(v));
           const at = M._malloc(bytes.length + 1);
           if (!at) throw new Error(`out of memory for ${bytes.length} bytes of text`);
           held.push(at);
@@ -133,8 +136,9 @@
       testRow: fn('draught_test_row', 'string', ['number']),
       select: fn('draught_select', 'string', ['string', 'string']),
       load: fn('draught_load_preset', 'json', ['string', 'string']),
+      loadEnvironment: fn('draught_load_environment', 'json', ['string', 'bytes', 'number']),
       exportPreset: fn('draught_export_preset', 'json', ['string']),
-      loadDecal: fn('draught_load_decal', 'string', ['string', 'number', 'number', 'number']),
+      loadDecal: fn('draught_load_decal', 'string', ['string', 'bytes', 'number', 'number']),
       pour: fn('draught_pour', null),
       setInput: fn('draught_set_input', 'string', ['string']),
       mouse: fn('draught_mouse', null, ['number', 'number', 'number', 'number', 'number', 'number', 'number']),
@@ -542,26 +546,45 @@
       say(`loaded ${r.kind} "${r.name}" from ${name}`);
       return '';
     };
-    // A decal image: its bytes into the module's heap, written there into the page's file
-    // system and set on the selected glass (the loader refuses a bad one; nothing changes).
+    $('environment').addEventListener('change', async (e) => {
+      const file = e.target.files[0];
+      e.target.value = '';
+      if (!file) return;
+      page.loadEnvironment(new Uint8Array(await file.arrayBuffer()), file.name);
+    });
+    // An HDR environment's bytes (.hdr, or .exr where the build reads it) as the surroundings.
+    page.loadEnvironment = (bytes, name) => {
+      name = String(name).slice(0, 255);
+      if (bytes.length > kMaxEnvironmentBytes) {
+        const msg = `${name}: ${mib(bytes.length)}, larger than the limit of ${mib(kMaxEnvironmentBytes)} for an environment; nothing was loaded`;
+        say(msg, true);
+        return msg;
+      }
+      const r = JSON.parse(api.loadEnvironment(name, bytes, bytes.length));
+      if (r.error) {
+        say(r.error, true);  // nothing was applied
+        return r.error;
+      }
+      refreshValues();
+      say(`environment ${name}`);
+      return '';
+    };
+    // A decal image: its bytes written into the page's file system and set on the selected
+    // glass (the loader refuses a bad one; nothing changes).
     $('decal').addEventListener('change', async (e) => {
       const file = e.target.files[0];
       e.target.value = '';
       if (!file) return;
-      if (file.size > kMaxDecalBytes) return say(`${file.name}: ${mib(file.size)}, larger than the limit of 80 MiB for a decal image; nothing was loaded`, true);
       page.loadDecal(new Uint8Array(await file.arrayBuffer()), file.name, +$('decal-layer').value);
     });
     page.loadDecal = (bytes, name, layer = 0) => {
       name = String(name).slice(0, 255);
-      const at = M._malloc(Math.max(1, bytes.length));
-      if (!at) return say(`${name}: out of memory for ${bytes.length} bytes`, true);
-      let err;
-      try {
-        M.HEAPU8.set(bytes, at);
-        err = api.loadDecal(name, at, bytes.length, layer);
-      } finally {
-        M._free(at);
+      if (bytes.length > kMaxDecalBytes) {
+        const msg = `${name}: ${mib(bytes.length)}, larger than the limit of ${mib(kMaxDecalBytes)} for a decal image; nothing was loaded`;
+        say(msg, true);
+        return msg;
       }
+      const err = api.loadDecal(name, bytes, bytes.length, layer);
       if (err) {
         say(err, true);
         return err;

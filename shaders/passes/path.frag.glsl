@@ -97,7 +97,7 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
   path.thr *= medium_transmittance(v, g, path.medium, h.t);
   // The floor is shaded at most once per interface, from one place (its shading loops
   // over every glass): where the path ends on it, or where the reflection meets it.
-  vec3 floor_at = p, floor_n = h.n, floor_weight = vec3(0.0);
+  vec3 floor_at = p, floor_n = h.n, floor_d = path.d, floor_weight = vec3(0.0);
   float floor_dist = length(p - frame.cam_eye);
   bool on_floor = h.m == M_FLOOR;
   Crossing c;
@@ -161,10 +161,11 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
           if (on_backdrop) {  // shaded once, below
             floor_at = p + tb * r;
             floor_n = nb;
+            floor_d = r;
             floor_dist = tb;
             floor_weight = mirrored * (1.0 - light.a);
           } else {
-            path.radiance += mirrored * (1.0 - light.a) * studio_backdrop(r);
+            path.radiance += mirrored * (1.0 - light.a) * sky_seen(r, rough);
           }
         } else {
           // Inside a glass or drink the reflection is absorbed on its way out.
@@ -191,7 +192,7 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
     path.radiance += decal_look * decal_surroundings(p, decal.look, decal.spread, decal.rough, max3(decal_look) > 0.0 ? decal.taps : 0);
 #endif
   }
-  if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_n, floor_dist, on_floor);
+  if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_n, floor_d, floor_dist, on_floor);
   if (on_floor) return false;
   go_on(path, h, c, p);
   return true;

@@ -67,8 +67,8 @@ void bind_interface(const Program& program, const std::string& what) {
                       contract::kFrameBlockUsedBytes, sizeof(contract::FrameBlock), contract::kFrameBlockBinding, what);
   glUseProgram(program.id());
   for (const contract::Sampler& s : {contract::kObjectSampler, contract::kKnotsSampler, contract::kFloorLightSampler,
-                                       contract::kBackdropLightSampler, contract::kDecalImagesSampler,
-                                       contract::kDecalArcsSampler})
+                                       contract::kBackdropLightSampler, contract::kEnvImageSampler,
+                                       contract::kDecalImagesSampler, contract::kDecalArcsSampler})
     if (GLint at = glGetUniformLocation(program.id(), s.name); at >= 0) glUniform1i(at, s.unit);
 }
 }  // namespace
@@ -79,6 +79,7 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kWaves) frag = with_define(std::move(frag), "SURFACE_WAVES");
   if (variant & kFoam) frag = with_define(std::move(frag), "FOAM_HEAD");
   if (variant & kDebug) frag = with_define(std::move(frag), "DEBUG_VIEWS");
+  if (variant & kImage) frag = with_define(std::move(frag), "ENV_IMAGE");
   if (variant & kDecals) frag = with_define(std::move(frag), "DECALS");
   if (const int held = variant >> kHeldShift)
     frag = with_define(std::move(frag), "HELD_OBJECTS", std::to_string(held));
@@ -133,7 +134,7 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   const int objects = int(f.vessels.size());
   const int held = held_objects_ && objects >= 1 && objects <= kMaxHeldObjects ? objects : 0;
   const int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0) | (debug != DebugView::None ? kDebug : 0) |
-                      (decals ? kDecals : 0) | (held << kHeldShift);
+                      (f.environment.image ? kImage : 0) | (decals ? kDecals : 0) | (held << kHeldShift);
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
   glUseProgram(program->id());

@@ -42,7 +42,7 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
     b.light_radiance[i] = {glm::vec3(l.radiance), 0.0f};
   }
   for (int i = 0; i < 9; ++i) b.sky_sh[i] = {glm::vec3(f.environment.sky.coef[size_t(i)]), 0.0f};
-  b.backdrop_kind = int(f.backdrop.kind);
+  b.backdrop_kind = f.backdrop.kind == Backdrop::Checker ? 1 : f.backdrop.plane ? 2 : 0;
   b.sweep_z_curve = float(f.backdrop.z_curve);
   b.sweep_radius = float(f.backdrop.radius);
   b.sweep_albedo = glm::vec3(f.backdrop.sweep_albedo);
@@ -66,6 +66,13 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
   b.bubble_env = f.environment.reflected;
   b.glint_dir = f.environment.glint_dir;
   b.glint = f.environment.glint;
+  if (const EnvironmentMap* m = f.environment.image.get()) {
+    b.env_rotation = {f.environment.rotation_cos, f.environment.rotation_sin};
+    b.env_intensity = f.environment.intensity;
+    b.env_blur_lod = f.environment.blur_lod;
+    b.env_max_lod = float(m->levels.size() - 1);
+    b.env_texels_per_radian = float(m->width() / (2 * 3.14159265358979));
+  }
   return b;
 }
 
@@ -200,6 +207,15 @@ std::vector<glm::vec4> pack_backdrop_light(const BackdropLightMap& m) {
 }
 
 namespace {
+// Linear filtering of the bound texture (min_filter: within a level, or across mipmaps
+// too), clamped to its edges except across when wrap_s is GL_REPEAT.
+void set_sampling(GLint min_filter, GLint wrap_s) {
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min_filter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap_s);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
 // A filtered RGBA16F texture of the floor's light factor or the backdrop's light (ES 3.0 and WebGL2 filter
 // half floats; they take float data for them).
 unsigned make_floor_texture(int width, int height, const float* rgba) {
@@ -207,13 +223,43 @@ unsigned make_floor_texture(int width, int height, const float* rgba) {
   glGenTextures(1, &tex);
   glBindTexture(GL_TEXTURE_2D, tex);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, width, height, 0, GL_RGBA, GL_FLOAT, rgba);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  set_sampling(GL_LINEAR, GL_CLAMP_TO_EDGE);
+  return tex;
+}
+
+// The environment's chain as one mipmapped RGBA16F texture: level i is the chain's level i,
+// and the texture stops there (GL_TEXTURE_MAX_LEVEL), so GL filters exactly as
+// EnvironmentMap::radiance does: bilinear in a level, wrapping across, linear between levels.
+unsigned make_environment_texture(const EnvironmentMap& m) {
+  unsigned tex = 0;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  std::vector<glm::vec4> rgba;
+  for (size_t i = 0; i < m.levels.size(); ++i) {
+    const HdrImage& level = m.levels[i];
+    rgba.resize(level.rgb.size());
+    for (size_t k = 0; k < rgba.size(); ++k) rgba[k] = glm::vec4(level.rgb[k], 1.0f);
+    glTexImage2D(GL_TEXTURE_2D, GLint(i), GL_RGBA16F, level.width, level.height, 0, GL_RGBA, GL_FLOAT, rgba.data());
+  }
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(m.levels.size() - 1));
+  set_sampling(GL_LINEAR_MIPMAP_LINEAR, GL_REPEAT);
   return tex;
 }
 }  // namespace
+
+void SceneTextures::update_environment(const FrameState& f) {
+  environment_uploaded_ = false;
+  if (f.environment.image == environment_) return;  // the same map: nothing to do
+  glDeleteTextures(1, &environment_tex_);
+  environment_tex_ = 0;
+  environment_ = f.environment.image;
+  if (environment_) {
+    environment_tex_ = make_environment_texture(*environment_);
+    environment_uploaded_ = true;
+  }
+}
 
 SceneTextures::SceneTextures() {
   allocate(4);
@@ -223,6 +269,7 @@ SceneTextures::SceneTextures() {
 
 SceneTextures::~SceneTextures() {
   clear_floor_light();
+  glDeleteTextures(1, &environment_tex_);
   for (BackdropEntry& e : backdrop_cache_) glDeleteTextures(1, &e.tex);
   glDeleteTextures(1, &neutral_tex_);
   glDeleteTextures(1, &objects_tex_);
@@ -277,6 +324,7 @@ void SceneTextures::update(const FrameState& f) {
   }
   update_floor_light(f);
   update_backdrop_light(f);
+  update_environment(f);
 }
 
 void SceneTextures::update_backdrop_light(const FrameState& f) {
@@ -379,6 +427,8 @@ void SceneTextures::bind() const {
   glBindTexture(GL_TEXTURE_2D, floor_light().empty() ? neutral_tex_ : floor_cache_.front().tex);
   glActiveTexture(GL_TEXTURE0 + contract::kBackdropLightSampler.unit);
   glBindTexture(GL_TEXTURE_2D, backdrop_light().empty() ? neutral_tex_ : backdrop_cache_.front().tex);
+  glActiveTexture(GL_TEXTURE0 + contract::kEnvImageSampler.unit);
+  glBindTexture(GL_TEXTURE_2D, environment_tex_ ? environment_tex_ : neutral_tex_);
   glActiveTexture(GL_TEXTURE0);
 }
 

@@ -16,6 +16,7 @@
 
 #include <glm/glm.hpp>
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -69,6 +70,10 @@ class SceneTextures {
   // Whether the last update computed and uploaded the backdrop's light map.
   bool backdrop_light_computed() const { return backdrop_computed_; }
 
+  // Whether the last update uploaded an environment image (env.mode image): only when the
+  // frame's map is another than the one the texture holds.
+  bool environment_uploaded() const { return environment_uploaded_; }
+
   // Rows uploaded by the last update (tests check that a still frame uploads none).
   int object_rows_uploaded() const { return object_uploads_; }
   int knot_rows_uploaded() const { return knot_uploads_; }
@@ -100,6 +105,11 @@ class SceneTextures {
   std::vector<FloorEntry> floor_cache_;
   unsigned neutral_tex_ = 0;  // one texel of factor 1, bound when there is no map
   FloorLightSettings floor_settings_;
+
+  void update_environment(const FrameState&);
+  std::shared_ptr<const EnvironmentMap> environment_;  // what u_env_image holds
+  unsigned environment_tex_ = 0;
+  bool environment_uploaded_ = false;
 
   void update_backdrop_light(const FrameState&);
   // The last few backdrop maps, the current one first (as the floor's: interleaved scenes

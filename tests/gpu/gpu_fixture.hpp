@@ -45,6 +45,7 @@ inline FrameState scene_frame(const SceneRequest& req) { return make_frame(resol
 inline FrameState on_checker_floor(FrameState f) {
   f.params.env.backdrop = int(Backdrop::Checker);
   f.backdrop.kind = Backdrop::Checker;
+  f.backdrop.plane = true;
   return f;
 }
 

@@ -124,6 +124,12 @@ INSTANTIATE_TEST_SUITE_P(
         // A tasting flight of four glasses (one path per pixel through every object):
         // straight on, and from an angle along the row, where glasses are seen through
         // each other and the heads of several glasses lie along one ray.
+        // Environment images (issue 12): the drink seen against, and lit by, the shipped bar
+        // and the studio baked to an image, turned and blurred.
+        GoldenCase{"pint_lager_bar", {"lager", "pint", {"env.mode=image", "env.image=bar"}, {}}, 160, 160, 3, 0.002, 64},
+        GoldenCase{"tulip_amber_studio_image",
+                   {"amber-ale", "tulip", {"env.mode=image", "env.image=studio", "env.rotation=40", "env.blur=4"}, {}},
+                   160, 160, 3, 0.002, 64},
         GoldenCase{"flight", {}, 256, 128, 3, 0.002, 64, nullptr, 0, flight_front},
         GoldenCase{"flight_angle", {}, 192, 144, 3, 0.002, 64, nullptr, 0, flight_angle},
         // Decals (docs/DECALS.md): an enamel wordmark on the front; the same on the back,

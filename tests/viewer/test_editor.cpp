@@ -253,5 +253,24 @@ TEST_F(EditorTest, APresetSwitchKeepsTheSelectionInRange) {
   EXPECT_EQ(ed.selected(), 0);
 }
 
+TEST_F(EditorTest, AnEnvironmentDroppedInIsOneUndoStepAndABadOneChangesNothing) {
+  Editor ed("lager", "");
+  const std::string original = dump(ed.document());
+  const fs::path broken = dir / "broken.hdr";
+  write_file_atomic(broken, "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 8\n");  // no pixels
+  EXPECT_FALSE(ed.use_environment(broken.string()));
+  EXPECT_TRUE(ed.status().error);
+  EXPECT_NE(ed.status().text.find("broken.hdr"), std::string::npos) << ed.status().text;
+  EXPECT_EQ(dump(ed.document()), original);
+  EXPECT_FALSE(ed.use_environment((dir / "missing.exr").string()));
+  EXPECT_EQ(dump(ed.document()), original);
+
+  ASSERT_TRUE(ed.use_environment("bar")) << ed.status().text;
+  EXPECT_EQ(ed.document().env.mode, int(EnvMode::Image));
+  EXPECT_EQ(ed.document().env.image, "bar");
+  ASSERT_TRUE(ed.undo());
+  EXPECT_EQ(dump(ed.document()), original);
+}
+
 }  // namespace
 }  // namespace draught::viewer

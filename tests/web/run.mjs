@@ -170,6 +170,32 @@ test('a broken preset file shows the error and keeps the last good state', async
   assert.equal((await values(page))['liquid.srm'], '40');
 });
 
+test('an HDR environment file becomes the surroundings; a broken one changes nothing', async () => {
+  const page = await desktop();
+  const v0 = await values(page);
+  const { before, noise: n } = await noise(page);
+  await page.setInputFiles('#environment', { name: 'broken.hdr', mimeType: 'image/vnd.radiance', buffer: Buffer.from('#?RADIANCE\nno pixels') });
+  await page.waitForFunction(() => /broken\.hdr/.test(document.getElementById('message').textContent));
+  const m = await message(page);
+  assert.ok(m.error, 'shown as an error');
+  assert.match(m.text, /env\.image/);
+  assert.deepEqual(await values(page), v0, 'nothing applied');
+
+  const bar = fs.readFileSync(new URL('../../presets/environments/bar.hdr', import.meta.url));
+  await page.setInputFiles('#environment', { name: 'my-bar.hdr', mimeType: 'image/vnd.radiance', buffer: bar });
+  await page.waitForFunction(() => /environment my-bar\.hdr/.test(document.getElementById('message').textContent));
+  const v = await values(page);
+  assert.equal(v['env.mode'], 'image');
+  assert.match(v['env.image'], /my-bar\.hdr$/);
+  await waitFrames(page, 3);
+  const d = difference(before, await snapshot(page));
+  note(`studio -> bar ${d.toFixed(1)}, noise ${n.toFixed(2)}`);
+  assert.ok(d > changed(d, n) && d > 6, `the bar around the drink: difference ${d.toFixed(2)}`);
+  await page.screenshot({ path: path.join(artifacts, 'lager-in-the-bar.png') });
+  assert.equal(await page.evaluate(() => window.draught.api.setParam('env.mode', 'studio')), '');
+  await waitFrames(page, 3);
+});
+
 test('export downloads the current state as a preset that loads back', async () => {
   const page = await desktop();
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#export')]);
@@ -210,7 +236,7 @@ test('a decal image from disk goes on the selected glass; a broken one changes n
   m = await message(page);
   assert.ok(!m.error, m.text);
   const v = await values(page);
-  assert.match(v['decal_outer.file'], /^\/decals\/\d+\/my_logo\.png$/);
+  assert.match(v['decal_outer.file'], /^\/uploads\/decals\/\d+\/my_logo\.png$/);
   assert.equal(v['decal_inner.file'], '');
   // Large and black, to stand out of the small test canvas.
   assert.equal(await page.evaluate(() => window.draught.setParam('decal_outer.color', '0.02,0.02,0.02')), '');

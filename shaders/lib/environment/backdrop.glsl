@@ -8,12 +8,13 @@
 #include "lib/common/math.glsl"
 
 struct BackdropSurface {
-  bool present, checker;
+  bool present, checker, plane;  // plane: the floor alone to the horizon (BackdropSurface::plane)
   float z_curve, radius;
 };
 
 BackdropSurface backdrop_surface() {
-  return BackdropSurface(frame.floor_on != 0, frame.backdrop_kind == 1, frame.sweep_z_curve, frame.sweep_radius);
+  return BackdropSurface(frame.floor_on != 0, frame.backdrop_kind == 1, frame.backdrop_kind != 0, frame.sweep_z_curve,
+                         frame.sweep_radius);
 }
 
 // The nearest t > tmin where the ray o + t d meets the backdrop from the scene's side,
@@ -22,12 +23,12 @@ bool intersect(BackdropSurface b, vec3 o, vec3 d, float tmin, out float t, out v
   t = INF;
   n = vec3(0.0, 1.0, 0.0);
   if (!b.present) return false;
-  // The floor: the whole plane for the checker, in front of the curve for the sweep.
+  // The floor: the whole plane when `plane`, in front of the curve for the sweep.
   if (d.y < 0.0) {
     float tf = -o.y / d.y;
-    if (tf > tmin && (b.checker || o.z + tf * d.z >= b.z_curve)) t = tf;
+    if (tf > tmin && (b.plane || o.z + tf * d.z >= b.z_curve)) t = tf;
   }
-  if (b.checker) return t < INF;
+  if (b.plane) return t < INF;
   // The wall above the curve.
   float z_wall = b.z_curve - b.radius;
   if (d.z < 0.0) {

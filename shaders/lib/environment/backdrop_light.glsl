@@ -14,7 +14,7 @@
 // floor -> curve -> wall (0 where the floor starts to curve, negative in front). Twin of
 // core backdrop_coords.
 vec2 backdrop_coords(BackdropSurface b, vec3 p) {
-  if (b.checker || p.z >= b.z_curve) return vec2(p.x, b.z_curve - p.z);             // the floor
+  if (b.plane || p.z >= b.z_curve) return vec2(p.x, b.z_curve - p.z);             // the floor
   if (p.y >= b.radius) return vec2(p.x, b.radius * (0.5 * PI) + (p.y - b.radius));  // the wall
   return vec2(p.x, b.radius * atan(b.z_curve - p.z, b.radius - p.y));               // the curve
 }

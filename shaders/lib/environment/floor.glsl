@@ -73,21 +73,32 @@ float floor_contact(vec3 p, int objects) {
   return contact;
 }
 
-// The backdrop at p (world, normal n), seen from `dist` away: albedo / pi times the
+// The backdrop at p (world, normal n), seen along d from `dist` away: albedo / pi times the
 // light it receives, the rig's direct light (one texel of the backdrop's light map; on the
 // floor through the traced map's shadows and caustics) and the sky's around the feet.
 // `occluded` false: the backdrop mirrored in a glass (a few per cent of a pixel), where
 // each light is taken as a point and shadows and contact are left out: too small to see
 // there, and as cheap as the map's texel.
-vec3 shade_floor(vec3 p, vec3 n, float dist, bool occluded) {
+vec3 shade_floor(vec3 p, vec3 n, vec3 d, float dist, bool occluded) {
   BackdropSurface bd = backdrop_surface();
   // (Counts, not branches, choose: llvmpipe would run both sides for every pixel.)
   vec3 e = sky_irradiance(n) * floor_contact(p, occluded ? OBJECT_COUNT : 0) +
            rig_irradiance_far(p, n, occluded ? 0 : frame.light_count);
   if (occluded) e += floor_direct_light(p, n);
+#ifdef ENV_IMAGE
+  // An image's light is all sky: the map's shadows and caustics (of its brightest patches,
+  // core floor_emitters) change it on the floor.
+  if (occluded && n.y > 0.999) e *= floor_light_factor(p);
+#endif
   vec3 c = albedo(bd, p) / PI * e;
+#ifdef ENV_IMAGE
+  // Under an environment image the floor reaches its horizon: it fades into what the image
+  // shows along the ray (Studio::floor_visibility), so it is a table, not a desert.
+  return mix(env_image(d, 0.0), c, exp(-dist / 2.0));
+#else
   // The checker to the horizon fades into the sky's ground, so it never aliases there.
   return bd.checker ? mix(frame.ground, c, exp(-dist / 2.0)) : c;
+#endif
 }
 
 // What a ray from o in the air sees past the glasses: the nearest of a light's front
@@ -97,7 +108,7 @@ vec3 background(vec3 o, vec3 d, float roughness) {
   vec3 nb;
   bool on_backdrop = intersect(backdrop_surface(), o, d, 0.0, tb, nb);
   vec4 light = lights_seen(o, d, roughness, tb, tl);
-  vec3 beyond = on_backdrop ? shade_floor(o + tb * d, nb, tb, true) : studio_backdrop(d);
+  vec3 beyond = on_backdrop ? shade_floor(o + tb * d, nb, d, tb, true) : sky_seen(d, roughness);
   return light.rgb * light.a + beyond * (1.0 - light.a);
 }
 

@@ -203,7 +203,7 @@ vec4 lights_seen(vec3 o, vec3 d, float roughness, float t_max, out float t) {
 vec3 lights_and_sky(vec3 o, vec3 d, float roughness) {
   float tl;
   vec4 light = lights_seen(o, d, roughness, INF, tl);
-  return light.rgb * light.a + studio_backdrop(d) * (1.0 - light.a);
+  return light.rgb * light.a + sky_seen(d, roughness) * (1.0 - light.a);
 }
 
 #endif  // LIB_ENVIRONMENT_LIGHTS_GLSL

@@ -5,10 +5,15 @@
 #define LIB_ENVIRONMENT_STUDIO_GLSL
 #include "generated/frame.glsl"
 #include "lib/common/math.glsl"
+#include "lib/environment/image.glsl"
 
 // The sky's radiance in direction d. Twin of Studio::sky
-// (core/environment/studio.cpp).
+// (core/environment/studio.cpp). Under an environment image (the ENV_IMAGE variant) the
+// image, blurred by env.blur.
 vec3 studio_backdrop(vec3 d) {
+#ifdef ENV_IMAGE
+  return env_image(d, 0.0);
+#endif
   if (frame.env_mode == 1) return frame.env_color;
   vec3 sky = d.y >= 0.0 ? mix(frame.sky_horizon, frame.sky_top, pow(d.y, 0.6))
                         : mix(frame.sky_horizon, frame.ground, smoothstep(0.0, 0.25, -d.y));
@@ -27,6 +32,17 @@ vec3 studio_backdrop(vec3 d) {
   float cg = max(dot(d, g), 0.0);
   sky += frame.backdrop_glow * vec3(1.0, 0.97, 0.92) * pow(cg, 200.0);
   return sky;
+}
+
+// The sky seen through a surface of GGX roughness `roughness`: an environment image at
+// the level of detail of the reflected lobe (twin of Studio::sky(d, roughness)); the
+// procedural studio is smooth enough to be read as it is.
+vec3 sky_seen(vec3 d, float roughness) {
+#ifdef ENV_IMAGE
+  return env_image(d, roughness);
+#else
+  return studio_backdrop(d);
+#endif
 }
 
 // The sky's irradiance on a surface of unit normal n: nine spherical-harmonic

@@ -7,15 +7,15 @@ namespace draught {
 bool BackdropSurface::intersect(const glm::dvec3& o, const glm::dvec3& d, double tmin, double& t, glm::dvec3& n) const {
   if (!present) return false;
   t = INFINITY;
-  // The floor: the whole plane for the checker, in front of the curve for the sweep.
+  // The floor: the whole plane when `plane`, in front of the curve for the sweep.
   if (d.y < 0) {
     const double tf = -o.y / d.y;
-    if (tf > tmin && (kind == Backdrop::Checker || o.z + tf * d.z >= z_curve)) {
+    if (tf > tmin && (plane || o.z + tf * d.z >= z_curve)) {
       t = tf;
       n = {0, 1, 0};
     }
   }
-  if (kind == Backdrop::Checker) return std::isfinite(t);
+  if (plane) return std::isfinite(t);
   // The wall above the curve.
   const double z_wall = z_curve - radius;
   if (d.z < 0) {
@@ -52,6 +52,7 @@ BackdropSurface backdrop_surface(const EnvParams& e, const glm::dvec3& aim) {
   b.present = e.floor;
   b.kind = Backdrop(e.backdrop);
   b.z_curve = aim.z - double(e.sweep_distance);
+  b.plane = b.kind == Backdrop::Checker || e.mode == int(EnvMode::Image);
   b.radius = e.sweep_radius;
   b.sweep_albedo = glm::dvec3(e.sweep_color);
   b.checker_size = e.checker_size;

@@ -21,6 +21,9 @@ struct BackdropSurface {
   double z_curve = 0, radius = 0.3;  // the sweep
   glm::dvec3 sweep_albedo{0.8};
   double checker_size = 0.04;
+  // The floor alone, the whole plane y = 0 to the horizon: the checker, and the sweep's paper
+  // under an environment image (env.mode image), whose horizon its curve and wall would hide.
+  bool plane = false;
   glm::dvec3 floor_a{0.58}, floor_b{0.44};
 
   // The nearest t > tmin where the ray o + t d meets the backdrop from the scene's side,

@@ -12,14 +12,14 @@ constexpr double kHalfPi = std::numbers::pi / 2;
 }
 
 glm::dvec2 backdrop_coords(const BackdropSurface& b, const glm::dvec3& p) {
-  if (b.kind == Backdrop::Checker || p.z >= b.z_curve) return {p.x, b.z_curve - p.z};  // the floor
+  if (b.plane || p.z >= b.z_curve) return {p.x, b.z_curve - p.z};  // the floor
   if (p.y >= b.radius) return {p.x, b.radius * kHalfPi + (p.y - b.radius)};          // the wall
   return {p.x, b.radius * std::atan2(b.z_curve - p.z, b.radius - p.y)};              // the curve
 }
 
 glm::dvec3 backdrop_point(const BackdropSurface& b, const glm::dvec2& xs, glm::dvec3& n) {
   const double x = xs.x, s = xs.y, r = b.radius;
-  if (b.kind == Backdrop::Checker || s <= 0) {
+  if (b.plane || s <= 0) {
     n = {0, 1, 0};
     return {x, 0, b.z_curve - s};
   }
@@ -66,13 +66,13 @@ BackdropLightMap compute_backdrop_light(const LightRig& rig, const BackdropSurfa
   if (!b.present || rig.lights.empty()) return map;
   // s from `front` in front of the aim to `up` up the wall (the checker: as far behind).
   const double s_lo = b.z_curve - (aim.z + s.front);
-  const double s_hi = b.kind == Backdrop::Checker ? b.z_curve - (aim.z - s.front) : b.radius * kHalfPi + (s.up - b.radius);
+  const double s_hi = b.plane ? b.z_curve - (aim.z - s.front) : b.radius * kHalfPi + (s.up - b.radius);
   const glm::dvec2 lo(aim.x - s.across, s_lo), hi(aim.x + s.across, std::max(s_hi, s_lo + s.texel));
   const glm::dvec2 extent = hi - lo;
   const double coarsest = std::max(extent.x, extent.y) / std::max(s.max_resolution - 2, 1);
   glm::dvec2 texel(std::max(s.texel, coarsest));
   double s0 = lo.y;
-  if (b.kind == Backdrop::Sweep) {
+  if (!b.plane) {
     // Rows of texel centres at both ends of the curve, where the light's slope along s has
     // a kink (the normal starts and stops turning): no cell filters across one.
     const double curve = b.radius * kHalfPi;

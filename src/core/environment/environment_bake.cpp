@@ -1,6 +1,9 @@
 #include "core/environment/environment_bake.hpp"
 
+#include "core/environment/backdrop.hpp"
+#include "core/environment/environment_map.hpp"
 #include "core/environment/lights.hpp"
+#include "core/environment/sky_irradiance.hpp"
 #include "core/environment/studio.hpp"
 #include "core/io/files.hpp"
 #include "core/text/echo.hpp"
@@ -16,30 +19,41 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// The direction a point (u, v) of an equirectangular image looks in (the inverse of
-// equirect_uv in environment_map.hpp).
-glm::dvec3 equirect_direction(double u, double v) {
-  const double phi = (u - 0.5) * 2 * kPi, theta = v * kPi;
-  return {std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
-}
-
 double smooth(double e0, double e1, double x) {
   const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
   return t * t * (3 - 2 * t);
 }
 
-// The studio as the scene's centre sees it: the sky, and the rig's lights in front of it
-// (placed around that centre, so where it is does not matter).
-glm::dvec3 studio_radiance(const Studio& s, const LightRig& rig, const glm::dvec3& d) {
-  double nearest = INFINITY, t;
-  glm::dvec3 c = s.sky(d);
-  for (const AreaLight& l : rig.lights)
-    if (l.intersect(glm::dvec3(0.0), d, 0.0, t) && t < nearest) {
+// The studio as the scene's centre sees it, with no glass: the rig's lights, in front of
+// the backdrop (the sweep lit by the rig and the sky, where env.floor is on), in front of
+// the sky. The centre stands kBakeCentreHeight above the floor, as a glass's middle does.
+constexpr double kBakeCentreHeight = 0.08;
+
+struct StudioView {
+  Studio studio;
+  glm::dvec3 centre{0.0, kBakeCentreHeight, 0.0};
+  LightRig rig;
+  BackdropSurface backdrop;
+  SkyIrradiance sky;
+  explicit StudioView(const SceneParams& p)
+      : studio(p), rig(light_rig(p, centre)), backdrop(backdrop_surface(p.env, centre)), sky(sky_irradiance(studio)) {}
+
+  glm::dvec3 radiance(const glm::dvec3& d) const {
+    double nearest = INFINITY, t;
+    glm::dvec3 n, c = studio.sky(d);
+    if (backdrop.present && backdrop.intersect(centre, d, 0.0, t, n)) {
       nearest = t;
-      c = l.radiance;
+      const glm::dvec3 p = centre + t * d;
+      c = backdrop.albedo(p) / kPi * (rig.irradiance(p, n) + sky.at(n));
     }
-  return c;
-}
+    for (const AreaLight& l : rig.lights)
+      if (l.intersect(centre, d, 0.0, t) && t < nearest) {
+        nearest = t;
+        c = l.radiance;
+      }
+    return c;
+  }
+};
 
 // A warm bar at night, seen from a stool: dark wood, a back bar of lit bottles behind the
 // glass, four pendant lamps of 2700 K, and a dim blue window to the right. Radiance in
@@ -99,10 +113,11 @@ HdrImage bake_environment(const std::string& name, const SceneParams& scene, int
     throw InputError("environment width " + std::to_string(width) + ": expected an even number from 8 to " +
                      std::to_string(kMaxHdrImageWidth));
   std::function<glm::dvec3(const glm::dvec3&)> radiance;
-  const Studio studio(scene);
-  const LightRig rig = light_rig(scene, glm::dvec3(0.0));
+  SceneParams studio_scene = scene;
+  if (studio_scene.env.mode == int(EnvMode::Image)) studio_scene.env.mode = int(EnvMode::Studio);  // not itself
+  const StudioView studio(studio_scene);
   if (name == "studio")
-    radiance = [&](const glm::dvec3& d) { return studio_radiance(studio, rig, d); };
+    radiance = [&](const glm::dvec3& d) { return studio.radiance(d); };
   else if (name == "bar")
     radiance = bar_radiance;
   else
@@ -120,7 +135,7 @@ HdrImage bake_environment(const std::string& name, const SceneParams& scene, int
         for (int i = 0; i < kGrid; ++i) {
           const double u = (x + (i + 0.5) / kGrid) / width, v = (y + (j + 0.5) / kGrid) / height;
           const double w = std::sin(v * kPi);
-          sum += w * radiance(equirect_direction(u, v));
+          sum += w * radiance(equirect_direction({u, v}));
           weight += w;
         }
       img.rgb[size_t(y) * size_t(width) + size_t(x)] = glm::vec3(weight > 0 ? sum / weight : glm::dvec3(0));

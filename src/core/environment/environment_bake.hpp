@@ -1,6 +1,6 @@
 // Environments the project makes itself, as equirectangular HDR images: its own studio
-// (the procedural sky with the rig's lights in it, seen from the scene's centre) and a warm bar interior built from a
-// few simple emitters. `draught environment bake` writes them; the shipped
+// (the procedural sky, the rig's lights and the lit sweep, as a glass's middle sees them)
+// and a warm bar interior built from a few simple emitters. `draught environment bake` writes them; the shipped
 // presets/environments/*.hdr are made so (docs/ENVIRONMENTS.md).
 #pragma once
 

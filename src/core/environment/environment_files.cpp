@@ -18,6 +18,7 @@ bool is_shipped_name(const std::string& name) {
 }
 
 struct Entry {
+  std::string name;  // as given
   std::filesystem::path file;
   std::filesystem::file_time_type written;
   std::uintmax_t bytes = 0;
@@ -54,7 +55,17 @@ std::filesystem::path resolve_environment(const std::string& name) {
 }
 
 std::shared_ptr<const EnvironmentMap> load_environment(const std::string& name) {
-  const std::filesystem::path file = resolve_environment(name);
+  std::filesystem::path file;
+  try {
+    file = resolve_environment(name);
+  } catch (const InputError&) {
+    // A file read before and gone since (deleted while a viewer shows it): the frames go on
+    // with what was read; a name never read is an error.
+    std::lock_guard lock(g_mutex);
+    for (const Entry& e : g_kept)
+      if (e.name == name) return e.map;
+    throw;
+  }
   std::error_code ec;
   const auto written = std::filesystem::last_write_time(file, ec);
   const auto bytes = std::filesystem::file_size(file, ec);
@@ -70,7 +81,7 @@ std::shared_ptr<const EnvironmentMap> load_environment(const std::string& name) 
   // Read outside the lock: a big file takes a while, and another thread may want another.
   auto map = std::make_shared<const EnvironmentMap>(read_environment_map(file));
   std::lock_guard lock(g_mutex);
-  g_kept.push_front({file, written, bytes, map});
+  g_kept.push_front({name, file, written, bytes, map});
   if (g_kept.size() > kKeptMaps) g_kept.pop_back();
   return map;
 }

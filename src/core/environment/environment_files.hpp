@@ -18,8 +18,8 @@ namespace draught {
 // that is no file.
 std::filesystem::path resolve_environment(const std::string& name);
 
-// The map of `name`, read once and kept (a file changed since is read again). Throws
-// InputError naming the file and what was expected.
+// The map of `name`, read once and kept (a file changed since is read again; one deleted
+// since gives what was read). Throws InputError naming the file and what was expected.
 std::shared_ptr<const EnvironmentMap> load_environment(const std::string& name);
 
 // load_environment, for the parameter table's check of env.image.

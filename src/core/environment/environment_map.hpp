@@ -21,6 +21,8 @@ inline constexpr int kMinEnvironmentWidth = 8;
 // and v down, both in [0, 1]: the image's centre is seen looking along -z (behind a glass
 // seen from the default camera), +x is to its right, the top row straight up.
 glm::dvec2 equirect_uv(const glm::dvec3& d);
+// Its inverse: the unit direction seen at (u, v).
+glm::dvec3 equirect_direction(const glm::dvec2& uv);
 
 struct EnvironmentMap {
   std::vector<HdrImage> levels;  // [0] the image, each next half the size down to 8 x 4
@@ -31,6 +33,10 @@ struct EnvironmentMap {
   int width() const { return levels.empty() ? 0 : levels.front().width; }
   int height() const { return levels.empty() ? 0 : levels.front().height; }
 };
+
+// The level of detail whose texels span `angle` radians around the equator (0 for
+// angles finer than the image's own texels).
+double environment_lod(const EnvironmentMap&, double angle);
 
 // The chain of an equirectangular image (twice as wide as high, at least 8 x 4); `name`
 // (the file) begins the InputError for any other shape.

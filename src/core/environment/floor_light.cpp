@@ -1,5 +1,7 @@
 #include "core/environment/floor_light.hpp"
 
+#include "core/environment/studio.hpp"
+
 #include "core/foam/head_volume.hpp"
 #include "core/math/random.hpp"
 #include "core/reference/media.hpp"
@@ -286,7 +288,7 @@ std::vector<glm::dvec3> light_points(const AreaLight& l) {
 // The rect of the floor where the glasses may change the light: every light point's shadow of
 // every corner of every glass's bounds, each reaching at most three glass heights from it,
 // widened by a glass's bound radius (light bent by the glass lands beside its shadow).
-void place_rect(const FrameState& f, const FloorLightSettings& s, FloorLightMap& map) {
+void place_rect(const FrameState& f, const LightRig& emitters, const FloorLightSettings& s, FloorLightMap& map) {
   glm::dvec2 lo(kInf), hi(-kInf);
   for (const VesselFrame& v : f.vessels) {
     const double top = v.vessel.height + v.vessel.rim_minor, b = v.vessel.bound_radius;
@@ -297,7 +299,7 @@ void place_rect(const FrameState& f, const FloorLightSettings& s, FloorLightMap&
       const glm::dvec2 gxz(g.x, g.z);
       lo = glm::min(lo, gxz - b);
       hi = glm::max(hi, gxz + b);
-      for (const AreaLight& l : f.lights.lights)
+      for (const AreaLight& l : emitters.lights)
         for (const glm::dvec3& q : light_points(l)) {
           glm::dvec2 away = gxz - glm::dvec2(q.x, q.z);
           const double len = glm::length(away);
@@ -327,12 +329,12 @@ void place_rect(const FrameState& f, const FloorLightSettings& s, FloorLightMap&
 // How many photons each (light, glass) pair gets: in proportion to the power the light
 // sends into the glass's cone (so photons carry about equal power), at least a few
 // hundred wherever the light reaches it at all.
-std::vector<int> photon_counts(const FrameState& f, const std::vector<Target>& targets, int budget) {
-  const size_t L = f.lights.lights.size(), G = targets.size();
+std::vector<int> photon_counts(const LightRig& emitters, const std::vector<Target>& targets, int budget) {
+  const size_t L = emitters.lights.size(), G = targets.size();
   std::vector<double> flux(L * G, 0.0);
   double total = 0;
   for (size_t l = 0; l < L; ++l) {
-    const AreaLight& light = f.lights.lights[l];
+    const AreaLight& light = emitters.lights[l];
     for (size_t g = 0; g < G; ++g) {
       double sum = 0;
       const std::vector<glm::dvec3> pts = light_points(light);
@@ -372,6 +374,45 @@ glm::dvec3 FloorLightMap::sample(double x, double z) const {
   return glm::mix(a, b, fv);
 }
 
+LightRig floor_emitters(const FrameState& f) {
+  if (!f.environment.image) return f.lights;
+  // The image's patches of the level nearest 32 wide, the brightest on the floor first.
+  const Studio studio(f.params);
+  const EnvironmentMap& map = *f.environment.image;
+  size_t level = 0;
+  while (level + 1 < map.levels.size() && map.levels[level].width > 32) ++level;
+  const HdrImage& img = map.levels[level];
+  struct Patch {
+    double floor_light;  // its irradiance on the floor, mean over the channels
+    glm::dvec3 dir, radiance;
+    double solid_angle;
+  };
+  std::vector<Patch> patches;
+  for (int j = 0; j < img.height / 2; ++j) {  // the upper half: what reaches the floor
+    const double t0 = kPi * j / img.height, t1 = kPi * (j + 1) / img.height;
+    const double solid = (std::cos(t0) - std::cos(t1)) * 2 * kPi / img.width;
+    for (int i = 0; i < img.width; ++i) {
+      const glm::dvec3 dir = studio.world_direction(equirect_direction({(i + 0.5) / img.width, (j + 0.5) / img.height}));
+      const glm::dvec3 l = glm::dvec3(img.at(i, j)) * double(f.params.env.intensity);
+      patches.push_back({mean3(l) * solid * dir.y, dir, l, solid});
+    }
+  }
+  const size_t keep = std::min(patches.size(), kImageFloorEmitters);
+  std::partial_sort(patches.begin(), patches.begin() + long(keep), patches.end(),
+                    [](const Patch& a, const Patch& b) { return a.floor_light > b.floor_light; });
+  LightRig rig;
+  rig.aim = f.lights.aim;
+  for (size_t k = 0; k < keep && patches[k].floor_light > 0; ++k) {
+    AreaLight l;
+    l.shape = LightShape::Sphere;
+    l.radius = kImageEmitterDistance * std::sqrt(patches[k].solid_angle / kPi);  // the patch's solid angle
+    l.center = rig.aim + kImageEmitterDistance * patches[k].dir;
+    l.radiance = patches[k].radiance;
+    rig.lights.push_back(l);
+  }
+  return rig;
+}
+
 glm::dvec3 unoccluded_floor_irradiance(const LightRig& rig, const glm::dvec3& p) {
   return rig.irradiance(p, {0, 1, 0});
 }
@@ -379,12 +420,13 @@ glm::dvec3 unoccluded_floor_irradiance(const LightRig& rig, const glm::dvec3& p)
 FloorLightMap compute_floor_light(const FrameState& f, const FloorLightSettings& s) {
   const auto start = std::chrono::steady_clock::now();
   FloorLightMap map;
-  if (!scene_geometry(f).backdrop.present || f.lights.lights.empty() || f.vessels.empty()) return map;
-  place_rect(f, s, map);
+  const LightRig emitters = floor_emitters(f);
+  if (!scene_geometry(f).backdrop.present || emitters.lights.empty() || f.vessels.empty()) return map;
+  place_rect(f, emitters, s, map);
 
   std::vector<Target> targets;
   for (const VesselFrame& v : f.vessels) targets.push_back(target_of(v));
-  const std::vector<int> counts = photon_counts(f, targets, std::max(s.photons, 0));
+  const std::vector<int> counts = photon_counts(emitters, targets, std::max(s.photons, 0));
   std::vector<long long> first{0};  // the first photon index of each pair
   for (int n : counts) first.push_back(first.back() + n);
   const long long total = first.back();
@@ -404,7 +446,7 @@ FloorLightMap compute_floor_light(const FrameState& f, const FloorLightSettings&
   // several glasses are not counted twice.
   auto photon = [&](long long k, Lane& lane) {
     const size_t pair = size_t(std::upper_bound(first.begin(), first.end(), k) - first.begin()) - 1;
-    const AreaLight& light = f.lights.lights[pair / G];
+    const AreaLight& light = emitters.lights[pair / G];
     const std::uint64_t index = std::uint64_t(k - first[pair]);
     Rng rng(s.seed, pair, index);
     // The point and the direction from a Halton sequence shifted by the pair's random offset
@@ -453,7 +495,10 @@ FloorLightMap compute_floor_light(const FrameState& f, const FloorLightSettings&
     for (int j = t; j < map.height; j += threads)
       for (int i = 0; i < map.width; ++i) {
         const glm::dvec2 c = map.texel_centre(i, j);
-        glm::dvec3 e = unoccluded_floor_irradiance(f.lights, {c.x, 0, c.y});
+        // Under an image, its whole light (the same everywhere: the image is infinitely far);
+        // the proxies' photons only change it near the glasses.
+        glm::dvec3 e = f.environment.image ? f.environment.sky.at({0, 1, 0})
+                                           : unoccluded_floor_irradiance(f.lights, {c.x, 0, c.y});
         const size_t at = size_t(j) * size_t(map.width) + size_t(i);
         map.unoccluded[at] = glm::vec3(e);
         for (const Lane& lane : lanes) e += lane.change[at];
@@ -485,8 +530,11 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
   auto put = [&k](auto... xs) { (k.push_back(std::round(double(xs) * 1e5)), ...); };
   auto put3 = [&put](const auto& v) { put(v.x, v.y, v.z); };
   const BackdropSurface& b = scene_geometry(f).backdrop;
-  put(b.present ? 1 : 0, int(b.kind), b.z_curve, b.radius, f.lights.lights.size(), f.vessels.size());
-  for (const AreaLight& l : f.lights.lights) {
+  const LightRig emitters = floor_emitters(f);
+  put(b.present ? 1 : 0, int(b.kind), b.plane ? 1 : 0, b.z_curve, b.radius, emitters.lights.size(), f.vessels.size());
+  const glm::dvec3 sky = f.environment.image ? f.environment.sky.at({0, 1, 0}) : glm::dvec3(0.0);
+  put3(sky);
+  for (const AreaLight& l : emitters.lights) {
     put(int(l.shape), l.radius);
     put3(l.center);
     put3(l.normal);

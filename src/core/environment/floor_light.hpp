@@ -67,6 +67,16 @@ struct FloorLightMap {
   glm::dvec3 sample(double x, double z) const;
 };
 
+// Under an environment image (env.mode image) the photons come from its brightest patches
+// of sky: the kImageFloorEmitters patches (of a 32 x 16 level, about 11 degrees) giving the
+// floor the most light, each a sphere light that far away covering the patch's solid angle
+// with its radiance. Their photons change the image's whole, even light on the floor
+// (its spherical harmonics) near the glasses: the shadows of what lights the floor most.
+inline constexpr size_t kImageFloorEmitters = 16;
+inline constexpr double kImageEmitterDistance = 50.0;  // m from the scene's centre
+// The lights whose photons the map traces: the rig's, or an image's patches.
+LightRig floor_emitters(const FrameState&);
+
 // The irradiance the rig gives floor point p (y = 0) with nothing in between.
 glm::dvec3 unoccluded_floor_irradiance(const LightRig&, const glm::dvec3& p);
 

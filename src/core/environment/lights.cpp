@@ -177,6 +177,7 @@ LightRig light_rig(const SceneParams& p, const glm::dvec3& aim) { return light_r
 LightRig light_rig(const SceneParams& p, const glm::dvec3& aim, const glm::dvec3& backlight_aim) {
   LightRig rig;
   rig.aim = aim;
+  if (p.env.mode == int(EnvMode::Image)) return rig;  // the image's light replaces the rig's
   for (const AreaLight& l : {place_light(p.light, aim), place_light(p.strips, aim), place_light(p.strips, aim, true),
                              place_light(p.backlight, backlight_aim)})
     if (l.emits()) rig.lights.push_back(l);

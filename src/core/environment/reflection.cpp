@@ -1,14 +1,46 @@
 #include "core/environment/reflection.hpp"
 
+#include <cmath>
 #include <numbers>
 
 namespace draught {
+
+namespace {
+
+// An environment image's glint: its brightest patch (a texel of the level nearest 64 wide,
+// about 6 degrees), the direction to it and the irradiance it gives facing it.
+void image_glint(const Studio& studio, EnvironmentFrame& f) {
+  constexpr double kPi = std::numbers::pi;
+  const EnvironmentMap& map = *studio.image;
+  size_t level = 0;
+  while (level + 1 < map.levels.size() && map.levels[level].width > 64) ++level;
+  const HdrImage& img = map.levels[level];
+  double best = 0;
+  for (int j = 0; j < img.height; ++j) {
+    const double t0 = kPi * j / img.height, t1 = kPi * (j + 1) / img.height;
+    const double solid = (std::cos(t0) - std::cos(t1)) * 2 * kPi / img.width;
+    for (int i = 0; i < img.width; ++i) {
+      const glm::dvec3 e = glm::dvec3(img.at(i, j)) * solid * double(studio.env.intensity);
+      if (e.x + e.y + e.z <= best) continue;
+      best = e.x + e.y + e.z;
+      f.glint_dir = glm::vec3(studio.world_direction(equirect_direction({(i + 0.5) / img.width, (j + 0.5) / img.height})));
+      f.glint = glm::vec3(e);
+    }
+  }
+}
+
+}  // namespace
 
 EnvironmentFrame environment_frame(const SceneParams& p, const LightRig& rig, const BackdropSurface& backdrop) {
   constexpr double kPi = std::numbers::pi;
   EnvironmentFrame f;
   const Studio studio(p);
   f.sky = sky_irradiance(studio);
+  f.image = studio.image;
+  f.rotation_cos = float(studio.rotation_cos);
+  f.rotation_sin = float(studio.rotation_sin);
+  f.blur_lod = float(studio.blur_lod);
+  f.intensity = p.env.intensity;
   // The sky's mean radiance over the sphere is its band-0 coefficient's share.
   glm::dvec3 mean = f.sky.coef[0] * SkyIrradiance::basis({0, 1, 0})[0] / kPi;
   // Each light over the solid angle it covers at the centre (for a small light the
@@ -28,8 +60,9 @@ EnvironmentFrame environment_frame(const SceneParams& p, const LightRig& rig, co
     }
     floor_light += l.radiance * l.irradiance_factor(under, {0, 1, 0});
   }
+  if (studio.image) image_glint(studio, f);
   // The backdrop fills about the lower half of what a bubble sees: lit paper.
-  if (backdrop.present && p.env.mode == int(EnvMode::Studio))
+  if (backdrop.present && p.env.mode != int(EnvMode::Constant))
     mean += 0.5 * backdrop.albedo(under) / kPi * (floor_light + f.sky.at({0, 1, 0}));
   f.reflected = glm::vec3(mean);
   return f;

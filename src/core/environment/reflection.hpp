@@ -9,6 +9,8 @@
 
 #include <glm/glm.hpp>
 
+#include <memory>
+
 namespace draught {
 
 struct EnvironmentFrame {
@@ -23,6 +25,9 @@ struct EnvironmentFrame {
   glm::vec3 glint{0.0f};
   // The sky's irradiance (spherical harmonics) for the backdrop, the heads and the haze.
   SkyIrradiance sky;
+  // env.mode image: the environment and how it is seen (Studio's image, rotation, blur).
+  std::shared_ptr<const EnvironmentMap> image;
+  float rotation_cos = 1, rotation_sin = 0, blur_lod = 0, intensity = 1;
 };
 
 EnvironmentFrame environment_frame(const SceneParams&, const LightRig&, const BackdropSurface&);

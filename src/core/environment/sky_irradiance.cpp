@@ -24,12 +24,44 @@ glm::dvec3 SkyIrradiance::at(const glm::dvec3& n) const {
   return glm::max(e, glm::dvec3(0.0));
 }
 
+namespace {
+
+// An environment image projected texel by texel (of the first level at most 256 wide: each
+// texel the mean of those above it), each weighted by its exact solid angle, so a small
+// bright lamp in the image gives its whole light, not what a grid of directions meets.
+SkyIrradiance image_irradiance(const Studio& studio) {
+  constexpr double kPi = std::numbers::pi;
+  const EnvironmentMap& map = *studio.image;
+  size_t level = 0;
+  while (level + 1 < map.levels.size() && map.levels[level].width > 256) ++level;
+  const HdrImage& img = map.levels[level];
+  SkyIrradiance s;
+  const double dp = 2 * kPi / img.width, dt = kPi / img.height;
+  for (int j = 0; j < img.height; ++j) {
+    const double weight = (std::cos(j * dt) - std::cos((j + 1) * dt)) * dp * double(studio.env.intensity);
+    for (int i = 0; i < img.width; ++i) {
+      const glm::dvec3 d = studio.world_direction(equirect_direction({(i + 0.5) / img.width, (j + 0.5) / img.height}));
+      const glm::dvec3 l = glm::dvec3(img.at(i, j)) * weight;
+      const std::array<double, 9> y = SkyIrradiance::basis(d);
+      for (int k = 0; k < 9; ++k) s.coef[size_t(k)] += l * y[size_t(k)];
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
 SkyIrradiance sky_irradiance(const Studio& studio) {
   constexpr double kPi = std::numbers::pi;
+  const double band[9] = {kPi, 2 * kPi / 3, 2 * kPi / 3, 2 * kPi / 3, kPi / 4, kPi / 4, kPi / 4, kPi / 4, kPi / 4};
+  if (studio.image) {
+    SkyIrradiance s = image_irradiance(studio);
+    for (int k = 0; k < 9; ++k) s.coef[size_t(k)] *= band[k];
+    return s;
+  }
   // 64 x 128 cells: the painted strips (a few degrees wide) are resolved well enough for
   // irradiance, which only keeps their low frequencies.
   constexpr int kTheta = 64, kPhi = 128;
-  const double band[9] = {kPi, 2 * kPi / 3, 2 * kPi / 3, 2 * kPi / 3, kPi / 4, kPi / 4, kPi / 4, kPi / 4, kPi / 4};
   SkyIrradiance s;
   const double dt = kPi / kTheta, dp = 2 * kPi / kPhi;
   for (int i = 0; i < kTheta; ++i) {

@@ -25,7 +25,8 @@ struct SkyIrradiance {
   static std::array<double, 9> basis(const glm::dvec3& d);
 };
 
-// Projects the studio's sky (Studio::sky: gradient, painted strips and glow, or the
+// Projects the studio's sky (Studio::sky: an environment image texel by texel; else the
+// gradient, painted strips and glow, or the
 // constant colour) by midpoint quadrature over the sphere.
 SkyIrradiance sky_irradiance(const Studio&);
 

@@ -1,5 +1,7 @@
 #include "core/reference/path_tracer.hpp"
 
+#include "core/environment/environment_sampling.hpp"
+
 #include "core/environment/lights.hpp"
 #include "core/environment/studio.hpp"
 #include "core/foam/head_volume.hpp"
@@ -104,7 +106,8 @@ struct AirEvent {
 class Tracer {
  public:
   Tracer(const FrameState& f, const ReferenceSettings& s)
-      : frame_(f), settings_(s), geo_(scene_geometry(f, true)), studio_(f.params), lights_(f.lights.lights) {
+      : frame_(f), settings_(s), geo_(scene_geometry(f, true)), studio_(f.params), environment_(studio_),
+        lights_(f.lights.lights) {
     for (size_t i = 0; i < f.vessels.size(); ++i) {
       const VesselFrame& vf = f.vessels[i];
       heads_.emplace_back(vf, geo_.vessels[i]);
@@ -192,13 +195,19 @@ class Tracer {
         }
       }
       if (!h.valid()) {  // out into the studio
-        L += thr * studio_.sky(ray.d);
+        L += thr * studio_.sky(ray.d) * environment_weight(mis, ray.d);
         break;
       }
       const glm::dvec3 p = ray.at(h.t);
       if (h.m == Material::Floor) {  // the backdrop: Lambertian
-        // The checker floor fades into the studio with distance (as the picture's).
-        if (geo_.backdrop.kind == Backdrop::Checker && rng.uniform() >= Studio::floor_visibility(glm::length(p - eye))) {
+        // The checker floor fades into the studio with distance (as the picture's); under an
+        // environment image the floor fades into the image: the path goes on through it.
+        if (geo_.backdrop.plane &&
+            rng.uniform() >= Studio::floor_visibility(glm::length(p - eye))) {
+          if (studio_.image) {
+            L += thr * studio_.sky(ray.d);
+            break;
+          }
           L += thr * glm::dvec3(studio_.env.ground);
           break;
         }
@@ -419,6 +428,7 @@ class Tracer {
   // Henyey-Greenstein phase of anisotropy g. One light is sampled (selection), weighted
   // against the vertex's own sampling by the power heuristic.
   glm::dvec3 direct_light(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& d, double g, Rng& rng) const {
+    if (!environment_.empty()) return environment_light(p, n, d, g, rng);
     Selection prob;
     if (!selection(p, n, prob)) return glm::dvec3(0.0);
     double u = rng.uniform();
@@ -435,10 +445,36 @@ class Tracer {
     return lights_[j].radiance * (vis * f / pdf_light * power_weight(pdf_light, f));
   }
 
+  // Under an environment image (which replaces the rig: no lights then) its light at p,
+  // per unit albedo, towards -d: one direction sampled in proportion to the image's light
+  // (core/environment/environment_sampling), weighted against the vertex's own sampling.
+  // The floor blocks what lies below it (a path through its fading far part is not
+  // counted by this strategy: it takes weight 1 there).
+  glm::dvec3 environment_light(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& d, double g, Rng& rng) const {
+    double pdf;
+    const double u1 = rng.uniform(), u2 = rng.uniform(), u3 = rng.uniform(), u4 = rng.uniform();
+    const glm::dvec3 dir = environment_.sample(u1, u2, u3, u4, pdf);
+    const bool surface = glm::length(n) > 0;
+    const double f = surface ? std::max(glm::dot(dir, n), 0.0) / kPi : hg_phase(glm::dot(d, dir), g);
+    if (f <= 0 || !(pdf > 0)) return glm::dvec3(0.0);
+    const double vis = visibility({p, dir}, kEnvironmentShadowReach, rng);
+    if (vis <= 0) return glm::dvec3(0.0);
+    return studio_.sky(dir) * (vis * f / pdf * power_weight(pdf, f));
+  }
+
+  // The MIS weight of a path that left into an environment image along d, against the
+  // last vertex's sampling of the image (1 without an image or such a vertex).
+  double environment_weight(const MisVertex& v, const glm::dvec3& d) const {
+    if (v.pdf < 0 || environment_.empty()) return 1.0;
+    return power_weight(v.pdf, environment_.pdf(d));
+  }
+  static constexpr double kEnvironmentShadowReach = 1e5;  // m: anything in the way blocks
+
   const FrameState& frame_;
   ReferenceSettings settings_;
   SceneGeometry geo_;
   Studio studio_;
+  EnvironmentSampler environment_;  // empty unless studio_ has an image
   const std::vector<AreaLight>& lights_;
   std::vector<HeadVolume> heads_;
   std::vector<VesselMedia> media_;

@@ -649,6 +649,7 @@ TestScene pint_scene(double liquid_offset, dvec3 liquid_n = {0, 1, 0}, bool floo
   s.g.vessels = {vg};
   s.g.backdrop.present = floor;
   s.g.backdrop.kind = Backdrop::Checker;
+  s.g.backdrop.plane = true;
   return s;
 }
 
