@@ -462,7 +462,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_set_param(const char* path, const char*
 }
 
 // A decal image the page was given (`size` bytes at `data`, the file named `name`): written
-// into the page's file system as /decals/N/NAME (a folder per upload: a new file never
+// into the page's file system as /uploads/decals/N/NAME (a folder per upload: a new file never
 // replaces one a glass uses) and set as the selected glass's outer (layer 0) or inner
 // (layer 1) decal. "" or the error; a file the loader refuses (not a PNG, too large,
 // damaged) is removed again and the glass keeps its decal.
@@ -474,7 +474,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_load_decal(const char* name, const char
   for (const char* c = name; *c && safe.size() < 100; ++c)
     safe += std::isalnum(static_cast<unsigned char>(*c)) || *c == '-' || *c == '_' || (*c == '.' && !safe.empty()) ? *c : '_';
   if (safe.empty()) safe = "decal.png";
-  const std::filesystem::path dir = "/decals/" + std::to_string(++uploads), file = dir / safe;
+  const std::filesystem::path dir = "/uploads/decals/" + std::to_string(++uploads), file = dir / safe;
   const ParamDesc* d = find_param(layer == 0 ? "decal_outer.file" : "decal_inner.file");
   try {
     std::filesystem::create_directories(dir);

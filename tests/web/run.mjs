@@ -237,7 +237,7 @@ test('a decal image from disk goes on the selected glass; a broken one changes n
   m = await message(page);
   assert.ok(!m.error, m.text);
   const v = await values(page);
-  assert.match(v['decal_outer.file'], /^\/decals\/\d+\/my_logo\.png$/);
+  assert.match(v['decal_outer.file'], /^\/uploads\/decals\/\d+\/my_logo\.png$/);
   assert.equal(v['decal_inner.file'], '');
   // Large and black, to stand out of the small test canvas.
   assert.equal(await page.evaluate(() => window.draught.setParam('decal_outer.color', '0.02,0.02,0.02')), '');
