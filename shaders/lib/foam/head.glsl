@@ -325,6 +325,18 @@ float lacing_cover(Vessel v, ObjectFoam f, vec3 p) {
   return cover * f.lacing_strength;
 }
 
+// Whether a stretch [0, t_end] of a world path in the air can meet a head (or a big
+// bubble's cap): foam_along has work there.
+bool meets_head(vec3 o, vec3 d, float t_end) {
+  bool meets = false;
+  for (int i = 0; i < OBJECT_COUNT; ++i) {
+    Vessel v = load_vessel(i);
+    float t0 = 0.0, t1 = t_end;  // (foam_interval keeps to the glass's bounds)
+    meets = meets || (v.shape.has_head != 0 && foam_interval(v, fetch_object_foam(i), to_local_point(v, o), to_local_dir(v, d), t0, t1));
+  }
+  return meets;
+}
+
 // The heads of every glass along a stretch [0, t_end] of a world path in the air, front
 // to back (heads do not overlap: each is inside its own glass). Adds their light to
 // `radiance` and attenuates `thr`.
