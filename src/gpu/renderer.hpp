@@ -86,8 +86,8 @@ class Renderer {
 
   // What the path pass is compiled with (software rasterizers pay for code even where a
   // uniform branch skips it, so frames get only the code they use): these bits, and the
-  // number of held objects (0: the general path) from bit 4 on.
-  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kHeldShift = 3 };
+  // number of held objects (0: the general path) from bit kHeldShift on.
+  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kSphereLights = 8, kPaintedSky = 16, kHeldShift = 5 };
   std::unique_ptr<Program> build_program(int variant) const;
 
   std::filesystem::path shader_dir_;

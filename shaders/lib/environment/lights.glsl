@@ -16,10 +16,16 @@ struct AreaLight {
   vec3 radiance;
 };
 
+// The renderer compiles the sphere lights' code in only for a rig that has one
+// (gpu/renderer.cpp): llvmpipe would run it for every light a pixel tests.
+#ifndef SPHERE_LIGHTS
+#define SPHERE_LIGHTS 0
+#endif
+
 AreaLight area_light(int i) {
   vec4 c = frame.light_center[i], n = frame.light_normal[i];
-  return AreaLight(n.w > 0.5, c.xyz, n.xyz, frame.light_half_u[i].xyz, frame.light_half_v[i].xyz, c.w,
-                   frame.light_radiance[i].rgb);
+  return AreaLight(SPHERE_LIGHTS != 0 && n.w > 0.5, c.xyz, n.xyz, frame.light_half_u[i].xyz, frame.light_half_v[i].xyz,
+                   c.w, frame.light_radiance[i].rgb);
 }
 
 // The nearer t > tmin where a ray meets a sphere from outside it.

@@ -6,12 +6,19 @@
 #include "generated/frame.glsl"
 #include "lib/common/math.glsl"
 
+// The strips and the glow painted in the sky (the checker test environment) are compiled
+// in only when they are not black (gpu/renderer.cpp).
+#ifndef PAINTED_SKY
+#define PAINTED_SKY 0
+#endif
+
 // The sky's radiance in direction d. Twin of Studio::sky
 // (core/environment/studio.cpp).
 vec3 studio_backdrop(vec3 d) {
   if (frame.env_mode == 1) return frame.env_color;
   vec3 sky = d.y >= 0.0 ? mix(frame.sky_horizon, frame.sky_top, pow(d.y, 0.6))
                         : mix(frame.sky_horizon, frame.ground, smoothstep(0.0, 0.25, -d.y));
+#if PAINTED_SKY
   // Strip lights, left and right and a little behind the scene, tall and narrow.
   for (int i = 0; i < 2; ++i) {
     float az = radians(i == 0 ? 105.0 : -105.0);
@@ -26,6 +33,7 @@ vec3 studio_backdrop(vec3 d) {
   vec3 g = normalize(vec3(0.0, 0.12, -1.0));
   float cg = max(dot(d, g), 0.0);
   sky += frame.backdrop_glow * vec3(1.0, 0.97, 0.92) * pow(cg, 200.0);
+#endif
   return sky;
 }
 
