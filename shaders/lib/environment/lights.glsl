@@ -14,6 +14,7 @@ struct AreaLight {
   vec3 center, normal, half_u, half_v;
   float radius;
   vec3 radiance;
+  vec3 extent;  // a rect's |half_u|, |half_v| and area (core computes them once per frame)
 };
 
 // The renderer compiles the sphere lights' code in only for a rig that has one
@@ -25,7 +26,7 @@ struct AreaLight {
 AreaLight area_light(int i) {
   vec4 c = frame.light_center[i], n = frame.light_normal[i];
   return AreaLight(SPHERE_LIGHTS != 0 && n.w > 0.5, c.xyz, n.xyz, frame.light_half_u[i].xyz, frame.light_half_v[i].xyz,
-                   c.w, frame.light_radiance[i].rgb);
+                   c.w, frame.light_radiance[i].rgb, frame.light_extent[i].xyz);
 }
 
 // The nearer t > tmin where a ray meets a sphere from outside it.
@@ -125,8 +126,7 @@ float irradiance_factor_far(AreaLight l, vec3 x, vec3 n) {
   float d2 = dot(w, w), inv = inversesqrt(d2);
   float cos_s = max(dot(n, w) * inv, 0.0);
   if (l.sphere) return PI * l.radius * l.radius / max(d2, l.radius * l.radius) * cos_s;
-  float area = 4.0 * length(l.half_u) * length(l.half_v);
-  return area * max(-dot(l.normal, w) * inv, 0.0) * cos_s / d2;
+  return l.extent.z * max(-dot(l.normal, w) * inv, 0.0) * cos_s / d2;
 }
 
 // The irradiance the first `count` lights of the rig give x (normal n) with nothing in
@@ -192,7 +192,7 @@ vec4 lights_seen(vec3 o, vec3 d, float roughness, float t_max, out float t) {
       ti = dot(l.center - o, l.normal) / denom;
       if (ti <= 0.0) continue;
       vec3 q = o + ti * d - l.center;
-      float lu = length(l.half_u), lv = length(l.half_v);
+      float lu = l.extent.x, lv = l.extent.y;
       cover = soft_box(dot(q, l.half_u) / (lu * lu), spread * ti / lu) *
               soft_box(dot(q, l.half_v) / (lv * lv), spread * ti / lv);
     }
