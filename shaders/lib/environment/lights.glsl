@@ -169,34 +169,31 @@ vec4 lights_seen(vec3 o, vec3 d, float roughness, float t_max, out float t) {
   vec4 seen = vec4(0.0);
   float a = roughness * roughness;  // GGX alpha: the reflected lobe is about 2 alpha wide
   float spread = max(0.0015, 2.0 * a);  // radians either side of an edge
+  // Every light is tested whole, with no bounds first and no early way out: llvmpipe
+  // runs all of it for every pixel anyway, so each test more is only more work.
   for (int i = 0; i < MAX_LIGHTS; ++i) {
-    if (i >= frame.light_count) break;
-    // Bounds first: the sphere around the light (and its spread edge) the ray must pass.
-    vec4 c = frame.light_center[i];
-    vec3 w = c.xyz - o;
-    float along = dot(w, d), bound = frame.light_half_u[i].w * (1.0 + 2.0 * spread) + 2.0 * spread * max(along, 0.0);
-    if (along < -bound || dot(w, w) - along * along > bound * bound) continue;
     AreaLight l = area_light(i);
+    vec3 w = l.center - o;
     float ti, cover;
+    bool front;
     if (l.sphere) {
       float d2 = dot(w, w);
       ti = dot(w, d);
-      if (d2 <= l.radius * l.radius || ti <= 0.0) continue;
-      float sin2 = l.radius * l.radius / d2, cos_r = sqrt(1.0 - sin2);
+      float sin2 = l.radius * l.radius / d2, cos_r = sqrt(max(1.0 - sin2, 0.0));
       float edge = min(spread * sqrt(sin2), 1.0 - cos_r);
       cover = smoothstep(cos_r - edge, cos_r + edge, ti * inversesqrt(d2));
+      front = d2 > l.radius * l.radius && ti > 0.0;  // (a lamp is not seen from within)
       ti -= l.radius;
     } else {
       float denom = dot(d, l.normal);
-      if (denom >= 0.0) continue;  // its back
-      ti = dot(l.center - o, l.normal) / denom;
-      if (ti <= 0.0) continue;
-      vec3 q = o + ti * d - l.center;
+      ti = dot(w, l.normal) / denom;
+      vec3 q = ti * d - w;
       float lu = l.extent.x, lv = l.extent.y;
       cover = soft_box(dot(q, l.half_u) / (lu * lu), spread * ti / lu) *
               soft_box(dot(q, l.half_v) / (lv * lv), spread * ti / lv);
+      front = denom < 0.0 && ti > 0.0;  // its emitting side, ahead
     }
-    if (cover > 0.0 && ti < t && ti < t_max) {
+    if (i < frame.light_count && front && cover > 0.0 && ti < t && ti < t_max) {
       t = ti;
       seen = vec4(l.radiance, cover);
     }
