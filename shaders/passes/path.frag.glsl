@@ -119,7 +119,7 @@ void go_on(inout Path path, Hit h, Crossing c, vec3 p) {
 // (the lacing on the wall is done before: lace_wall); the reflection's look at the
 // surroundings (absorbed on its way out when the path is inside) goes to `look`. v: the
 // records of h's object (inside a glass or drink that is also the path's).
-void shade_interface(inout Path path, Hit h, Vessel v, out Look look) {
+void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Look look) {
   look = no_look();
   vec3 p = path.o + h.t * path.d;
   ObjectGlass g = glass_of(v.row);
@@ -138,7 +138,7 @@ void shade_interface(inout Path path, Hit h, Vessel v, out Look look) {
     // out and leaves bent.
     vec3 r = reflect(path.d, c.n);
     if (path.medium == MEDIUM_AIR) {
-      if (frame.transparent == 0) look = Look(p, r, path.thr * c.F, rough, true, true);
+      if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true);
     } else {
       vec3 out_dir;
       vec3 tr = reflected_light(v, g, h.m, path.medium, below, pl, to_local_dir(v, r), to_local_dir(v, c.n), out_dir);
@@ -186,13 +186,16 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
   Path path = Path(eye, dir, MEDIUM_AIR, -1, vec3(0.0), vec3(1.0));
   see_through = 0.0;
   LitBackdrop lit = LitBackdrop(vec3(0.0), vec3(0.0, 1.0, 0.0), vec3(0.0));
-  int events = 0, steps = 0, max_steps = frame.max_events * (OBJECT_COUNT + 1) + 1;  // iterations of the path loop
+  // (Read before the loops: inside them each read of the Frame block costs llvmpipe a load.)
+  int max_events = frame.max_events;
+  bool transparent = frame.transparent != 0;
+  int events = 0, steps = 0, max_steps = max_events * (OBJECT_COUNT + 1) + 1;  // iterations of the path loop
   float tmin = 0.0;
   bool foam_done = false, lace_done = false;  // this segment's heads marched, this hit's wall laced
   // A path stops at most once per segment for the heads and once per event for the
   // lacing (a path held in a glass wall by total internal reflection above the drink
   // meets the inner wall again and again); the last stage stops for nothing.
-  int max_stages = 2 * frame.max_events + 3;
+  int max_stages = 2 * max_events + 3;
   for (int stage = 0; stage < max_stages; ++stage) {
     bool stops = stage < max_stages - 1;
     bool stop_foam = false, stop_lace = false;
@@ -204,7 +207,7 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
       Vessel v;
       Hit h = no_hit();
       // Out of events (or of iterations) the path looks out from where it is.
-      bool in_events = events < frame.max_events && steps < max_steps;
+      bool in_events = events < max_events && steps < max_steps;
       if (in_events && !search_step(s, path.o, path.d, path.medium, path.obj, false, v)) continue;
       if (in_events) h = s.best;
 #if FOAM_HEAD
@@ -223,14 +226,14 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
       bool leaves = h.m == M_NONE;
       if (leaves) {
         look = Look(path.o, path.d, path.thr, 0.0, path.medium == MEDIUM_AIR, false);
-        if (frame.transparent != 0) {
+        if (transparent) {
           float m = min(path.thr.r, min(path.thr.g, path.thr.b));
           see_through = m;
           path.radiance += (path.thr - vec3(m)) * sky_light();
           look.w = vec3(0.0);
         }
       } else {
-        shade_interface(path, h, v, look);
+        shade_interface(path, h, v, transparent, look);
       }
       look_out(look, path.radiance, lit);
       foam_done = lace_done = false;
@@ -345,7 +348,12 @@ vec4 debug_studio(vec3 eye, vec3 dir, int view) {
 // ---- output ----
 
 void main() {
+  // (Uniforms read in the path loop are held from here: on llvmpipe each read of a uniform
+  // block's member is a load and a broadcast to every lane.)
   init_objects();
+  init_lights();
+  init_studio();
+  init_backdrop();
   vec3 dir = camera_dir(gl_FragCoord.xy);
 #if DEBUG_VIEWS
   int view = frame.debug_view;

@@ -88,7 +88,7 @@ vec3 shade_backdrop(vec3 p, vec3 n, float dist) {
 // reflection.
 vec3 shade_backdrop_mirrored(vec3 p, vec3 n, float dist) {
   BackdropSurface bd = backdrop_surface();
-  vec3 c = albedo(bd, p) / PI * (sky_irradiance(n) + rig_irradiance_far(p, n, frame.light_count));
+  vec3 c = albedo(bd, p) / PI * (sky_irradiance(n) + rig_irradiance_far(p, n, g_light_count));
   return bd.checker ? mix(frame.ground, c, exp(-dist / 2.0)) : c;
 }
 

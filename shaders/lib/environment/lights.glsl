@@ -23,11 +23,22 @@ struct AreaLight {
 #define SPHERE_LIGHTS 0
 #endif
 
-AreaLight area_light(int i) {
-  vec4 c = frame.light_center[i], n = frame.light_normal[i];
-  return AreaLight(SPHERE_LIGHTS != 0 && n.w > 0.5, c.xyz, n.xyz, frame.light_half_u[i].xyz, frame.light_half_v[i].xyz,
-                   c.w, frame.light_radiance[i].rgb, frame.light_extent[i].xyz);
+// The rig, read from the Frame block once per pixel (init_lights, first in main) and held:
+// on llvmpipe a uniform block's member costs a load and a broadcast to every lane at each
+// read, and the lights are read by every look at the surroundings.
+AreaLight g_lights[MAX_LIGHTS];
+int g_light_count;  // lights in use (frame.light_count)
+
+void init_lights() {
+  g_light_count = frame.light_count;
+  for (int i = 0; i < MAX_LIGHTS; ++i) {
+    vec4 c = frame.light_center[i], n = frame.light_normal[i];
+    g_lights[i] = AreaLight(SPHERE_LIGHTS != 0 && n.w > 0.5, c.xyz, n.xyz, frame.light_half_u[i].xyz,
+                            frame.light_half_v[i].xyz, c.w, frame.light_radiance[i].rgb, frame.light_extent[i].xyz);
+  }
 }
+
+AreaLight area_light(int i) { return g_lights[i]; }
 
 // The nearer t > tmin where a ray meets a sphere from outside it.
 bool light_hit_sphere(vec3 c, float r, vec3 o, vec3 d, float tmin, out float t) {
@@ -193,7 +204,7 @@ vec4 lights_seen(vec3 o, vec3 d, float roughness, float t_max, out float t) {
               soft_box(dot(q, l.half_v) / (lv * lv), spread * ti / lv);
       front = denom < 0.0 && ti > 0.0;  // its emitting side, ahead
     }
-    if (i < frame.light_count && front && cover > 0.0 && ti < t && ti < t_max) {
+    if (i < g_light_count && front && cover > 0.0 && ti < t && ti < t_max) {
       t = ti;
       seen = vec4(l.radiance, cover);
     }
