@@ -44,11 +44,52 @@ float max3(vec3 v) { return max(v.r, max(v.g, v.b)); }
 
 // ---- stage: the surroundings ----
 
-// What a ray sees past every object, from its own point: the nearest of a light's front
-// and the backdrop, else the sky, from the air; from inside a glass or a drink (a path
-// that ran out of events) the lights and the sky.
-vec3 surroundings(vec3 o, vec3 d, int medium) {
-  return medium == MEDIUM_AIR ? background(o, d, 0.0) : lights_and_sky(o, d, 0.0);
+// A ray that looks out at the surroundings past every object, and what reaches the eye
+// of what it sees. Each iteration of the path loop makes at most one (the reflection at
+// an interface, or the path itself where it leaves) and looks it up in one place:
+// llvmpipe runs every copy of inlined code for every pixel of a SIMD group, taken or not.
+struct Look {
+  vec3 o, d;       // from where, which way (world)
+  vec3 w;          // what reaches the eye of what it sees
+  float rough;     // the GGX roughness of the surface that sent it (0: none)
+  bool backdrop;   // from the air: the backdrop can be seen (inside a glass or drink, where
+                   // the way out is not traced, the lights and the sky only)
+  bool mirrored;   // a reflection off a glass: its backdrop as a glass mirrors it
+};
+
+Look no_look() { return Look(vec3(0.0), vec3(0.0, 1.0, 0.0), vec3(0.0), 0.0, false, false); }
+
+// Where the path's own ray meets the backdrop, shaded once after the path loop (its light
+// map, the glasses' shadows, the contact: heavier than a reflection's backdrop, and one
+// per path): the point, its normal, the ray's direction and what reaches the eye of it.
+struct LitBackdrop {
+  vec3 p, n, d, w;
+};
+
+// What the look sees, from its own point: the nearest of a light's front and the
+// backdrop, else the sky (an environment image at the level of the surface's lobe): added
+// to the path's radiance. A mirrored backdrop is shaded here (each light taken as a
+// point); the path's own goes to `lit`. With the screen as the background (the AR view)
+// the picture is all that lies behind and through the glass; the rig's lights show only
+// in reflections off the glass and the liquid from outside (lib/environment/screen.glsl).
+void look_out(Look l, inout vec3 radiance, inout LitBackdrop lit) {
+  BackdropSurface b = backdrop_surface();
+  b.present = b.present && l.backdrop;
+  float tb, tl;
+  vec3 nb;
+  bool on_backdrop = intersect(b, l.o, l.d, 0.0, tb, nb);
+  vec4 light = lights_seen(l.o, l.d, l.rough, tb, tl);
+#if defined(SCREEN) && SCREEN == 2
+  on_backdrop = false;  // (no floor in front of the picture)
+  if (!l.mirrored) light = vec4(0.0);
+#endif
+  vec3 p = l.o + tb * l.d;
+  vec3 beyond = on_backdrop ? shade_backdrop_mirrored(p, nb, l.d, tb) : sky_seen(l.d, l.rough);
+  if (on_backdrop && !l.mirrored) {
+    lit = LitBackdrop(p, nb, l.d, l.w * (1.0 - light.a));
+    beyond = vec3(0.0);
+  }
+  radiance += l.w * (light.rgb * light.a + beyond * (1.0 - light.a));
 }
 
 // ---- the geometry of an interface (shared by the picture and the path-event view) ----
@@ -87,160 +128,185 @@ void go_on(inout Path path, Hit h, Crossing c, vec3 p) {
 
 // ---- stage: shade an interface ----
 
-// The light gathered at the surface h (the path's segment up to it, the reflected
-// surroundings, absorbed on their way out when the path is inside) and the path onwards. v: the records of h's
-// object (inside a glass or drink that is also the path's). False: the path ended (it
-// reached the floor).
-bool shade_interface(inout Path path, Hit h, Vessel v) {
+// The light gathered at the surface h (the path's segment up to it) and the path onwards
+// (the lacing on the wall is done before: lace_wall); the reflection's look at the
+// surroundings (absorbed on its way out when the path is inside) goes to `look`. v: the
+// records of h's object (inside a glass or drink that is also the path's).
+void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Look look) {
+  look = no_look();
   vec3 p = path.o + h.t * path.d;
   ObjectGlass g = glass_of(v.row);
   // The segment up to the surface, inside the path's medium.
   if (path.medium == MEDIUM_LIQUID) path.radiance += path.thr * haze_inscatter(v, h.t);
   path.thr *= medium_transmittance(v, g, path.medium, h.t);
-  // The floor is shaded at most once per interface, from one place (its shading loops
-  // over every glass): where the path ends on it, or where the reflection meets it.
-  vec3 floor_at = p, floor_n = h.n, floor_d = path.d, floor_weight = vec3(0.0);
-  float floor_dist = length(p - frame.cam_eye);
-  bool on_floor = h.m == M_FLOOR;
-  Crossing c;
-  if (on_floor) {
-    // A light's front between the path's point and the backdrop (the backlight behind
-    // the glasses) is seen in front of it.
-    float tl;
-    vec4 light = lights_seen(path.o, path.d, 0.0, h.t, tl);
-    path.radiance += path.thr * light.a * light.rgb;
-    floor_weight = path.thr * (1.0 - light.a);
-    path.thr = vec3(0.0);
-  } else {
-    vec3 pl = to_local_point(v, p);
-    bool below = below_liquid(v, pl);
+  vec3 pl = to_local_point(v, p);
+  bool below = below_liquid(v, pl);
 #if DECALS
-    // A decal on the wall (lib/vessel/decal.glsl): from inside the glass or the drink its
-    // ink, frost or metal meets the path first (no total internal reflection off it); from
-    // the air it lies under the surface's gloss (after the reflection, below).
-    DecalEffect decal = decal_effect(v, h, path.medium, p, pl, path.d, below);
-    vec3 decal_look = vec3(0.0);  // what the decal's own look-up of the surroundings weighs
-    if (path.medium != MEDIUM_AIR) {
+  // A decal on the wall (lib/vessel/decal.glsl): from inside the glass or the drink its
+  // ink, frost or metal meets the path first (no total internal reflection off it); from
+  // the air it lies under the surface's gloss (after the reflection, below).
+  DecalEffect decal = decal_effect(v, h, path.medium, p, pl, path.d, below);
+  vec3 decal_look = vec3(0.0);  // what the decal's own look-up of the surroundings weighs
+  if (path.medium != MEDIUM_AIR) {
+    path.radiance += path.thr * decal.light;
+    decal_look = path.thr * (decal.behind + decal.mirror);
+    path.thr *= decal.pass;
+  }
+#endif
+  Crossing c = crossing_at(path, h, v, g, below);
+#if DECALS
+  if (path.medium == MEDIUM_AIR) decal_look = path.thr * (1.0 - c.F) * (decal.behind + decal.mirror);
+  if (decal.metal) decal.look = reflect(path.d, c.n);  // from inside: where it leaves the glass (below)
+  if (decal.metal && c.F >= 1.0) {  // total internal reflection: the path goes where the metal sends it
+    path.thr += decal_look;
+    decal_look = vec3(0.0);
+  }
+#endif
+  // The lights are seen in the reflection (blurred by the surface's roughness) or
+  // through the refraction, along the ray from its point: no highlight on top.
+  float rough = h.m == M_LIQUID_SURFACE || h.m == M_CLIP_LIQUID ? v.liquid.roughness : g.glass_roughness;
+  if (c.F < 1.0) {
+    // The reflection sees the surroundings: a light, the backdrop or the sky from the
+    // air; the lights and the sky from inside a glass, where it is absorbed on its way
+    // out and leaves bent.
+    vec3 r = reflect(path.d, c.n);
+    if (path.medium == MEDIUM_AIR) {
+      if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true);
+    } else {
+      vec3 out_dir;
+      vec3 tr = reflected_light(v, g, h.m, path.medium, below, pl, to_local_dir(v, r), to_local_dir(v, c.n), out_dir);
+      look = Look(p, to_world_dir(v, out_dir), path.thr * c.F * tr, rough, false, false);
+#if DECALS
+      if (decal.metal) {  // the metal's reflection takes the same way out
+        decal_look *= tr;
+        decal.look = to_world_dir(v, out_dir);
+      }
+#endif
+    }
+    path.thr *= 1.0 - c.F;
+#if DECALS
+    if (path.medium == MEDIUM_AIR) {
       path.radiance += path.thr * decal.light;
-      decal_look = path.thr * (decal.behind + decal.mirror);
       path.thr *= decal.pass;
     }
 #endif
-#if FOAM_HEAD
-    if (h.m == M_GLASS_INNER && !below) {  // lacing on the wall
-      ObjectFoam f = fetch_object_foam(v.row);
-      float cover = lacing_cover(v, f, pl);
-      path.radiance += path.thr * cover * lacing_light(v, f, to_local_dir(v, path.d));
-      // and the bubbles the head presses on it, seen at the pixel's width there
-      float footprint = 2.0 * frame.cam_tan_half_vfov * frame.viewport_inv.y * length(p - frame.cam_eye);
-      path.thr *= (1.0 - cover) * head_wall_cells(v, f, pl, footprint);
-    }
-#endif
-    c = crossing_at(path, h, v, g, below);
-#if DECALS
-    if (path.medium == MEDIUM_AIR) decal_look = path.thr * (1.0 - c.F) * (decal.behind + decal.mirror);
-    if (decal.metal) decal.look = reflect(path.d, c.n);  // from inside: where it leaves the glass (below)
-    if (decal.metal && c.F >= 1.0) {  // total internal reflection: the path goes where the metal sends it
-      path.thr += decal_look;
-      decal_look = vec3(0.0);
-    }
-#endif
-    // The lights are seen in the reflection (blurred by the surface's roughness) or
-    // through the refraction, along the ray from its point: no highlight on top.
-    float rough = h.m == M_LIQUID_SURFACE || h.m == M_CLIP_LIQUID ? v.liquid.roughness : g.glass_roughness;
-    if (c.F < 1.0) {
-      vec3 mirrored = path.thr * c.F;  // what the reflection carries
-      // The reflection sees the surroundings: a light, the backdrop or the sky from the
-      // air; the lights and the sky from inside a glass.
-      if (frame.transparent == 0 || path.medium != MEDIUM_AIR) {
-        vec3 r = reflect(path.d, c.n);
-        if (path.medium == MEDIUM_AIR) {
-          float tb, tl;
-          vec3 nb;
-          bool on_backdrop = intersect(backdrop_surface(), p, r, 0.0, tb, nb);
-          vec4 light = lights_seen(p, r, rough, tb, tl);
-          path.radiance += mirrored * light.a * light.rgb;
-          if (on_backdrop) {  // shaded once, below
-            floor_at = p + tb * r;
-            floor_n = nb;
-            floor_d = r;
-            floor_dist = tb;
-            floor_weight = mirrored * (1.0 - light.a);
-          } else {
-            path.radiance += mirrored * (1.0 - light.a) * sky_seen(r, rough);
-          }
-        } else {
-          // Inside a glass or drink the reflection is absorbed on its way out.
-          vec3 out_dir;
-          vec3 tr = reflected_light(v, g, h.m, path.medium, below, pl, to_local_dir(v, r), to_local_dir(v, c.n), out_dir);
-          path.radiance += mirrored * tr * lights_and_sky(p, to_world_dir(v, out_dir), rough);
-#if DECALS
-          if (decal.metal) {  // the metal's reflection takes the same way out
-            decal_look *= tr;
-            decal.look = to_world_dir(v, out_dir);
-          }
-#endif
-        }
-      }
-      path.thr *= 1.0 - c.F;
-#if DECALS
-      if (path.medium == MEDIUM_AIR) {
-        path.radiance += path.thr * decal.light;
-        path.thr *= decal.pass;
-      }
-#endif
-    }
-#if DECALS
-    path.radiance += decal_look * decal_surroundings(p, decal.look, decal.spread, decal.rough, max3(decal_look) > 0.0 ? decal.taps : 0);
-#endif
   }
-  if (max3(floor_weight) > 0.0) path.radiance += floor_weight * shade_floor(floor_at, floor_n, floor_d, floor_dist, on_floor);
-  if (on_floor) return false;
+#if DECALS
+  path.radiance += decal_look * decal_surroundings(p, decal.look, decal.spread, decal.rough, max3(decal_look) > 0.0 ? decal.taps : 0);
+#endif
   go_on(path, h, c, p);
-  return true;
 }
+
+#if FOAM_HEAD
+// The lacing on the inner wall where the path meets it at h.t (above the drink, within
+// or above a head), and the bubbles the head presses on it, seen at the pixel's width
+// there: light added, and the path dimmed (before the interface is shaded; as its
+// segment's absorption, which it commutes with).
+void lace_wall(inout Path path, float t, int obj) {
+  Vessel v = load_vessel(obj);
+  ObjectFoam f = fetch_object_foam(v.row);
+  vec3 p = path.o + t * path.d, pl = to_local_point(v, p);
+  float cover = lacing_cover(v, f, pl);
+  vec3 reach = path.thr * medium_transmittance(v, glass_of(v.row), path.medium, t);
+  path.radiance += reach * cover * lacing_light(v, f, to_local_dir(v, path.d));
+  float footprint = 2.0 * frame.cam_tan_half_vfov * frame.viewport_inv.y * length(p - frame.cam_eye);
+  path.thr *= (1.0 - cover) * head_wall_cells(v, f, pl, footprint);
+}
+#endif
 
 // ---- stage: trace the path ----
 
 // Follows the path from the camera through at most frame.max_events interfaces; whatever
 // throughput is left then sees the surroundings. see_through: achromatic transmission
-// to the background (the alpha of transparent pictures). One loop: each iteration tests
-// one object (lib/scene/trace.glsl search_step) and, once a segment's nearest surface is
-// known, marches the heads along it and shades the interface.
+// to the background (the alpha of transparent pictures). The path loop: each iteration
+// tests one object (lib/scene/trace.glsl search_step) and, once a segment's nearest
+// surface is known, shades the interface and looks up its reflection; the iteration
+// where the path leaves (past every object, or out of events) looks up what its ray
+// sees. The backdrop is not a surface the search stops at: everything stands in front of
+// it (the space in front of the sweep is convex), so a path that meets no object sees it.
+//
+// The heads' work (a stretch of air through a head, the lacing where the path meets the
+// inner wall above a drink) is rare along a path but heavy, and llvmpipe would pay for
+// it in every iteration of the path loop, taken or not. So the path loop stops where a
+// path needs it, and the stage loop around it does it and resumes the path (searching
+// its segment again): its code runs once per stage, a few times per pixel at most.
 vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
   Path path = Path(eye, dir, MEDIUM_AIR, -1, vec3(0.0), vec3(1.0));
   see_through = 0.0;
-  bool escaped = false;
-  int events = 0;
-  Search s = start_search(0.0);
-  int steps = frame.max_events * (OBJECT_COUNT + 1);
-  for (int it = 0; it < steps; ++it) {
-    Vessel v;
-    if (!search_step(s, path.o, path.d, path.medium, path.obj, v)) continue;
-    Hit h = s.best;
+  LitBackdrop lit = LitBackdrop(vec3(0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, -1.0), vec3(0.0));
+  // (Read before the loops: inside them each read of the Frame block costs llvmpipe a load.)
+  int max_events = frame.max_events;
+  bool transparent = frame.transparent != 0;
+  int events = 0, steps = 0, max_steps = max_events * (OBJECT_COUNT + 1) + 1;  // iterations of the path loop
+  float tmin = 0.0;
+  bool foam_done = false, lace_done = false;  // this segment's heads marched, this hit's wall laced
+  // A path stops at most once per segment for the heads and once per event for the
+  // lacing (a path held in a glass wall by total internal reflection above the drink
+  // meets the inner wall again and again); the last stage stops for nothing.
+  int max_stages = 2 * max_events + 3;
+  for (int stage = 0; stage < max_stages; ++stage) {
+    bool stops = stage < max_stages - 1;
+    bool stop_foam = false, stop_lace = false;
+    float stop_t = 0.0;
+    int stop_obj = 0;
+    Search s = start_search(tmin);
+    while (steps < max_steps) {
+      ++steps;
+      Vessel v;
+      Hit h = no_hit();
+      // Out of events (or of iterations) the path looks out from where it is.
+      bool in_events = events < max_events && steps < max_steps;
+      if (in_events && !search_step(s, path.o, path.d, path.medium, path.obj, false, v)) continue;
+      if (in_events) h = s.best;
 #if FOAM_HEAD
-    if (path.medium == MEDIUM_AIR) {  // heads and their big bubbles sit in the air above the drinks
-      foam_along(path.o, path.d, h.m == M_NONE ? 100.0 : h.t, path.radiance, path.thr);
-      if (max3(path.thr) < 1e-3) break;
-    }
+      // Heads and their big bubbles sit in the air above the drinks; lacing on the wall.
+      stop_foam = stops && in_events && !foam_done && path.medium == MEDIUM_AIR &&
+                  meets_head(path.o, path.d, h.m == M_NONE ? 100.0 : h.t);
+      stop_lace = stops && !lace_done && h.m == M_GLASS_INNER && !below_liquid(v, to_local_point(v, path.o + h.t * path.d));
+      if (stop_foam || stop_lace) {
+        stop_t = h.m == M_NONE ? 100.0 : h.t;
+        stop_obj = h.obj;
+        --steps;  // (the segment's search runs again after the stop)
+        break;
+      }
 #endif
-    if (h.m == M_NONE) {
-      escaped = true;
-      break;
+      Look look;
+      bool leaves = h.m == M_NONE;
+      if (leaves) {
+        look = Look(path.o, path.d, path.thr, 0.0, path.medium == MEDIUM_AIR, false);
+        if (transparent) {
+          float m = min(path.thr.r, min(path.thr.g, path.thr.b));
+          see_through = m;
+          path.radiance += (path.thr - vec3(m)) * sky_light();
+          look.w = vec3(0.0);
+        }
+      } else {
+        shade_interface(path, h, v, transparent, look);
+      }
+      look_out(look, path.radiance, lit);
+      foam_done = lace_done = false;
+      if (leaves || max3(path.thr) < 1e-3) break;
+      ++events;
+      s = start_search(2e-6);
+      tmin = 2e-6;
     }
-    if (!shade_interface(path, h, v) || max3(path.thr) < 1e-3) break;
-    if (++events == frame.max_events) break;
-    s = start_search(2e-6);
-  }
-  if (escaped || max3(path.thr) >= 1e-3) {
-    if (frame.transparent != 0) {
-      float m = min(path.thr.r, min(path.thr.g, path.thr.b));
-      see_through = m;
-      path.radiance += (path.thr - vec3(m)) * sky_light();
-    } else {
-      path.radiance += path.thr * surroundings(path.o, path.d, path.medium);
+#if FOAM_HEAD
+    if (!stop_foam && !stop_lace) break;
+    if (stop_foam) {
+      foam_along(path.o, path.d, stop_t, path.radiance, path.thr);
+      foam_done = true;
     }
+    if (stop_lace && max3(path.thr) >= 1e-3) {
+      lace_wall(path, stop_t, stop_obj);
+      lace_done = true;
+    }
+    if (max3(path.thr) < 1e-3) break;
+#else
+    break;
+#endif
   }
+  // The backdrop the path's ray met, lit.
+  if (max3(lit.w) > 0.0) path.radiance += lit.w * shade_backdrop(lit.p, lit.n, lit.d, length(lit.p - frame.cam_eye));
   return path.radiance;
 }
 
@@ -257,7 +323,7 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
 Hit nearest_surface(vec3 o, vec3 d, int medium, int obj, float tmin, out Vessel v) {
   Search s = start_search(tmin);
   for (int it = 0; it <= OBJECT_COUNT; ++it)
-    if (search_step(s, o, d, medium, obj, v)) break;
+    if (search_step(s, o, d, medium, obj, true, v)) break;
   return s.best;
 }
 
@@ -344,7 +410,12 @@ vec4 debug_studio(vec3 eye, vec3 dir, int view) {
 // ---- output ----
 
 void main() {
+  // (Uniforms read in the path loop are held from here: on llvmpipe each read of a uniform
+  // block's member is a load and a broadcast to every lane.)
   init_objects();
+  init_lights();
+  init_studio();
+  init_backdrop();
   vec3 dir = camera_dir(gl_FragCoord.xy);
 #if DEBUG_VIEWS
   int view = frame.debug_view;

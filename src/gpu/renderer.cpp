@@ -85,6 +85,8 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kDecals) frag = with_define(std::move(frag), "DECALS");
   if (variant & (kScreenCard | kScreenBackground))  // 1: a card in the scene, 2: the background
     frag = with_define(std::move(frag), "SCREEN", variant & kScreenCard ? "1" : "2");
+  if (variant & kSphereLights) frag = with_define(std::move(frag), "SPHERE_LIGHTS");
+  if (variant & kPaintedSky) frag = with_define(std::move(frag), "PAINTED_SKY");
   if (const int held = variant >> kHeldShift)
     frag = with_define(std::move(frag), "HELD_OBJECTS", std::to_string(held));
   auto program = std::make_unique<Program>(vert, frag);
@@ -133,18 +135,23 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
   // Only the code a frame needs: waves and foam when some object has them, the debug
-  // views when one is asked for, and for a few objects their records held per pixel.
-  bool waves = false, foam = false;
+  // views when one is asked for, sphere lights when the rig has one, the strips and glow
+  // painted in the sky when they are not black, and for a few objects their records held
+  // per pixel.
+  bool waves = false, foam = false, spheres = false;
   for (const VesselFrame& v : f.vessels) {
     waves = waves || (v.has_liquid && !v.liquid.waves.flat());
     foam = foam || (v.has_liquid && v.foam.thickness > 1e-4);
   }
+  for (int i = 0; i < block.light_count; ++i) spheres = spheres || block.light_normal[i].w > 0.5f;
+  const bool painted = block.env_mode == 0 && (block.strip_intensity != 0.0f || block.backdrop_glow != 0.0f);
   const int objects = int(f.vessels.size());
   const int held = held_objects_ && objects >= 1 && objects <= kMaxHeldObjects ? objects : 0;
   const int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0) | (debug != DebugView::None ? kDebug : 0) |
                       (f.environment.image ? kImage : 0) | (decals ? kDecals : 0) | (held << kHeldShift) |
                       (f.screen.mode == ScreenMode::Card ? kScreenCard : 0) |
-                      (f.screen.mode == ScreenMode::Background ? kScreenBackground : 0);
+                      (f.screen.mode == ScreenMode::Background ? kScreenBackground : 0) |
+                      (spheres ? kSphereLights : 0) | (painted ? kPaintedSky : 0);
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
   glUseProgram(program->id());

@@ -39,6 +39,10 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
     const double bound = l.shape == LightShape::Sphere ? l.radius : glm::length(l.half_u) + glm::length(l.half_v);
     b.light_half_u[i] = {glm::vec3(l.half_u), float(bound)};
     b.light_half_v[i] = {glm::vec3(l.half_v), 0.0f};
+    if (l.shape == LightShape::Rect) {
+      const double lu = glm::length(l.half_u), lv = glm::length(l.half_v);
+      b.light_extent[i] = {float(lu), float(lv), float(4.0 * lu * lv), 0.0f};
+    }
     b.light_radiance[i] = {glm::vec3(l.radiance), 0.0f};
   }
   for (int i = 0; i < 9; ++i) b.sky_sh[i] = {glm::vec3(f.environment.sky.coef[size_t(i)]), 0.0f};
@@ -130,18 +134,24 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.wave_sin2a = float(w.cross.y);
   r.wave_radius = float(w.radius);
   r.ior = vp.liquid.ior;
-  r.haze_color = vp.liquid.haze_color;
   r.haze = vp.liquid.haze;
   r.roughness = vp.liquid.roughness;
   // Each light as a distant light from the glass's middle: what the head and the haze
   // receive (small lights far from small glasses: the irradiance barely varies over one).
   const glm::dvec3 middle = vf.pose.position + vf.pose.orientation * glm::dvec3(0, 0.5 * v.height, 0);
   const int lights = std::min<int>(int(f.lights.lights.size()), contract::kMaxLights);
+  // The haze's light (single scattering, isotropic): the sky's even light and a quarter of
+  // each light's irradiance over pi, reaching the inside through 0.7 of the mean radius
+  // of the drink. The same for every pixel, so here once, not per segment of every path.
+  glm::dvec3 haze_in = glm::dvec3(f.environment.sky.at({0, 1, 0}) / 3.14159265358979);
   for (int i = 0; i < lights; ++i) {
     const AreaLight& l = f.lights.lights[size_t(i)];
     const glm::dvec3 to = glm::normalize(l.center - middle);
     r.lit_by[i] = {glm::vec3(to), float(l.irradiance_factor(middle, to))};
+    haze_in += 0.25 * glm::dvec3(l.radiance) * double(r.lit_by[i].w);
   }
+  const glm::dvec3 tint = glm::exp(-glm::dvec3(vf.liquid_absorption) * (double(vf.mean_outer_radius) * 0.7));
+  r.haze_light = glm::vec3(glm::dvec3(vp.liquid.haze_color) * haze_in * tint);
   // glass
   r.glass_absorption = vp.glass.absorption;
   r.glass_ior = vp.glass.ior;

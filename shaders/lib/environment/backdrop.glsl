@@ -12,10 +12,19 @@ struct BackdropSurface {
   float z_curve, radius;
 };
 
-BackdropSurface backdrop_surface() {
-  return BackdropSurface(frame.floor_on != 0, frame.backdrop_kind == 1, frame.backdrop_kind != 0, frame.sweep_z_curve,
-                         frame.sweep_radius);
+// Read from the Frame block once per pixel (init_backdrop, first in main) and held: every
+// look at the surroundings reads them (a uniform block's member costs llvmpipe a load and
+// a broadcast at each read).
+BackdropSurface g_backdrop;
+vec3 g_sweep_albedo;
+
+void init_backdrop() {
+  g_backdrop = BackdropSurface(frame.floor_on != 0, frame.backdrop_kind == 1, frame.backdrop_kind != 0, frame.sweep_z_curve,
+                               frame.sweep_radius);
+  g_sweep_albedo = frame.sweep_albedo;
 }
+
+BackdropSurface backdrop_surface() { return g_backdrop; }
 
 // The nearest t > tmin where the ray o + t d meets the backdrop from the scene's side,
 // and the normal there (unit, towards the scene). Twin of BackdropSurface::intersect.
@@ -55,7 +64,7 @@ bool intersect(BackdropSurface b, vec3 o, vec3 d, float tmin, out float t, out v
 
 // The backdrop's diffuse albedo at point p on it. Twin of BackdropSurface::albedo.
 vec3 albedo(BackdropSurface b, vec3 p) {
-  if (!b.checker) return frame.sweep_albedo;
+  if (!b.checker) return g_sweep_albedo;
   vec2 cell = floor(p.xz / frame.checker_size);
   return mod(cell.x + cell.y, 2.0) < 0.5 ? frame.floor_a : frame.floor_b;
 }

@@ -32,7 +32,7 @@ vec3 backdrop_light(vec3 p, vec3 n) {
   // Elsewhere the exact sum, its lights counted only there (rig_irradiance: a pixel the
   // map serves runs none of them).
   bool served = m.a > 0.999;
-  return (served ? m.rgb : vec3(0.0)) + rig_irradiance(p, n, served ? 0 : frame.light_count);
+  return (served ? m.rgb : vec3(0.0)) + rig_irradiance(p, n, served ? 0 : g_light_count);
 }
 
 #endif  // LIB_ENVIRONMENT_BACKDROP_LIGHT_GLSL

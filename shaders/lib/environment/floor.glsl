@@ -54,10 +54,9 @@ Hit hit_floor(vec3 o, vec3 d, float tmin) {
 // radii (at least two foot radii from the foot) it darkens by less than 2e-4 of the
 // sky's light, nothing an 8-bit pixel shows. (Direct light, shadows and caustics
 // included, comes from the traced map: floor_light.glsl.)
-float floor_contact(vec3 p, int objects) {
+float floor_contact(vec3 p) {
   float contact = 1.0;
   for (int i = 0; i < OBJECT_COUNT; ++i) {
-    if (i >= objects) break;  // the first `objects` glasses (0: none, at no cost)
     ObjectBounds b = bounds_of(i);
     vec3 rel = p - b.bound_base;
     if (dot(rel, rel) < 9.0 * b.bound_radius * b.bound_radius) {  // (a block, not a continue: llvmpipe runs it faster)
@@ -73,46 +72,39 @@ float floor_contact(vec3 p, int objects) {
   return contact;
 }
 
-// The backdrop at p (world, normal n), seen along d from `dist` away: albedo / pi times the
-// light it receives, the rig's direct light (one texel of the backdrop's light map; on the
-// floor through the traced map's shadows and caustics) and the sky's around the feet.
-// `occluded` false: the backdrop mirrored in a glass (a few per cent of a pixel), where
-// each light is taken as a point and shadows and contact are left out: too small to see
-// there, and as cheap as the map's texel.
-vec3 shade_floor(vec3 p, vec3 n, vec3 d, float dist, bool occluded) {
-  BackdropSurface bd = backdrop_surface();
-  // (Counts, not branches, choose: llvmpipe would run both sides for every pixel.)
-  vec3 e = sky_irradiance(n) * floor_contact(p, occluded ? OBJECT_COUNT : 0) +
-           rig_irradiance_far(p, n, occluded ? 0 : frame.light_count);
-  if (occluded) e += floor_direct_light(p, n);
+// The backdrop's colour c at distance dist along d as the eye takes it: the checker to
+// the horizon fades into the sky's ground, so it never aliases there; under an
+// environment image the floor reaches its horizon and fades into what the image shows
+// along the ray (Studio::floor_visibility), so it is a table, not a desert.
+vec3 backdrop_faded(BackdropSurface bd, vec3 c, vec3 d, float dist) {
 #ifdef ENV_IMAGE
-  // An image's light is all sky: the map's shadows and caustics (of its brightest patches,
-  // core floor_emitters) change it on the floor.
-  if (occluded && n.y > 0.999) e *= floor_light_factor(p);
-#endif
-  vec3 c = albedo(bd, p) / PI * e;
-#ifdef ENV_IMAGE
-  // Under an environment image the floor reaches its horizon: it fades into what the image
-  // shows along the ray (Studio::floor_visibility), so it is a table, not a desert.
   return mix(env_image(d, 0.0), c, exp(-dist / 2.0));
 #else
-  // The checker to the horizon fades into the sky's ground, so it never aliases there.
-  return bd.checker ? mix(frame.ground, c, exp(-dist / 2.0)) : c;
+  return bd.checker ? mix(g_ground, c, exp(-dist / 2.0)) : c;
 #endif
 }
 
-// What a ray from o in the air sees past the glasses: the nearest of a light's front
-// and the backdrop (shaded), else the sky. roughness: of the surface that sent it.
-vec3 background(vec3 o, vec3 d, float roughness) {
-#if defined(SCREEN) && SCREEN == 2
-  return sky_seen(d, roughness);  // the AR view: the picture is what lies behind (lib/environment/screen.glsl)
+// The backdrop at p (world, normal n), seen along d from `dist` away: albedo / pi times the
+// light it receives, the rig's direct light (one texel of the backdrop's light map; on the
+// floor through the traced map's shadows and caustics) and the sky's around the feet.
+vec3 shade_backdrop(vec3 p, vec3 n, vec3 d, float dist) {
+  BackdropSurface bd = backdrop_surface();
+  vec3 e = sky_irradiance(n) * floor_contact(p) + floor_direct_light(p, n);
+#ifdef ENV_IMAGE
+  // An image's light is all sky: the map's shadows and caustics (of its brightest patches,
+  // core floor_emitters) change it on the floor.
+  if (n.y > 0.999) e *= floor_light_factor(p);
 #endif
-  float tb, tl;
-  vec3 nb;
-  bool on_backdrop = intersect(backdrop_surface(), o, d, 0.0, tb, nb);
-  vec4 light = lights_seen(o, d, roughness, tb, tl);
-  vec3 beyond = on_backdrop ? shade_floor(o + tb * d, nb, d, tb, true) : sky_seen(d, roughness);
-  return light.rgb * light.a + beyond * (1.0 - light.a);
+  return backdrop_faded(bd, albedo(bd, p) / PI * e, d, dist);
+}
+
+// The backdrop as a glass mirrors it (a few per cent of a pixel): each light taken as a
+// point, no shadows, no contact; too small to see there, and cheap enough for every
+// reflection.
+vec3 shade_backdrop_mirrored(vec3 p, vec3 n, vec3 d, float dist) {
+  BackdropSurface bd = backdrop_surface();
+  vec3 c = albedo(bd, p) / PI * (sky_irradiance(n) + rig_irradiance_far(p, n, g_light_count));
+  return backdrop_faded(bd, c, d, dist);
 }
 
 #endif  // LIB_ENVIRONMENT_FLOOR_GLSL

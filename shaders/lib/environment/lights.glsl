@@ -15,13 +15,31 @@ struct AreaLight {
   vec3 center, normal, half_u, half_v;
   float radius;
   vec3 radiance;
+  vec3 extent;  // a rect's |half_u|, |half_v| and area (core computes them once per frame)
 };
 
-AreaLight area_light(int i) {
-  vec4 c = frame.light_center[i], n = frame.light_normal[i];
-  return AreaLight(n.w > 0.5, c.xyz, n.xyz, frame.light_half_u[i].xyz, frame.light_half_v[i].xyz, c.w,
-                   frame.light_radiance[i].rgb);
+// The renderer compiles the sphere lights' code in only for a rig that has one
+// (gpu/renderer.cpp): llvmpipe would run it for every light a pixel tests.
+#ifndef SPHERE_LIGHTS
+#define SPHERE_LIGHTS 0
+#endif
+
+// The rig, read from the Frame block once per pixel (init_lights, first in main) and held:
+// on llvmpipe a uniform block's member costs a load and a broadcast to every lane at each
+// read, and the lights are read by every look at the surroundings.
+AreaLight g_lights[MAX_LIGHTS];
+int g_light_count;  // lights in use (frame.light_count)
+
+void init_lights() {
+  g_light_count = frame.light_count;
+  for (int i = 0; i < MAX_LIGHTS; ++i) {
+    vec4 c = frame.light_center[i], n = frame.light_normal[i];
+    g_lights[i] = AreaLight(SPHERE_LIGHTS != 0 && n.w > 0.5, c.xyz, n.xyz, frame.light_half_u[i].xyz,
+                            frame.light_half_v[i].xyz, c.w, frame.light_radiance[i].rgb, frame.light_extent[i].xyz);
+  }
 }
+
+AreaLight area_light(int i) { return g_lights[i]; }
 
 // The nearer t > tmin where a ray meets a sphere from outside it.
 bool light_hit_sphere(vec3 c, float r, vec3 o, vec3 d, float tmin, out float t) {
@@ -120,8 +138,7 @@ float irradiance_factor_far(AreaLight l, vec3 x, vec3 n) {
   float d2 = dot(w, w), inv = inversesqrt(d2);
   float cos_s = max(dot(n, w) * inv, 0.0);
   if (l.sphere) return PI * l.radius * l.radius / max(d2, l.radius * l.radius) * cos_s;
-  float area = 4.0 * length(l.half_u) * length(l.half_v);
-  return area * max(-dot(l.normal, w) * inv, 0.0) * cos_s / d2;
+  return l.extent.z * max(-dot(l.normal, w) * inv, 0.0) * cos_s / d2;
 }
 
 // The irradiance the first `count` lights of the rig give x (normal n) with nothing in
@@ -164,34 +181,31 @@ vec4 lights_seen(vec3 o, vec3 d, float roughness, float t_max, out float t) {
   vec4 seen = vec4(0.0);
   float a = roughness * roughness;  // GGX alpha: the reflected lobe is about 2 alpha wide
   float spread = max(0.0015, 2.0 * a);  // radians either side of an edge
+  // Every light is tested whole, with no bounds first and no early way out: llvmpipe
+  // runs all of it for every pixel anyway, so each test more is only more work.
   for (int i = 0; i < MAX_LIGHTS; ++i) {
-    if (i >= frame.light_count) break;
-    // Bounds first: the sphere around the light (and its spread edge) the ray must pass.
-    vec4 c = frame.light_center[i];
-    vec3 w = c.xyz - o;
-    float along = dot(w, d), bound = frame.light_half_u[i].w * (1.0 + 2.0 * spread) + 2.0 * spread * max(along, 0.0);
-    if (along < -bound || dot(w, w) - along * along > bound * bound) continue;
     AreaLight l = area_light(i);
+    vec3 w = l.center - o;
     float ti, cover;
+    bool front;
     if (l.sphere) {
       float d2 = dot(w, w);
       ti = dot(w, d);
-      if (d2 <= l.radius * l.radius || ti <= 0.0) continue;
-      float sin2 = l.radius * l.radius / d2, cos_r = sqrt(1.0 - sin2);
+      float sin2 = l.radius * l.radius / d2, cos_r = sqrt(max(1.0 - sin2, 0.0));
       float edge = min(spread * sqrt(sin2), 1.0 - cos_r);
       cover = smoothstep(cos_r - edge, cos_r + edge, ti * inversesqrt(d2));
+      front = d2 > l.radius * l.radius && ti > 0.0;  // (a lamp is not seen from within)
       ti -= l.radius;
     } else {
       float denom = dot(d, l.normal);
-      if (denom >= 0.0) continue;  // its back
-      ti = dot(l.center - o, l.normal) / denom;
-      if (ti <= 0.0) continue;
-      vec3 q = o + ti * d - l.center;
-      float lu = length(l.half_u), lv = length(l.half_v);
+      ti = dot(w, l.normal) / denom;
+      vec3 q = ti * d - w;
+      float lu = l.extent.x, lv = l.extent.y;
       cover = soft_box(dot(q, l.half_u) / (lu * lu), spread * ti / lu) *
               soft_box(dot(q, l.half_v) / (lv * lv), spread * ti / lv);
+      front = denom < 0.0 && ti > 0.0;  // its emitting side, ahead
     }
-    if (cover > 0.0 && ti < t && ti < t_max) {
+    if (i < g_light_count && front && cover > 0.0 && ti < t && ti < t_max) {
       t = ti;
       seen = vec4(l.radiance, cover);
     }

@@ -2,8 +2,8 @@
 // in the scene (the SCREEN 1 variant: lights_seen puts it in front of what lies behind it)
 // or as the whole background (SCREEN 2: sky_seen looks it up, the AR view; the rig's
 // lights then light the drinks and show in reflections off the glass and the liquid from
-// outside, but are not seen behind or through the glass: background() and lights_and_sky()
-// see the picture alone). Frames without a screen compile none of this. Twins: ScreenFrame::intersect, card_radiance,
+// outside, but are not seen behind or through the glass: look_out (passes/path.frag.glsl) and
+// lights_and_sky() see the picture alone). Frames without a screen compile none of this. Twins: ScreenFrame::intersect, card_radiance,
 // background_uv and background_radiance in core/environment/screen.cpp.
 #ifndef LIB_ENVIRONMENT_SCREEN_GLSL
 #define LIB_ENVIRONMENT_SCREEN_GLSL

@@ -8,6 +8,28 @@
 #include "lib/environment/image.glsl"
 #include "lib/environment/screen.glsl"
 
+// The strips and the glow painted in the sky (the checker test environment) are compiled
+// in only when they are not black (gpu/renderer.cpp).
+#ifndef PAINTED_SKY
+#define PAINTED_SKY 0
+#endif
+
+// The sky's numbers, read from the Frame block once per pixel (init_studio, first in
+// main) and held: on llvmpipe each read of a uniform block's member is a load and a
+// broadcast to every lane, and the sky is read by every look at the surroundings.
+vec3 g_sky_sh[9];  // the irradiance's spherical-harmonic coefficients (frame.sky_sh)
+vec3 g_sky_top, g_sky_horizon, g_ground, g_env_color;
+int g_env_mode;
+
+void init_studio() {
+  for (int i = 0; i < 9; ++i) g_sky_sh[i] = frame.sky_sh[i].rgb;
+  g_sky_top = frame.sky_top;
+  g_sky_horizon = frame.sky_horizon;
+  g_ground = frame.ground;
+  g_env_color = frame.env_color;
+  g_env_mode = frame.env_mode;
+}
+
 // The sky's radiance in direction d. Twin of Studio::sky
 // (core/environment/studio.cpp). Under an environment image (the ENV_IMAGE variant) the
 // image, blurred by env.blur.
@@ -15,9 +37,10 @@ vec3 studio_backdrop(vec3 d) {
 #ifdef ENV_IMAGE
   return env_image(d, 0.0);
 #endif
-  if (frame.env_mode == 1) return frame.env_color;
-  vec3 sky = d.y >= 0.0 ? mix(frame.sky_horizon, frame.sky_top, pow(d.y, 0.6))
-                        : mix(frame.sky_horizon, frame.ground, smoothstep(0.0, 0.25, -d.y));
+  if (g_env_mode == 1) return g_env_color;
+  vec3 sky = d.y >= 0.0 ? mix(g_sky_horizon, g_sky_top, pow(d.y, 0.6))
+                        : mix(g_sky_horizon, g_ground, smoothstep(0.0, 0.25, -d.y));
+#if PAINTED_SKY
   // Strip lights, left and right and a little behind the scene, tall and narrow.
   for (int i = 0; i < 2; ++i) {
     float az = radians(i == 0 ? 105.0 : -105.0);
@@ -32,6 +55,7 @@ vec3 studio_backdrop(vec3 d) {
   vec3 g = normalize(vec3(0.0, 0.12, -1.0));
   float cg = max(dot(d, g), 0.0);
   sky += frame.backdrop_glow * vec3(1.0, 0.97, 0.92) * pow(cg, 200.0);
+#endif
   return sky;
 }
 
@@ -53,10 +77,10 @@ vec3 sky_seen(vec3 d, float roughness) {
 // coefficients core projected Studio::sky onto (Ramamoorthi and Hanrahan). Twin of
 // SkyIrradiance::at (core/environment/sky_irradiance.cpp).
 vec3 sky_irradiance(vec3 n) {
-  vec3 e = frame.sky_sh[0].rgb * 0.282095;
-  e += 0.488603 * (frame.sky_sh[1].rgb * n.y + frame.sky_sh[2].rgb * n.z + frame.sky_sh[3].rgb * n.x);
-  e += 1.092548 * (frame.sky_sh[4].rgb * n.x * n.y + frame.sky_sh[5].rgb * n.y * n.z + frame.sky_sh[7].rgb * n.x * n.z);
-  e += frame.sky_sh[6].rgb * (0.315392 * (3.0 * n.z * n.z - 1.0)) + frame.sky_sh[8].rgb * (0.546274 * (n.x * n.x - n.y * n.y));
+  vec3 e = g_sky_sh[0] * 0.282095;
+  e += 0.488603 * (g_sky_sh[1] * n.y + g_sky_sh[2] * n.z + g_sky_sh[3] * n.x);
+  e += 1.092548 * (g_sky_sh[4] * n.x * n.y + g_sky_sh[5] * n.y * n.z + g_sky_sh[7] * n.x * n.z);
+  e += g_sky_sh[6] * (0.315392 * (3.0 * n.z * n.z - 1.0)) + g_sky_sh[8] * (0.546274 * (n.x * n.x - n.y * n.y));
   return max(e, vec3(0.0));
 }
 

@@ -116,10 +116,10 @@ HeadLight head_light(Vessel v, ObjectFoam f) {
   h.zb = 2.0 / (3.0 * (1.0 - f.anisotropy));
   h.sky = sky_light();
   h.below = h.sky * exp(-v.body.absorption * f.under_chord);
-  h.count = frame.light_count;
+  h.count = g_light_count;
   for (int i = 0; i < MAX_LIGHTS; ++i) {
     vec4 lit = i < h.count ? object_lit_by(v.row, i) : vec4(0.0, 1.0, 0.0, 0.0);
-    h.key[i] = frame.light_radiance[i].rgb * lit.w;
+    h.key[i] = area_light(i).radiance * lit.w;
     h.l[i] = to_local_dir(v, lit.xyz);
   }
   float ior = fetch_object_glass(v.row).glass_ior, f0 = (ior - 1.0) / (ior + 1.0);
@@ -250,22 +250,32 @@ void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, inou
 }
 
 // A big bubble's cap is a thin film of the drink: it mirrors the surroundings at grazing
-// angles (Fresnel from air into the liquid's index, both faces).
+// angles (Fresnel from air into the liquid's index, both faces). The caps are taken in
+// the bubbles' order, each pass finding the next one the ray meets: a cap's look at the
+// surroundings is the heavy part, and llvmpipe would run it for every bubble, met or not.
 void bubble_caps(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, inout vec3 radiance,
                  inout vec3 thr) {
-  for (int i = 0; i < f.big_bubble_count; ++i) {
-    BigBubble b = big_bubble(v, i);
-    if (b.popped) continue;
-    vec3 c = b.centre;
-    float r = b.radius;
-    vec3 oc = o - c;
-    float bb = dot(oc, d), disc = bb * bb - (dot(oc, oc) - r * r);
-    if (disc <= 0.0) continue;
-    float t = -bb - sqrt(disc);
-    if (t <= t0 || t >= t1) continue;
-    vec3 p = o + t * d;
-    if (level_over(v.liquid, p) < foam_thickness_at(v, f, p.xz) || clipped(v, p)) continue;  // only the cap above the foam
-    vec3 nn = normalize(p - c);
+  int done = -1;  // the caps up to this bubble are done
+  for (int pass = 0; pass < MAX_BIG_BUBBLES; ++pass) {
+    int next = -1;
+    vec3 p = vec3(0.0), nn = vec3(0.0, 1.0, 0.0);
+    for (int i = 0; i < f.big_bubble_count; ++i) {
+      BigBubble b = big_bubble(v, i);
+      vec3 oc = o - b.centre;
+      float bb = dot(oc, d), disc = bb * bb - (dot(oc, oc) - b.radius * b.radius);
+      float t = -bb - sqrt(max(disc, 0.0));
+      vec3 q = o + t * d;
+      // only the cap above the foam
+      bool cap = !b.popped && disc > 0.0 && t > t0 && t < t1 && level_over(v.liquid, q) >= foam_thickness_at(v, f, q.xz) &&
+                 !clipped(v, q);
+      if (cap && i > done && next < 0) {
+        next = i;
+        p = q;
+        nn = normalize(q - b.centre);
+      }
+    }
+    if (next < 0) break;
+    done = next;
     float F = fresnel_dielectric(abs(dot(nn, d)), 1.0, v.liquid.ior);
     float film = 2.0 * F / (1.0 + F);  // two faces of the film
     vec3 refl = reflect(d, nn);
@@ -323,6 +333,18 @@ float lacing_cover(Vessel v, ObjectFoam f, vec3 p) {
     cover = max(cover, exp(-band * band) * smoothstep(0.35, 0.75, lace));
   }
   return cover * f.lacing_strength;
+}
+
+// Whether a stretch [0, t_end] of a world path in the air can meet a head (or a big
+// bubble's cap): foam_along has work there.
+bool meets_head(vec3 o, vec3 d, float t_end) {
+  bool meets = false;
+  for (int i = 0; i < OBJECT_COUNT; ++i) {
+    Vessel v = load_vessel(i);
+    float t0 = 0.0, t1 = t_end;  // (foam_interval keeps to the glass's bounds)
+    meets = meets || (v.shape.has_head != 0 && foam_interval(v, fetch_object_foam(i), to_local_point(v, o), to_local_dir(v, d), t0, t1));
+  }
+  return meets;
 }
 
 // The heads of every glass along a stretch [0, t_end] of a world path in the air, front

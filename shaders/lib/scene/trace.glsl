@@ -61,9 +61,9 @@ int next_candidate(Search s, vec3 o, vec3 d, int medium, int obj, out float entr
 }
 
 // Tests the next candidate object (its records in v). True when the search is done:
-// s.best is the nearest surface (the floor too), and v holds its object's records when
-// it is an object.
-bool search_step(inout Search s, vec3 o, vec3 d, int medium, int obj, out Vessel v) {
+// s.best is the nearest surface (with `floor`, the backdrop too), and v holds its
+// object's records when it is an object.
+bool search_step(inout Search s, vec3 o, vec3 d, int medium, int obj, bool floor, out Vessel v) {
   float entry, then;
   int cand = next_candidate(s, o, d, medium, obj, entry, then);
   v = load_vessel(max(cand, 0));
@@ -74,7 +74,7 @@ bool search_step(inout Search s, vec3 o, vec3 d, int medium, int obj, out Vessel
     s.after_row = cand;
     if (then <= s.best.t) return false;  // another object may still be nearer
   }
-  if (medium == MEDIUM_AIR) keep_nearest(s.best, hit_floor(o, d, s.tmin));
+  if (floor && medium == MEDIUM_AIR) keep_nearest(s.best, hit_floor(o, d, s.tmin));
   if (s.best.obj >= 0 && s.best.obj != cand) v = load_vessel(s.best.obj);
   return true;
 }

@@ -80,7 +80,7 @@ DecalSample decal_at(Vessel v, int m, vec3 p, float footprint) {
 // the camera gets about a third of its light from the lit paper in front of it.
 vec3 floor_bounce(vec3 p, vec3 n) {
   vec3 q = vec3(p.x, 0.0, p.z);
-  vec3 up = shade_floor(q, vec3(0.0, 1.0, 0.0), normalize(q - frame.cam_eye), length(q - frame.cam_eye), false) - frame.ground;
+  vec3 up = shade_backdrop_mirrored(q, vec3(0.0, 1.0, 0.0), normalize(q - frame.cam_eye), length(q - frame.cam_eye)) - frame.ground;
   return frame.floor_on != 0 ? PI * max(up, vec3(0.0)) * 0.5 * (1.0 - n.y) : vec3(0.0);
 }
 
@@ -164,7 +164,7 @@ vec3 decal_surroundings(vec3 p, vec3 m, vec2 spread, float rough, int taps) {
     vec3 nb;
     bool on_backdrop = intersect(backdrop_surface(), p, d, 0.0, tb, nb);
     vec4 light = lights_seen(p, d, rough, tb, tl);
-    vec3 beyond = on_backdrop ? shade_floor(p + tb * d, nb, d, tb, false) : sky_seen(d, rough);
+    vec3 beyond = on_backdrop ? shade_backdrop_mirrored(p + tb * d, nb, d, tb) : sky_seen(d, rough);
     sum += light.rgb * light.a + beyond * (1.0 - light.a);
   }
   return sum / max(float(taps), 1.0);

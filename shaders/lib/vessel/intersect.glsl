@@ -30,8 +30,11 @@ bool inside_torus(Vessel v, float r, float y) {
 }
 
 bool inside_body(Vessel v, float r, float y) {
-  if (y < 0.0 || y > v.body.height || r > outer_radius(v, y)) return false;
-  return y < v.shape.base || r >= inner_radius(v, y);
+  float s = clamp(y * v.shape.inv_dy, 0.0, float(SEGMENTS));
+  int k = min(int(s), SEGMENTS - 1);
+  vec4 kn = segment_knots(v, k);  // one fetch for both walls
+  vec2 radii = mix(kn.xy, kn.zw, s - float(k));  // outer, inner
+  return y >= 0.0 && y <= v.body.height && r <= radii.x && (y < v.shape.base || r >= radii.y);
 }
 
 // Slab ylo..yhi and cylinder r <= rad along the ray, as [t0, t1]: the vessel's axis is

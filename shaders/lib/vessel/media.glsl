@@ -92,29 +92,28 @@ vec3 leave_through(vec3 r, vec3 n_out, float eta) {
 // follows these paths (docs/REFERENCE.md measures the difference).
 vec3 reflected_light(Vessel v, ObjectGlass g, int m, int medium, bool below, vec3 p, vec3 r, vec3 n, out vec3 out_dir) {
   out_dir = r;
+  bool liquid = medium == MEDIUM_LIQUID;
+  if (!liquid && medium != MEDIUM_GLASS) return vec3(1.0);
+  // Every case in one pass, each step once (llvmpipe runs every copy of inlined code).
+  // In the glass: across the wall (from its knot at p), the base, or the rim bead's tube.
+  float across = abs(dot(r, n));
+  vec4 kn = segment_knots(v, clamp(int(p.y * v.shape.inv_dy), 0, SEGMENTS - 1));
+  float thick = m != M_GLASS_BOTTOM && m != M_CAVITY_FLOOR ? (kn.x - kn.y) * length(n.xz) : v.shape.base;
+  float in_glass = liquid ? 0.0
+                   : m == M_RIM ? 2.0 * v.shape.rim_minor * across  // a chord of the tube
+                                : min(thick / max(across, 1e-3), v.body.height);
+  // Across the cavity: in the drink to its wall, floor or surface; in the glass where the
+  // reflection turns inwards (off the outer wall or the foot's underside), across the
+  // cavity and its drink to the far side.
+  bool drink = liquid || below, inwards = liquid || m == M_GLASS_OUTER || m == M_GLASS_BOTTOM;
   vec2 span;
   vec3 n_out;
-  if (medium == MEDIUM_LIQUID) {
-    if (!cavity_span(v, p, r, true, span, n_out)) return vec3(1.0);
-    out_dir = leave_through(r, n_out, v.liquid.ior);
-    return medium_transmittance(v, g, MEDIUM_LIQUID, span.y - span.x);
-  }
-  if (medium != MEDIUM_GLASS) return vec3(1.0);
-  float across = abs(dot(r, n));
-  if (m == M_RIM) return medium_transmittance(v, g, MEDIUM_GLASS, 2.0 * v.shape.rim_minor * across);  // a chord of the tube
-  float thick = v.shape.base;
-  if (m != M_GLASS_BOTTOM && m != M_CAVITY_FLOOR) {  // a wall: across it, from its knot at p
-    vec4 kn = segment_knots(v, clamp(int(p.y * v.shape.inv_dy), 0, SEGMENTS - 1));
-    thick = (kn.x - kn.y) * length(n.xz);
-  }
-  vec3 tr = medium_transmittance(v, g, MEDIUM_GLASS, min(thick / max(across, 1e-3), v.body.height));
-  if ((m == M_GLASS_OUTER || m == M_GLASS_BOTTOM) && cavity_span(v, p, r, below, span, n_out)) {
-    if (below) tr *= medium_transmittance(v, g, MEDIUM_LIQUID, span.y - span.x);
-  } else {
-    n_out = -n;  // out through the face opposite the one it reflected off
-  }
-  out_dir = leave_through(r, n_out, g.glass_ior);
-  return tr;
+  bool spans = cavity_span(v, p, r, drink, span, n_out) && inwards;
+  if (liquid && !spans) return vec3(1.0);
+  if (!spans) n_out = -n;  // out through the face opposite the one it reflected off
+  float in_drink = spans && drink ? span.y - span.x : 0.0;
+  if (liquid || m != M_RIM) out_dir = leave_through(r, n_out, liquid ? v.liquid.ior : g.glass_ior);
+  return exp(-g.glass_absorption * in_glass - (v.body.absorption + vec3(v.liquid.haze)) * in_drink);
 }
 
 #endif  // LIB_VESSEL_MEDIA_GLSL
