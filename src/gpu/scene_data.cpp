@@ -51,6 +51,7 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
   b.sweep_radius = float(f.backdrop.radius);
   b.sweep_albedo = glm::vec3(f.backdrop.sweep_albedo);
   b.sky_light = glm::vec3(f.environment.sky.at({0, 1, 0}) / 3.14159265358979);
+  for (int i = 0; i < 9; ++i) b.surround_sh[i] = {glm::vec3(f.environment.surround.coef[size_t(i)]), 0.0f};
   b.env_mode = p.env.mode;
   b.strip_intensity = p.env.strip_intensity;
   b.backdrop_glow = p.env.backdrop_glow;
@@ -140,10 +141,10 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   // receive (small lights far from small glasses: the irradiance barely varies over one).
   const glm::dvec3 middle = vf.pose.position + vf.pose.orientation * glm::dvec3(0, 0.5 * v.height, 0);
   const int lights = std::min<int>(int(f.lights.lights.size()), contract::kMaxLights);
-  // The haze's light (single scattering, isotropic): the sky's even light and a quarter of
-  // each light's irradiance over pi, reaching the inside through 0.7 of the mean radius
+  // The haze's light (single scattering, isotropic): the mean radiance around it (the sky
+  // and the lit backdrop) and a quarter of each light's irradiance over pi, reaching the inside through 0.7 of the mean radius
   // of the drink. The same for every pixel, so here once, not per segment of every path.
-  glm::dvec3 haze_in = glm::dvec3(f.environment.sky.at({0, 1, 0}) / 3.14159265358979);
+  glm::dvec3 haze_in = mean_radiance(f.environment.surround);
   for (int i = 0; i < lights; ++i) {
     const AreaLight& l = f.lights.lights[size_t(i)];
     const glm::dvec3 to = glm::normalize(l.center - middle);

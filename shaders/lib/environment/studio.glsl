@@ -73,15 +73,25 @@ vec3 sky_seen(vec3 d, float roughness) {
 #endif
 }
 
-// The sky's irradiance on a surface of unit normal n: nine spherical-harmonic
-// coefficients core projected Studio::sky onto (Ramamoorthi and Hanrahan). Twin of
-// SkyIrradiance::at (core/environment/sky_irradiance.cpp).
-vec3 sky_irradiance(vec3 n) {
-  vec3 e = g_sky_sh[0] * 0.282095;
-  e += 0.488603 * (g_sky_sh[1] * n.y + g_sky_sh[2] * n.z + g_sky_sh[3] * n.x);
-  e += 1.092548 * (g_sky_sh[4] * n.x * n.y + g_sky_sh[5] * n.y * n.z + g_sky_sh[7] * n.x * n.z);
-  e += g_sky_sh[6] * (0.315392 * (3.0 * n.z * n.z - 1.0)) + g_sky_sh[8] * (0.546274 * (n.x * n.x - n.y * n.y));
+// The irradiance nine spherical-harmonic coefficients c (Ramamoorthi and Hanrahan's
+// convolution applied) give a surface of unit normal n. Twin of SkyIrradiance::at
+// (core/environment/sky_irradiance.cpp).
+vec3 sh_irradiance(vec3 c[9], vec3 n) {
+  vec3 e = c[0] * 0.282095;
+  e += 0.488603 * (c[1] * n.y + c[2] * n.z + c[3] * n.x);
+  e += 1.092548 * (c[4] * n.x * n.y + c[5] * n.y * n.z + c[7] * n.x * n.z);
+  e += c[6] * (0.315392 * (3.0 * n.z * n.z - 1.0)) + c[8] * (0.546274 * (n.x * n.x - n.y * n.y));
   return max(e, vec3(0.0));
+}
+
+// The sky's irradiance on a surface of unit normal n: the nine coefficients core
+// projected Studio::sky onto.
+vec3 sky_irradiance(vec3 n) { return sh_irradiance(g_sky_sh, n); }
+
+// What the heads and the haze are lit by besides the lights (the sky and the lit backdrop
+// around the scene's centre: EnvironmentFrame::surround), its nine coefficients.
+void load_surround(out vec3 c[9]) {
+  for (int i = 0; i < 9; ++i) c[i] = frame.surround_sh[i].rgb;
 }
 
 // The diffuse radiance that gives a surface facing up the sky's irradiance (the heads'

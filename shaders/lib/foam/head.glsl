@@ -80,12 +80,18 @@ float hg_phase(float c, float g) {
 // once (Henyey-Greenstein), plus the diffusion approximation's field between the head's
 // three faces: the top (the sky and the key), the side against the glass (the studio and
 // the key through the wall) and the underside (light from below through the drink, which
-// tints it). A white head in even light is then exactly as bright as that light.
+// tints it). The diffuse light is the surroundings' (the sky and the lit backdrop around
+// the scene's centre, core surround_irradiance), facing up, sideways and on average. A
+// white head in even light is then exactly as bright as that light.
 struct HeadLight {
   vec3 albedo;  // single-scattering albedo (core derives it from foam.color)
   vec3 kappa;   // diffusion's decay per optical depth: sqrt(3 (1 - a)(1 - a g))
   float zb;     // the extrapolated boundary beyond each face, in optical depths: 2 / (3 (1 - g))
-  vec3 sky;     // diffuse light arriving on the top and the side
+  vec3 top_sky;   // diffuse light arriving on the top
+  // and on the side facing local (x, 0, z): side_xx x^2 + side_zz z^2 + side_xz x z +
+  // side_x x + side_z z (irradiance of second-order harmonics is a quadratic form in the
+  // normal, exactly), over pi
+  vec3 side_xx, side_zz, side_xz, side_x, side_z;
   vec3 below;   // and on the underside, through the drink
   float wall;   // the part of a light the glass wall lets through (two faces, Fresnel at normal incidence)
   int count;    // the rig's lights, each a distant light from the glass's middle:
@@ -114,8 +120,22 @@ HeadLight head_light(Vessel v, ObjectFoam f) {
   h.albedo = f.foam_color;
   h.kappa = sqrt(3.0 * max(1.0 - h.albedo, 0.0) * (1.0 - h.albedo * f.anisotropy));
   h.zb = 2.0 / (3.0 * (1.0 - f.anisotropy));
-  h.sky = sky_light();
-  h.below = h.sky * exp(-v.body.absorption * f.under_chord);
+  vec3 sh[9];
+  load_surround(sh);
+  h.top_sky = sh_irradiance(sh, to_world_dir(v, vec3(0.0, 1.0, 0.0))) / PI;
+  // The side's light at the four sides and between two of them fixes its quadratic form.
+  vec3 u = to_world_dir(v, vec3(1.0, 0.0, 0.0)), w = to_world_dir(v, vec3(0.0, 0.0, 1.0));
+  vec3 eu = sh_irradiance(sh, u) / PI, enu = sh_irradiance(sh, -u) / PI;
+  vec3 ew = sh_irradiance(sh, w) / PI, enw = sh_irradiance(sh, -w) / PI;
+  vec3 euw = sh_irradiance(sh, normalize(u + w)) / PI;
+  h.side_xx = 0.5 * (eu + enu);
+  h.side_zz = 0.5 * (ew + enw);
+  h.side_x = 0.5 * (eu - enu);
+  h.side_z = 0.5 * (ew - enw);
+  h.side_xz = 2.0 * (euw - 0.5 * (h.side_xx + h.side_zz) - 0.70710678 * (h.side_x + h.side_z));
+  // Under the head, light from all around through the drink: the surroundings' mean
+  // radiance (their band-0 harmonic), along the drink's mean chord.
+  h.below = sh[0] * (0.282095 / PI) * exp(-v.body.absorption * f.under_chord);
   h.count = g_light_count;
   for (int i = 0; i < MAX_LIGHTS; ++i) {
     vec4 lit = i < h.count ? object_lit_by(v.row, i) : vec4(0.0, 1.0, 0.0, 0.0);
@@ -173,8 +193,10 @@ vec3 head_source(Vessel v, ObjectFoam f, HeadLight h, vec3 d, vec3 p, float heig
   // Diffusion between the faces: each face's incoming radiance (a light's irradiance
   // counted as a diffuse pi L) held at its extrapolated boundary, the field the sum of
   // each face's share (face_share).
-  vec3 top_in = h.sky + h.top_key / PI;
-  vec3 side_in = h.sky + side_key * h.wall / PI;
+  vec3 top_in = h.top_sky + h.top_key / PI;
+  vec3 side_sky = max(h.side_xx * across.x * across.x + h.side_zz * across.y * across.y + h.side_xz * across.x * across.y +
+                      h.side_x * across.x + h.side_z * across.y, vec3(0.0));
+  vec3 side_in = side_sky + side_key * h.wall / PI;
   float ut = tau_t + h.zb, ub = tau_b + h.zb, us = tau_s + h.zb;
   vec3 et = exp(min(h.kappa * ut, 60.0)), eb = exp(min(h.kappa * ub, 60.0)), es = exp(min(h.kappa * us, 60.0));
   vec3 pt = face_pull(h.kappa, ut, et), pb = face_pull(h.kappa, ub, eb), ps = face_pull(h.kappa, us, es);
@@ -187,7 +209,7 @@ vec3 head_source(Vessel v, ObjectFoam f, HeadLight h, vec3 d, vec3 p, float heig
 // face, lit straight.
 vec3 lacing_light(Vessel v, ObjectFoam f, vec3 d) {
   HeadLight h = head_light(v, f);
-  vec3 lit = h.sky;
+  vec3 lit = 0.5 * (h.side_xx + h.side_zz);  // (the side's light, around the glass)
   for (int i = 0; i < MAX_LIGHTS; ++i) {
     if (i >= h.count) break;
     lit += h.key[i] * hg_phase(dot(h.l[i], d), f.anisotropy);

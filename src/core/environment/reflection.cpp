@@ -31,18 +31,51 @@ void image_glint(const Studio& studio, EnvironmentFrame& f) {
 
 }  // namespace
 
+SkyIrradiance surround_irradiance(const Studio& studio, const SkyIrradiance& sky, const LightRig& rig,
+                                  const BackdropSurface& backdrop, const glm::dvec3& at) {
+  constexpr double kPi = std::numbers::pi;
+  SkyIrradiance s = sky;
+  if (!backdrop.present) return s;
+  const double band[9] = {kPi, 2 * kPi / 3, 2 * kPi / 3, 2 * kPi / 3, kPi / 4, kPi / 4, kPi / 4, kPi / 4, kPi / 4};
+  constexpr int kTheta = 32, kPhi = 64;
+  const double dt = kPi / kTheta, dp = 2 * kPi / kPhi;
+  for (int i = 0; i < kTheta; ++i) {
+    const double theta = (i + 0.5) * dt, st = std::sin(theta), ct = std::cos(theta);
+    const double weight = (std::cos(i * dt) - std::cos((i + 1) * dt)) * dp;
+    for (int j = 0; j < kPhi; ++j) {
+      const double phi = (j + 0.5) * dp;
+      const glm::dvec3 d(st * std::cos(phi), ct, st * std::sin(phi));
+      double t;
+      glm::dvec3 n;
+      if (!backdrop.intersect(at, d, 0.0, t, n)) continue;
+      const glm::dvec3 p = at + t * d;
+      const glm::dvec3 paper = backdrop.albedo(p) / kPi * (rig.irradiance(p, n) + sky.at(n));
+      const glm::dvec3 change = (paper - studio.sky(d)) * weight;
+      const std::array<double, 9> y = SkyIrradiance::basis(d);
+      for (int k = 0; k < 9; ++k) s.coef[size_t(k)] += change * y[size_t(k)] * band[k];
+    }
+  }
+  return s;
+}
+
+glm::dvec3 mean_radiance(const SkyIrradiance& s) {
+  // The mean of E(n) over all n is its band-0 term, pi times the mean radiance.
+  return s.coef[0] * SkyIrradiance::basis({0, 1, 0})[0] / std::numbers::pi;
+}
+
 EnvironmentFrame environment_frame(const SceneParams& p, const LightRig& rig, const BackdropSurface& backdrop) {
   constexpr double kPi = std::numbers::pi;
   EnvironmentFrame f;
   const Studio studio(p);
   f.sky = sky_irradiance(studio);
+  f.surround = surround_irradiance(studio, f.sky, rig, backdrop, rig.aim);
   f.image = studio.image;
   f.rotation_cos = float(studio.rotation_cos);
   f.rotation_sin = float(studio.rotation_sin);
   f.blur_lod = float(studio.blur_lod);
   f.intensity = p.env.intensity;
   // The sky's mean radiance over the sphere is its band-0 coefficient's share.
-  glm::dvec3 mean = f.sky.coef[0] * SkyIrradiance::basis({0, 1, 0})[0] / kPi;
+  glm::dvec3 mean = mean_radiance(f.sky);
   // Each light over the solid angle it covers at the centre (for a small light the
   // irradiance factor facing it is that solid angle), a 4 pi-th of the sphere.
   double best = 0;

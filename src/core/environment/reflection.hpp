@@ -23,13 +23,29 @@ struct EnvironmentFrame {
   // light; the direction towards it and that irradiance (0 without lights).
   glm::vec3 glint_dir{0, 1, 0};
   glm::vec3 glint{0.0f};
-  // The sky's irradiance (spherical harmonics) for the backdrop, the heads and the haze.
+  // The sky's irradiance (spherical harmonics) for the backdrop.
   SkyIrradiance sky;
+  // What the heads and the haze are lit by besides the lights themselves: the sky, and the
+  // lit backdrop where it hides the sky, seen from the scene's centre (surround_irradiance).
+  SkyIrradiance surround;
   // env.mode image: the environment and how it is seen (Studio's image, rotation, blur).
   std::shared_ptr<const EnvironmentMap> image;
   float rotation_cos = 1, rotation_sin = 0, blur_lod = 0, intensity = 1;
 };
 
 EnvironmentFrame environment_frame(const SceneParams&, const LightRig&, const BackdropSurface&);
+
+// The light around point `at` besides the rig's lights: the sky's harmonics `sky`, and
+// where a direction from `at` meets the backdrop, the backdrop's radiance instead of the
+// sky's (its albedo / pi times the rig's unoccluded irradiance and the sky's there), so a
+// head above a lit sweep gets the light the paper throws back at it, as the reference's
+// does. The correction is projected over a grid of directions (64 x 32): the backdrop's
+// light changes slowly, and irradiance keeps only its low frequencies.
+SkyIrradiance surround_irradiance(const Studio&, const SkyIrradiance& sky, const LightRig&, const BackdropSurface&,
+                                  const glm::dvec3& at);
+
+// The mean radiance over the whole sphere that harmonics of irradiance hold (their band-0
+// share): what an isotropic scatterer (the haze) receives per steradian.
+glm::dvec3 mean_radiance(const SkyIrradiance&);
 
 }  // namespace draught

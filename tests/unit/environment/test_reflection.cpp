@@ -84,5 +84,30 @@ TEST(Environment, SkyIrradianceMatchesDirectIntegration) {
   }
 }
 
+// What heads and haze are lit by besides the lights: with no backdrop, the sky itself;
+// under a constant sky over white paper lit by that sky alone, the paper is as bright as
+// the sky (albedo 1), so the surround is the same even light (the furnace); and a lit
+// sweep throws light back: the surround then gives a surface facing down (the paper
+// below) more than the sky alone does.
+TEST(Environment, TheSurroundIsTheSkyAndTheLitBackdrop) {
+  SceneParams p = dark_studio();
+  const LightRig none = light_rig(p, {0, 0.08, 0});
+  const EnvironmentFrame bare = environment_frame(p, none, backdrop_surface(p.env, none.aim));
+  for (int k = 0; k < 9; ++k) EXPECT_EQ(bare.surround.coef[size_t(k)], bare.sky.coef[size_t(k)]);
+
+  p.env.floor = true;
+  p.env.sweep_color = {1.0f, 1.0f, 1.0f};
+  const EnvironmentFrame white = environment_frame(p, none, backdrop_surface(p.env, none.aim));
+  for (const glm::dvec3 n : {glm::dvec3(0, 1, 0), glm::dvec3(0, -1, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 0, -1)})
+    EXPECT_NEAR(white.surround.at(n).g, std::numbers::pi * 0.5, 0.02 * std::numbers::pi * 0.5) << n.x << n.y << n.z;
+  EXPECT_NEAR(mean_radiance(white.surround).g, 0.5, 0.01);
+
+  SceneParams lit = default_params();
+  const LightRig rig = light_rig(lit, {0, 0.08, 0});
+  const EnvironmentFrame f = environment_frame(lit, rig, backdrop_surface(lit.env, rig.aim));
+  EXPECT_GT(f.surround.at({0, -1, 0}).g, 1.5 * f.sky.at({0, -1, 0}).g);
+  EXPECT_GT(mean_radiance(f.surround).g, mean_radiance(f.sky).g);
+}
+
 }  // namespace
 }  // namespace draught
