@@ -72,8 +72,9 @@ TEST(BackdropLightTwins, CoordsAndLightAgreeWithCore) {
 }
 
 // The picture of the sweep lit by the whole rig, no sky: each pixel within one 8-bit step
-// of the exact analytic shading (albedo / pi x the rig's exact irradiance, the tone map),
-// lights and their neighbours left out.
+// of the exact analytic shading (albedo / pi x the rig's exact irradiance and the paper's
+// own bounce, the surround's harmonics: core surround_irradiance; the tone map), lights
+// and their neighbours left out.
 TEST(BackdropLightPicture, TheSweepIsWithinOneStepOfTheExactShading) {
   Gpu& g = gpu_instance();
   int compared = 0;
@@ -99,7 +100,8 @@ TEST(BackdropLightPicture, TheSweepIsWithinOneStepOfTheExactShading) {
         glm::dvec3 n;
         if (!clear || !f.backdrop.intersect(r.o, r.d, 0.0, t, n)) continue;
         const glm::dvec3 p = r.at(t);
-        const glm::dvec3 e = f.backdrop.albedo(p) / std::numbers::pi * f.lights.irradiance(p, n);
+        const glm::dvec3 e =
+            f.backdrop.albedo(p) / std::numbers::pi * (f.lights.irradiance(p, n) + f.environment.surround.at(n));
         for (int c = 0; c < 3; ++c) {
           double v = e[c] * rp.exposure;
           if (rp.tonemap == int(Tonemap::Aces)) v = aces_filmic(v);

@@ -86,10 +86,11 @@ vec3 backdrop_faded(BackdropSurface bd, vec3 c, vec3 d, float dist) {
 
 // The backdrop at p (world, normal n), seen along d from `dist` away: albedo / pi times the
 // light it receives, the rig's direct light (one texel of the backdrop's light map; on the
-// floor through the traced map's shadows and caustics) and the sky's around the feet.
+// floor through the traced map's shadows and caustics) and the surround's (the sky and the
+// paper's own bounce, seen from the scene's centre) around the feet.
 vec3 shade_backdrop(vec3 p, vec3 n, vec3 d, float dist) {
   BackdropSurface bd = backdrop_surface();
-  vec3 e = sky_irradiance(n) * floor_contact(p) + floor_direct_light(p, n);
+  vec3 e = surround_irradiance(n) * floor_contact(p) + floor_direct_light(p, n);
 #ifdef ENV_IMAGE
   // An image's light is all sky: the map's shadows and caustics (of its brightest patches,
   // core floor_emitters) change it on the floor.
@@ -103,7 +104,7 @@ vec3 shade_backdrop(vec3 p, vec3 n, vec3 d, float dist) {
 // reflection.
 vec3 shade_backdrop_mirrored(vec3 p, vec3 n, vec3 d, float dist) {
   BackdropSurface bd = backdrop_surface();
-  vec3 c = albedo(bd, p) / PI * (sky_irradiance(n) + rig_irradiance_far(p, n, g_light_count));
+  vec3 c = albedo(bd, p) / PI * (surround_irradiance(n) + rig_irradiance_far(p, n, g_light_count));
   return backdrop_faded(bd, c, d, dist);
 }
 

@@ -18,11 +18,15 @@
 // main) and held: on llvmpipe each read of a uniform block's member is a load and a
 // broadcast to every lane, and the sky is read by every look at the surroundings.
 vec3 g_sky_sh[9];  // the irradiance's spherical-harmonic coefficients (frame.sky_sh)
+vec3 g_surround_sh[9];  // and the surround's, the sky and the lit backdrop (frame.surround_sh)
 vec3 g_sky_top, g_sky_horizon, g_ground, g_env_color;
 int g_env_mode;
 
 void init_studio() {
-  for (int i = 0; i < 9; ++i) g_sky_sh[i] = frame.sky_sh[i].rgb;
+  for (int i = 0; i < 9; ++i) {
+    g_sky_sh[i] = frame.sky_sh[i].rgb;
+    g_surround_sh[i] = frame.surround_sh[i].rgb;
+  }
   g_sky_top = frame.sky_top;
   g_sky_horizon = frame.sky_horizon;
   g_ground = frame.ground;
@@ -88,11 +92,10 @@ vec3 sh_irradiance(vec3 c[9], vec3 n) {
 // projected Studio::sky onto.
 vec3 sky_irradiance(vec3 n) { return sh_irradiance(g_sky_sh, n); }
 
-// What the heads and the haze are lit by besides the lights (the sky and the lit backdrop
-// around the scene's centre: EnvironmentFrame::surround), its nine coefficients.
-void load_surround(out vec3 c[9]) {
-  for (int i = 0; i < 9; ++i) c[i] = frame.surround_sh[i].rgb;
-}
+// The irradiance of what lies around the scene's centre besides the lights (the sky and
+// the lit backdrop: EnvironmentFrame::surround) on a surface of unit normal n: the light
+// of the heads, the haze and the backdrop itself (its bounce off its own paper).
+vec3 surround_irradiance(vec3 n) { return sh_irradiance(g_surround_sh, n); }
 
 // The diffuse radiance that gives a surface facing up the sky's irradiance (the heads'
 // and the haze's even light).

@@ -120,14 +120,12 @@ HeadLight head_light(Vessel v, ObjectFoam f) {
   h.albedo = f.foam_color;
   h.kappa = sqrt(3.0 * max(1.0 - h.albedo, 0.0) * (1.0 - h.albedo * f.anisotropy));
   h.zb = 2.0 / (3.0 * (1.0 - f.anisotropy));
-  vec3 sh[9];
-  load_surround(sh);
-  h.top_sky = sh_irradiance(sh, to_world_dir(v, vec3(0.0, 1.0, 0.0))) / PI;
+  h.top_sky = surround_irradiance(to_world_dir(v, vec3(0.0, 1.0, 0.0))) / PI;
   // The side's light at the four sides and between two of them fixes its quadratic form.
   vec3 u = to_world_dir(v, vec3(1.0, 0.0, 0.0)), w = to_world_dir(v, vec3(0.0, 0.0, 1.0));
-  vec3 eu = sh_irradiance(sh, u) / PI, enu = sh_irradiance(sh, -u) / PI;
-  vec3 ew = sh_irradiance(sh, w) / PI, enw = sh_irradiance(sh, -w) / PI;
-  vec3 euw = sh_irradiance(sh, normalize(u + w)) / PI;
+  vec3 eu = surround_irradiance(u) / PI, enu = surround_irradiance(-u) / PI;
+  vec3 ew = surround_irradiance(w) / PI, enw = surround_irradiance(-w) / PI;
+  vec3 euw = surround_irradiance(normalize(u + w)) / PI;
   h.side_xx = 0.5 * (eu + enu);
   h.side_zz = 0.5 * (ew + enw);
   h.side_x = 0.5 * (eu - enu);
@@ -135,7 +133,7 @@ HeadLight head_light(Vessel v, ObjectFoam f) {
   h.side_xz = 2.0 * (euw - 0.5 * (h.side_xx + h.side_zz) - 0.70710678 * (h.side_x + h.side_z));
   // Under the head, light from all around through the drink: the surroundings' mean
   // radiance (their band-0 harmonic), along the drink's mean chord.
-  h.below = sh[0] * (0.282095 / PI) * exp(-v.body.absorption * f.under_chord);
+  h.below = g_surround_sh[0] * (0.282095 / PI) * exp(-v.body.absorption * f.under_chord);
   h.count = g_light_count;
   for (int i = 0; i < MAX_LIGHTS; ++i) {
     vec4 lit = i < h.count ? object_lit_by(v.row, i) : vec4(0.0, 1.0, 0.0, 0.0);

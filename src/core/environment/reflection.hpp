@@ -37,9 +37,9 @@ EnvironmentFrame environment_frame(const SceneParams&, const LightRig&, const Ba
 
 // The light around point `at` besides the rig's lights: the sky's harmonics `sky`, and
 // where a direction from `at` meets the backdrop, the backdrop's radiance instead of the
-// sky's (its albedo / pi times the rig's unoccluded irradiance and the sky's there), so a
-// head above a lit sweep gets the light the paper throws back at it, as the reference's
-// does. The correction is projected over a grid of directions (64 x 32): the backdrop's
+// sky's (its albedo / pi times the rig's unoccluded irradiance and the surround's there:
+// the paper lights itself, in three rounds), so a head above a lit sweep, and the sweep
+// itself, get the light the paper throws back, as the reference's do. The correction is projected over a grid of directions (64 x 32): the backdrop's
 // light changes slowly, and irradiance keeps only its low frequencies.
 SkyIrradiance surround_irradiance(const Studio&, const SkyIrradiance& sky, const LightRig&, const BackdropSurface&,
                                   const glm::dvec3& at);
