@@ -200,6 +200,53 @@ bool shade_interface(inout Path path, Hit h, Vessel v) {
   return true;
 }
 
+#if DROPLETS
+// ---- a droplet's surface (lib/droplets): water against the air ----
+
+// The crossing of a droplet's surface: the normal facing the path, the indices, Fresnel.
+Crossing droplet_crossing(Path path, Hit h) {
+  Crossing c;
+  bool inside = path.medium == MEDIUM_DROPLET;
+  c.next = inside ? MEDIUM_AIR : MEDIUM_DROPLET;
+  c.n = dot(h.n, path.d) < 0.0 ? h.n : -h.n;
+  c.n1 = inside ? frame.droplet_ior : 1.0;
+  c.n2 = inside ? 1.0 : frame.droplet_ior;
+  c.F = fresnel_dielectric(-dot(c.n, path.d), c.n1, c.n2);
+  return c;
+}
+
+// As shade_interface for a droplet: the water inside absorbs (Beer-Lambert); the reflected
+// part sees the surroundings over the surface's roughness (from inside: the lights and
+// the sky, absorbed along one more chord of the same length: the internal reflection is
+// not followed); the refracted part goes on, into the next object or the air.
+void shade_droplet(inout Path path, Hit h) {
+  vec3 p = path.o + h.t * path.d;
+  bool inside = path.medium == MEDIUM_DROPLET;
+  vec3 chord = exp(-frame.droplet_absorption * h.t);
+  if (inside) path.thr *= chord;
+  Crossing c = droplet_crossing(path, h);
+  float rough = frame.droplet_roughness;
+  if (c.F < 1.0) {
+    vec3 mirrored = path.thr * c.F;
+    vec3 r = reflect(path.d, c.n);
+    if (inside) {
+      path.radiance += mirrored * chord * lights_and_sky(p, r, rough);
+    } else if (frame.transparent == 0) {
+      float tb, tl;
+      vec3 nb;
+      bool on_backdrop = intersect(backdrop_surface(), p, r, 0.0, tb, nb);
+      vec4 light = lights_seen(p, r, rough, tb, tl);
+      path.radiance += mirrored * light.a * light.rgb;
+      if (on_backdrop) path.radiance += mirrored * (1.0 - light.a) * shade_floor(p + tb * r, nb, r, tb, false);
+      else path.radiance += mirrored * (1.0 - light.a) * sky_seen(r, rough);
+    }
+    path.thr *= 1.0 - c.F;
+  }
+  go_on(path, h, c, p);
+  path.obj = -1;
+}
+#endif
+
 // ---- stage: trace the path ----
 
 // Follows the path from the camera through at most frame.max_events interfaces; whatever
@@ -228,6 +275,12 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
       escaped = true;
       break;
     }
+#if DROPLETS
+    if (h.m == M_DROPLET) {
+      shade_droplet(path, h);
+      if (max3(path.thr) < 1e-3) break;
+    } else
+#endif
     if (!shade_interface(path, h, v) || max3(path.thr) < 1e-3) break;
     if (++events == frame.max_events) break;
     s = start_search(2e-6);
@@ -281,6 +334,13 @@ vec4 debug_path_event(vec3 eye, vec3 dir, int n) {
     if (e == n) return vec4(h.m != M_NONE ? h.t : 0.0, float(h.m), float(h.obj), float(path.medium));
     if (h.m == M_NONE || h.m == M_FLOOR) break;
     vec3 p = path.o + h.t * path.d;
+#if DROPLETS
+    if (h.m == M_DROPLET) {
+      go_on(path, h, droplet_crossing(path, h), p);
+      path.obj = -1;
+      continue;
+    }
+#endif
     go_on(path, h, crossing_at(path, h, v, glass_of(v.row), below_liquid(v, to_local_point(v, p))), p);
   }
   return vec4(0.0, float(M_NONE), -1.0, float(path.medium));

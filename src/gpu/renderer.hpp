@@ -93,7 +93,7 @@ class Renderer {
   // What the path pass is compiled with (software rasterizers pay for code even where a
   // uniform branch skips it, so frames get only the code they use): these bits, and the
   // number of held objects (0: the general path) from bit kHeldShift on.
-  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kScreenCard = 32, kScreenBackground = 64, kHeldShift = 7 };
+  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kScreenCard = 32, kScreenBackground = 64, kDroplets = 128, kHeldShift = 8 };
   std::unique_ptr<Program> build_program(int variant) const;
 
   std::filesystem::path shader_dir_;
