@@ -9,6 +9,9 @@ set(DRAUGHT_CORE_SOURCES
   src/core/scene/camera.cpp
   src/core/scene/motion.cpp
   src/core/scene/frame.cpp
+  src/core/droplets/field.cpp
+  src/core/droplets/droplets.cpp
+  src/core/droplets/trail.cpp
   src/core/vessel/profile.cpp
   src/core/vessel/vessel.cpp
   src/core/vessel/fill_table.cpp

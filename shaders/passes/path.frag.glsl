@@ -214,6 +214,44 @@ void lace_wall(inout Path path, float t, int obj) {
 }
 #endif
 
+#if DROPLETS
+// ---- a droplet's surface (lib/droplets): water against the air ----
+
+// The crossing of a droplet's surface: the normal facing the path, the indices, Fresnel.
+Crossing droplet_crossing(Path path, Hit h) {
+  Crossing c;
+  bool inside = path.medium == MEDIUM_DROPLET;
+  c.next = inside ? MEDIUM_AIR : MEDIUM_DROPLET;
+  c.n = dot(h.n, path.d) < 0.0 ? h.n : -h.n;
+  c.n1 = inside ? frame.droplet_ior : 1.0;
+  c.n2 = inside ? 1.0 : frame.droplet_ior;
+  c.F = fresnel_dielectric(-dot(c.n, path.d), c.n1, c.n2);
+  return c;
+}
+
+// As shade_interface for a droplet: the water inside absorbs (Beer-Lambert); the reflected
+// part's look at the surroundings goes to `look` (from inside: the lights and the sky,
+// absorbed along one more chord of the same length: the internal reflection is not
+// followed); the refracted part goes on, into the next object or the air.
+void shade_droplet(inout Path path, Hit h, bool transparent, out Look look) {
+  look = no_look();
+  vec3 p = path.o + h.t * path.d;
+  bool inside = path.medium == MEDIUM_DROPLET;
+  vec3 chord = exp(-frame.droplet_absorption * h.t);
+  if (inside) path.thr *= chord;
+  Crossing c = droplet_crossing(path, h);
+  float rough = frame.droplet_roughness;
+  if (c.F < 1.0) {
+    vec3 r = reflect(path.d, c.n);
+    if (inside) look = Look(p, r, path.thr * c.F * chord, rough, false, false);
+    else if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true);
+    path.thr *= 1.0 - c.F;
+  }
+  go_on(path, h, c, p);
+  path.obj = -1;
+}
+#endif
+
 // ---- stage: trace the path ----
 
 // Follows the path from the camera through at most frame.max_events interfaces; whatever
@@ -281,6 +319,10 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
           look.w = vec3(0.0);
         }
       } else {
+#if DROPLETS
+        if (h.m == M_DROPLET) shade_droplet(path, h, transparent, look);
+        else
+#endif
         shade_interface(path, h, v, transparent, look);
       }
       look_out(look, path.radiance, lit);
@@ -347,6 +389,13 @@ vec4 debug_path_event(vec3 eye, vec3 dir, int n) {
     if (e == n) return vec4(h.m != M_NONE ? h.t : 0.0, float(h.m), float(h.obj), float(path.medium));
     if (h.m == M_NONE || h.m == M_FLOOR) break;
     vec3 p = path.o + h.t * path.d;
+#if DROPLETS
+    if (h.m == M_DROPLET) {
+      go_on(path, h, droplet_crossing(path, h), p);
+      path.obj = -1;
+      continue;
+    }
+#endif
     go_on(path, h, crossing_at(path, h, v, glass_of(v.row), below_liquid(v, to_local_point(v, p))), p);
   }
   return vec4(0.0, float(M_NONE), -1.0, float(path.medium));

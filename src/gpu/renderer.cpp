@@ -83,6 +83,7 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kDebug) frag = with_define(std::move(frag), "DEBUG_VIEWS");
   if (variant & kImage) frag = with_define(std::move(frag), "ENV_IMAGE");
   if (variant & kDecals) frag = with_define(std::move(frag), "DECALS");
+  if (variant & kDroplets) frag = with_define(std::move(frag), "DROPLETS");
   if (variant & (kScreenCard | kScreenBackground))  // 1: a card in the scene, 2: the background
     frag = with_define(std::move(frag), "SCREEN", variant & kScreenCard ? "1" : "2");
   if (variant & kSphereLights) frag = with_define(std::move(frag), "SPHERE_LIGHTS");
@@ -151,7 +152,8 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
                       (f.environment.image ? kImage : 0) | (decals ? kDecals : 0) | (held << kHeldShift) |
                       (f.screen.mode == ScreenMode::Card ? kScreenCard : 0) |
                       (f.screen.mode == ScreenMode::Background ? kScreenBackground : 0) |
-                      (spheres ? kSphereLights : 0) | (painted ? kPaintedSky : 0);
+                      (spheres ? kSphereLights : 0) | (painted ? kPaintedSky : 0) |
+                      (!f.droplets.empty() && !f.droplets.front().field.spheres.empty() ? kDroplets : 0);
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
   glUseProgram(program->id());

@@ -95,7 +95,7 @@ class Renderer {
   // number of held objects (0: the general path) from bit kHeldShift on.
   enum Variant {
     kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kScreenCard = 32, kScreenBackground = 64,
-    kSphereLights = 128, kPaintedSky = 256, kHeldShift = 9
+    kSphereLights = 128, kPaintedSky = 256, kDroplets = 512, kHeldShift = 10
   };
   std::unique_ptr<Program> build_program(int variant) const;
 

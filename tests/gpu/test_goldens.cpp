@@ -31,6 +31,14 @@ struct GoldenCase {
 
 FrameState flight_front() { return make_frame(flight_scene(FlightView::StraightOn)); }
 FrameState flight_angle() { return make_frame(flight_scene(FlightView::AtAnAngle)); }
+// The droplets' trail stretched over the pint behind it (presets/timelines/droplets-trail.json
+// in its scene of objects: a lager and a droplets object).
+FrameState droplets_trail() {
+  const Timeline tl = load_timeline("droplets-trail");
+  SceneRequest req;
+  req.preset = tl.preset;
+  return draught::timeline_frame(tl, resolve_scene_objects(req), 1.0);
+}
 
 struct Comparison {
   int max_abs = 0;
@@ -98,6 +106,7 @@ INSTANTIATE_TEST_SUITE_P(
     Scenes, Golden,
     ::testing::Values(
         GoldenCase{"pint_lager", {"lager", "pint", {}, {}}, 160, 160, 3, 0.002, 64},
+        GoldenCase{"droplets_trail", {}, 200, 150, 3, 0.002, 64, nullptr, 0, droplets_trail},
         GoldenCase{"nonic_stout", {"stout", "nonic", {}, {}}, 160, 160, 3, 0.002, 64},
         GoldenCase{"wine_red", {"red-wine", "wine", {}, {}}, 128, 192, 3, 0.002, 64},
         GoldenCase{"tulip_amber_constant_env",

@@ -14,6 +14,12 @@
 #include "lib/scene/objects.glsl"
 #include "lib/vessel/vessel.glsl"
 #include "lib/environment/floor.glsl"
+#ifndef DROPLETS
+#define DROPLETS 0
+#endif
+#if DROPLETS
+#include "lib/droplets/field.glsl"
+#endif
 
 // The vessel's nearest surface for a world ray, as a world hit.
 Hit object_hit(Vessel v, vec3 o, vec3 d, int medium, float tmin) {
@@ -64,6 +70,16 @@ int next_candidate(Search s, vec3 o, vec3 d, int medium, int obj, out float entr
 // s.best is the nearest surface (with `floor`, the backdrop too), and v holds its
 // object's records when it is an object.
 bool search_step(inout Search s, vec3 o, vec3 d, int medium, int obj, bool floor, out Vessel v) {
+#if DROPLETS
+  // The scene's droplets (lib/droplets), in the air: marched once, on the search's first
+  // step, so that its hit bounds which vessels can still be nearer. Inside a droplet
+  // only its surface bounds the path.
+  if (s.after_t0 == -INF && (medium == MEDIUM_AIR || medium == MEDIUM_DROPLET)) {
+    float t;
+    vec3 n;
+    if (march_droplets(o, d, s.tmin, s.best.t, medium == MEDIUM_DROPLET, t, n)) s.best = Hit(t, n, M_DROPLET, -1);
+  }
+#endif
   float entry, then;
   int cand = next_candidate(s, o, d, medium, obj, entry, then);
   v = load_vessel(max(cand, 0));

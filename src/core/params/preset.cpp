@@ -67,8 +67,24 @@ PresetObject parse_object(const json& o, const std::string& file, const std::str
   if (!o.is_object())
     throw InputError(file + ": field '" + at + "': expected an object with name, glass, drink, position, yaw, "
                      "params; got " + short_dump(o));
-  check_keys(o, file, at + ".", {"name", "glass", "drink", "position", "yaw", "params"});
+  check_keys(o, file, at + ".", {"name", "kind", "glass", "drink", "position", "yaw", "params", "droplets"});
   PresetObject obj;
+  if (o.contains("kind")) {
+    const json& k = o["kind"];
+    if (!k.is_string() || (k.get<std::string>() != "vessel" && k.get<std::string>() != "droplets"))
+      throw InputError(file + ": field '" + at + ".kind': expected \"vessel\" (the default) or \"droplets\", got " +
+                       short_dump(k));
+    if (k.get<std::string>() == "droplets") {
+      for (const char* key : {"glass", "drink", "params"})
+        if (o.contains(key))
+          throw InputError(file + ": field '" + at + "." + key + "': a droplets object has no " + key +
+                           " (its parameters are in " + at + ".droplets)");
+      obj.droplets = o.contains("droplets") ? parse_droplet_params(o["droplets"], file, at + ".droplets")
+                                            : DropletParams{};
+    }
+  }
+  if (o.contains("droplets") && !obj.droplets)
+    throw InputError(file + ": field '" + at + ".droplets': only an object of \"kind\": \"droplets\" has droplets");
   auto str = [&](const char* key, bool required) -> std::string {
     const std::string f = at + "." + key;
     if (!o.contains(key)) {
@@ -172,6 +188,11 @@ Preset parse_preset(const std::string& text, const std::string& file) {
     for (size_t i = 0; i < objects.size(); ++i) {
       const std::string at = "objects[" + std::to_string(i) + "]";
       p.objects.push_back(parse_object(objects[i], file, at));
+      if (p.objects[i].droplets)
+        for (size_t k = 0; k < i; ++k)
+          if (p.objects[k].droplets)
+            throw InputError(file + ": field '" + at + ".kind': a scene holds at most one droplets object (also objects[" +
+                             std::to_string(k) + "])");
       for (size_t k = 0; k < i; ++k)
         if (p.objects[k].name == p.objects[i].name)
           throw InputError(file + ": field '" + at + ".name': expected a name no other object has, got \"" +
@@ -305,6 +326,15 @@ std::string scene_preset_json(const Scene& scene, const std::string& name, const
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
     const Placement& at = o.placement;
+    if (const DropletsObject* d = as_droplets(o)) {
+      objects.push_back({{"name", o.name},
+                         {"kind", "droplets"},
+                         {"position", {shortest_double(at.position.x), shortest_double(at.position.y),
+                                       shortest_double(at.position.z)}},
+                         {"yaw", shortest_double(at.yaw)},
+                         {"droplets", droplet_params_json(d->params)}});
+      continue;
+    }
     objects.push_back({{"name", o.name},
                        {"position", {shortest_double(at.position.x), shortest_double(at.position.y),
                                      shortest_double(at.position.z)}},
@@ -422,6 +452,11 @@ Scene scene_from_preset(const Preset& preset, std::string* log) {
   for (size_t i = 0; i < preset.objects.size(); ++i) {
     const PresetObject& o = preset.objects[i];
     const std::string at = "objects[" + std::to_string(i) + "]";
+    if (o.droplets) {
+      scene.objects.push_back(SceneObject{o.name, o.placement, DropletsObject{*o.droplets}});
+      used += at + " " + o.name + ": droplets\n";
+      continue;
+    }
     std::optional<Preset> drink;
     if (!o.drink.empty()) drink = load_object_preset(preset, o.drink, "drink", at + ".drink");
     const std::string glass_name = !o.glass.empty()                          ? o.glass

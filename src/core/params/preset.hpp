@@ -22,10 +22,12 @@
 // table's defaults. Each object is: defaults, its glass, its drink, its params.
 #pragma once
 
+#include "core/droplets/droplets.hpp"
 #include "core/params/params.hpp"
 #include "core/scene/scene.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -40,6 +42,9 @@ struct PresetObject {
   std::string glass, drink;  // preset names or paths (relative to the scene file); may be empty
   Placement placement;
   PresetValues values;  // vessel parameters, applied after the glass and the drink
+  // "kind": "droplets": a trail of droplets (core/droplets) with these parameters; no
+  // glass, drink or params then.
+  std::optional<DropletParams> droplets;
 };
 
 struct Preset {

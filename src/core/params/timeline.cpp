@@ -22,7 +22,7 @@ using nlohmann::json;
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr const char* kActionKinds = "tilt, rotate, shake, sip, orbit, set, pour, play, seek, stop";
+constexpr const char* kActionKinds = "tilt, rotate, shake, sip, orbit, set, pour, play, seek, stop, pointer";
 double rad(double deg) { return deg * kPi / 180.0; }
 
 // Progress of an action at time t, eased: 0 before, 1 after.
@@ -189,6 +189,17 @@ TimelineAction parse_action(const Reader& r, const json& a, const std::string& a
              act.param->path + " belongs to the whole scene, not to one object: leave out the object");
     if (!a.contains("value")) r.fail(f + "value", "missing, expected " + expected_text(*act.param));
     act.value = param_value_from_json(*act.param, a["value"], r.file, f + "value");
+    act.duration = duration(0, &zero);
+  } else if (kind == "pointer") {
+    check_keys(r, a, f, {"at", "action", "duration", "ease", "to", "object"});
+    act.kind = TimelineAction::Kind::Pointer;
+    const std::string expected = "expected [x, y]: metres right and up in the droplets' plane, each in [-2, 2]";
+    if (!a.contains("to")) r.fail(f + "to", "missing, " + expected);
+    const json& to = a["to"];
+    if (!to.is_array() || to.size() != 2 || !to[0].is_number() || !to[1].is_number() ||
+        !(std::abs(to[0].get<double>()) <= 2) || !(std::abs(to[1].get<double>()) <= 2))
+      r.fail(f + "to", expected + ", got " + short_dump(to));
+    act.to = {to[0].get<double>(), to[1].get<double>()};
     act.duration = duration(0, &zero);
   } else if (kind == "pour") {
     check_keys(r, a, f, {"at", "action", "object"});
@@ -464,7 +475,22 @@ Pose TimelineDriver::pose_at(double t) const {
 
 MotionSample TimelineDriver::sample(double t) {
   // Velocities and accelerations of the smooth scripted path.
-  return sample_path(t, [this](double time) { return pose_at(time); });
+  MotionSample m = sample_path(t, [this](double time) { return pose_at(time); });
+  m.pointer = timeline_->pointer_at(t, object_);
+  return m;
+}
+
+std::optional<glm::dvec2> Timeline::pointer_at(double t, int object) const {
+  const TimelineAction* last = nullptr;
+  glm::dvec2 from(0.0);
+  for (const TimelineAction& a : actions) {  // sorted by `at`
+    if (a.kind != TimelineAction::Kind::Pointer || !drives(a, object)) continue;
+    if (a.at > t) break;
+    if (last) from = glm::mix(from, last->to, progress(*last, a.at));  // where the pointer was then
+    last = &a;
+  }
+  if (!last) return std::nullopt;
+  return glm::mix(from, last->to, progress(*last, t));
 }
 
 void play_timeline(Simulation& sim, TimelineDriver& driver, const Timeline& tl, const Params& base, double t) {

@@ -34,7 +34,10 @@
 // drive that object only; without it they drive every vessel alike, each at its own
 // place. A set action addresses one object with "object" or with a path such as
 // "objects[2].liquid.srm"; without either, a vessel parameter is set on every object.
-// orbit moves the camera and takes no object. Names and indexes are checked against the
+// orbit moves the camera and takes no object. pointer: { "at": 1, "action": "pointer",
+// "to": [0.1, 0.05], "duration": 0.5 } moves a droplets object's pointer (core/droplets,
+// docs/DROPLETS.md) in its plane, metres right and up from its placement; the trail of
+// droplets follows it. Names and indexes are checked against the
 // scene by bind_timeline (the CLI binds to the scene it renders, `draught validate` to
 // the timeline's own preset).
 #pragma once
@@ -44,6 +47,7 @@
 #include "core/scene/scene.hpp"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,13 +60,14 @@ inline constexpr int kTimelineFormat = 1;
 inline constexpr int kUnboundObject = -2;
 
 struct TimelineAction {
-  enum class Kind { Tilt, Rotate, Shake, Sip, Orbit, Set, Pour, Play, Seek, Stop } kind;
+  enum class Kind { Tilt, Rotate, Shake, Sip, Orbit, Set, Pour, Play, Seek, Stop, Pointer } kind;
   double at = 0, duration = 0;
   bool linear = false;
   double angle = 0, toward = 0;               // tilt (radians)
   double degrees = 0;                         // rotate, orbit (radians despite the name in JSON)
   double amplitude = 0, frequency = 0;        // shake (m, Hz); direction in `toward`
   double amount = 0;                          // sip
+  glm::dvec2 to{0.0};                         // pointer: where it goes in the droplets' plane (m)
   double position = -1;                       // play (from; < 0: where it stands), seek (to): seconds into the source
   const ParamDesc* param = nullptr;           // set
   ParamValue value;
@@ -89,6 +94,10 @@ struct Timeline {
   double spin_at(double t, int object = 0) const;
   glm::dvec3 shake_at(double t, int object = 0) const;
   double drink_rate_at(double t, int object = 0) const;  // fraction of the cavity per second
+  // Where the pointer of a droplets object is at time t (its plane's coordinates, m: each
+  // pointer action blends from where the pointer was when it started to its `to`); none
+  // when no pointer action drives the object.
+  std::optional<glm::dvec2> pointer_at(double t, int object = 0) const;
   bool pours_in(double t0, double t1, int object = 0) const;  // a pour action at a time in [t0, t1)
   // The parameters at time t: `base` with the set and orbit actions applied (a single
   // glass: the actions for every object and for object 0).

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/bubbles/bubbles.hpp"
+#include "core/droplets/droplets.hpp"
 #include "core/environment/backdrop.hpp"
 #include "core/environment/lights.hpp"
 #include "core/environment/reflection.hpp"
@@ -56,6 +57,7 @@ struct FrameState {
   BackdropSurface backdrop;      // what the scene stands on (the sweep around scene_aim)
   double time = 0;               // the scene's time (s): what the screen shows depends on it
   ScreenFrame screen;            // the moving picture on a card or as the background (screen.*)
+  std::vector<DropletsFrame> droplets;  // the droplets objects (at most one), their spheres in the world
 };
 
 // The scene's centre the studio's lights (and the sweep) are placed around: the middle of

@@ -6,6 +6,8 @@
 #include "core/vessel/vessel.hpp"
 
 #include <glm/glm.hpp>
+
+#include <optional>
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
@@ -25,6 +27,9 @@ struct MotionSample {
   Pose pose;                            // where the glass is at `time`
   glm::dvec3 angular_velocity{0.0};     // world frame, rad/s
   glm::dvec3 linear_acceleration{0.0};  // of pose.position, world frame, m/s^2, gravity excluded
+  // A droplets object's pointer in its plane (core/droplets/trail.hpp), when the input
+  // gives one; none: the trail follows the last pointer it had.
+  std::optional<glm::dvec2> pointer;
 };
 
 // Angle between the glass axis and world up, radians in [0, pi].

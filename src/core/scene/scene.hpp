@@ -5,6 +5,7 @@
 // docs/ARCHITECTURE.md, "How to add an object kind").
 #pragma once
 
+#include "core/droplets/droplets.hpp"
 #include "core/params/params.hpp"
 #include "generated/constants.hpp"
 
@@ -29,8 +30,14 @@ struct VesselObject {
   VesselParams params;
 };
 
+// A trail of water droplets following a pointer (core/droplets, docs/DROPLETS.md). At most
+// one per scene (its spheres travel in the Frame block).
+struct DropletsObject {
+  DropletParams params;
+};
+
 // Every kind an object can be (one registration per kind).
-using ObjectKind = std::variant<VesselObject>;
+using ObjectKind = std::variant<VesselObject, DropletsObject>;
 
 struct SceneObject {
   std::string name;  // from the scene file ("pilsner"); unique within the scene
@@ -84,5 +91,7 @@ void set_param(Scene&, const ParamRef&, const ParamValue&);
 // The vessel of an object, or nullptr for another kind.
 inline VesselObject* as_vessel(SceneObject& o) { return std::get_if<VesselObject>(&o.kind); }
 inline const VesselObject* as_vessel(const SceneObject& o) { return std::get_if<VesselObject>(&o.kind); }
+inline DropletsObject* as_droplets(SceneObject& o) { return std::get_if<DropletsObject>(&o.kind); }
+inline const DropletsObject* as_droplets(const SceneObject& o) { return std::get_if<DropletsObject>(&o.kind); }
 
 }  // namespace draught

@@ -21,14 +21,22 @@ void SceneSimulation::set_scene(const Scene& s) {
   const bool same_list = s.objects.size() == scene_.objects.size() && sims_.size() == s.objects.size();
   if (!same_list) {
     sims_.assign(s.objects.size(), std::nullopt);
+    trails_.assign(s.objects.size(), std::nullopt);
     releases_.assign(s.objects.size(), Release{});
   }
   for (size_t i = 0; i < s.objects.size(); ++i) {
     const VesselObject* v = as_vessel(s.objects[i]);
     if (!v) {
       sims_[i].reset();
+      if (const DropletsObject* d = as_droplets(s.objects[i])) {
+        if (trails_[i]) trails_[i]->set_params(d->params);
+        else trails_[i].emplace(d->params, pointer_);
+      } else {
+        trails_[i].reset();
+      }
       continue;
     }
+    trails_[i].reset();
     if (sims_[i]) {
       sims_[i]->set_params(v->params);
     } else {
@@ -86,7 +94,21 @@ void SceneSimulation::settle_bubbles(double seconds) {
     if (s) s->settle_bubbles(seconds);
 }
 
+const DropletTrail* SceneSimulation::trail(int i) const {
+  return i >= 0 && i < int(trails_.size()) && trails_[size_t(i)] ? &*trails_[size_t(i)] : nullptr;
+}
+
+void SceneSimulation::step_trails(const std::vector<MotionSample>* each, const MotionSample* all) {
+  for (size_t i = 0; i < trails_.size(); ++i) {
+    if (!trails_[i]) continue;
+    const MotionSample* m = each ? (i < each->size() ? &(*each)[i] : nullptr) : all;
+    trails_[i]->step(m && m->pointer ? *m->pointer : pointer_);
+  }
+  trail_time_ += Simulation::kStep;
+}
+
 void SceneSimulation::step(const MotionSample& m, double drink_rate) {
+  step_trails(nullptr, &m);
   for (size_t i = 0; i < sims_.size(); ++i) {
     if (!sims_[i]) continue;
     const Placement& at = scene_.objects[i].placement;
@@ -101,6 +123,7 @@ void SceneSimulation::step(const MotionSample& m, double drink_rate) {
 
 void SceneSimulation::step_each(const std::vector<MotionSample>& motions, const std::vector<double>& drink_rates) {
   const double time = motions.empty() ? this->time() + Simulation::kStep : motions.front().time;
+  step_trails(&motions, nullptr);
   for (size_t i = 0; i < sims_.size(); ++i) {
     if (!sims_[i]) continue;
     const Placement& at = scene_.objects[i].placement;
@@ -117,9 +140,11 @@ void SceneSimulation::step_each(const std::vector<MotionSample>& motions, const 
 void SceneSimulation::advance(InputDriver& driver, double t, double drink_rate) {
   // Fixed steps as Simulation::advance, every object on the same clock.
   if (!std::isfinite(t) || sims_.empty()) return;
-  if (t - time() > Simulation::kMaxCatchUp)
+  if (t - time() > Simulation::kMaxCatchUp) {
     for (auto& s : sims_)
       if (s) s->skip_to(t - Simulation::kMaxCatchUp);
+    trail_time_ = std::max(trail_time_, t - Simulation::kMaxCatchUp);
+  }
   while (time() + Simulation::kStep <= t + 1e-9) step(driver.sample(time() + Simulation::kStep), drink_rate);
 }
 
@@ -130,13 +155,20 @@ FrameState SceneSimulation::frame() const {
       vessels.push_back(sims_[i]->frame());
       vessels.back().placement = scene_.objects[i].placement;
     }
-  return assemble_frame(scene_.params, std::move(vessels), scene_.selected, time());
+  FrameState f = assemble_frame(scene_.params, std::move(vessels), scene_.selected, time());
+  for (size_t i = 0; i < trails_.size(); ++i)
+    if (trails_[i]) {
+      const Placement& at = scene_.objects[i].placement;
+      const DropletParams& p = as_droplets(scene_.objects[i])->params;
+      f.droplets.push_back({p, at.position, at.yaw, droplet_field_of(p, trails_[i]->spheres(at.position, at.yaw))});
+    }
+  return f;
 }
 
 double SceneSimulation::time() const {
   for (const auto& s : sims_)
     if (s) return s->time();
-  return 0;
+  return trail_time_;
 }
 
 }  // namespace draught

@@ -5,6 +5,7 @@
 
 #include "core/scene/frame.hpp"
 #include "core/scene/scene.hpp"
+#include "core/droplets/trail.hpp"
 #include "core/sim/simulation.hpp"
 
 #include <optional>
@@ -48,9 +49,20 @@ class SceneSimulation {
   FrameState frame() const;
   double time() const;
 
+  // The trail of a droplets object (nullptr for another kind).
+  const DropletTrail* trail(int object) const;
+  // The pointer every droplets trail follows from now on (the viewer's or the page's mouse,
+  // in the trail's plane: core/droplets/trail.hpp droplet_plane_hit); a motion sample that
+  // carries its own pointer (a timeline's) wins for its step.
+  void set_pointer(glm::dvec2 p) { pointer_ = p; }
+
  private:
   Scene scene_;
   std::vector<std::optional<Simulation>> sims_;  // one per object; empty for other kinds
+  std::vector<std::optional<DropletTrail>> trails_;  // one per object; set for droplets objects
+  glm::dvec2 pointer_{0.0};
+  double trail_time_ = 0;  // the clock of a scene without vessels
+  void step_trails(const std::vector<MotionSample>* each, const MotionSample* all);
   // A glass that input lets go of (the selection moved on) is set back upright over
   // kSettleSeconds, smoothly, so its drink sloshes as when a hand puts a glass down
   // instead of snapping to rest.

@@ -221,7 +221,16 @@ TEST(ScenePresetErrors, ObjectFields) {
   EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": 3 }])")), {"objects[0].name", "string", "got 3"}));
   EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a", "drink": ["lager"] }])")), {"objects[0].drink", "string"}));
   EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a", "glas": "pint" }])")),
-                  {"objects[0].glas", "unknown key", "expected one of name, glass, drink, position, yaw, params"}));
+                  {"objects[0].glas", "unknown key", "expected one of name, kind, glass, drink, position, yaw, params, droplets"}));
+  // A droplets object: its own parameters, no glass; one per scene.
+  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "d", "kind": "droplets", "glass": "pint" }])")),
+                  {"objects[0].glass", "a droplets object has no glass"}));
+  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "d", "kind": "drops" }])")),
+                  {"objects[0].kind", "expected \"vessel\" (the default) or \"droplets\"", "\"drops\""}));
+  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "d", "kind": "droplets", "droplets": { "blend": -1 } }])")),
+                  {"objects[0].droplets.blend", "expected a number in [0, 0.2] (m)", "got -1"}));
+  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "d", "kind": "droplets" }, { "name": "e", "kind": "droplets" }])")),
+                  {"objects[1].kind", "at most one droplets object"}));
   EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a" }, { "name": "b", "position": [0, 0] }])")),
                   {"s.json", "objects[1].position", "[x, y, z]"}));
   EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a", "position": [7, 0, 0] }])")),

@@ -620,6 +620,7 @@ std::string check_first_hit(const SceneGeometry& scene, const Ray& ray, double t
       else if (glm::length(hit.n - dvec3(0, 1, 0)) > 1e-12) err << "floor normal not up";
       break;
     case Material::None: break;
+    case Material::Droplet: break;  // not a vessel surface (tests/unit/droplets)
   }
   if (!err.str().empty()) return head.str() + err.str() + " (" + material_name(hit.m) + ")";
   // 3. It is a crossing, and the normal points out of the glass (glass surfaces) or

@@ -1,0 +1,141 @@
+// The droplet field: spheres blended by a smooth minimum, displaced by value noise, and
+// the march that finds its surface. GLSL twin of core/droplets/field.cpp (the same
+// function names, in float; tests/gpu/test_droplets.cpp probes them against it). The
+// spheres and parameters are the frame's (frame.droplet_*, gpu/scene_data.cpp);
+// compiled only into frames with droplets (DROPLETS).
+#ifndef LIB_DROPLETS_FIELD_GLSL
+#define LIB_DROPLETS_FIELD_GLSL
+#include "generated/constants.glsl"
+#include "generated/frame.glsl"
+#include "lib/common/math.glsl"
+#include "lib/common/noise.glsl"
+
+const float DROPLET_SKIM = 4.0 * DROPLET_HIT_EPS;  // core: kDropletSkim
+const float DROPLET_RELAX = 1.6;                   // core: kDropletRelax
+const int DROPLET_BISECTIONS = 16;                 // core: kDropletBisections
+
+// Twin of droplet_smin: the quadratic smooth minimum and the weight of a in its gradient.
+float droplet_smin(float a, float b, float k, out float wa) {
+  if (!(k > 0.0)) {
+    wa = a <= b ? 1.0 : 0.0;
+    return min(a, b);
+  }
+  float h = max(k - abs(a - b), 0.0) / k;
+  wa = a < b ? 1.0 - 0.5 * h : 0.5 * h;
+  return min(a, b) - 0.25 * k * h * h;
+}
+
+// Twin of droplet_exp_width.
+float droplet_exp_width(float k) { return k / (4.0 * log(2.0)); }
+
+// Twin of droplet_noise: value noise in [0, 1] (hash13 at the corners) and its gradient.
+vec4 droplet_noise(vec3 x) {
+  vec3 i = floor(x), f = x - i;
+  vec3 u = f * f * (3.0 - 2.0 * f), du = 6.0 * f * (1.0 - f);
+  float a000 = hash13(i), a100 = hash13(i + vec3(1, 0, 0)), a010 = hash13(i + vec3(0, 1, 0));
+  float a110 = hash13(i + vec3(1, 1, 0)), a001 = hash13(i + vec3(0, 0, 1)), a101 = hash13(i + vec3(1, 0, 1));
+  float a011 = hash13(i + vec3(0, 1, 1)), a111 = hash13(i + vec3(1, 1, 1));
+  float k1 = a100 - a000, k2 = a010 - a000, k3 = a001 - a000;
+  float k4 = a000 - a100 - a010 + a110, k5 = a000 - a010 - a001 + a011, k6 = a000 - a100 - a001 + a101;
+  float k7 = -a000 + a100 + a010 - a110 + a001 - a101 - a011 + a111;
+  float n = a000 + k1 * u.x + k2 * u.y + k3 * u.z + k4 * u.x * u.y + k5 * u.y * u.z + k6 * u.z * u.x + k7 * u.x * u.y * u.z;
+  vec3 g = du * vec3(k1 + k4 * u.y + k6 * u.z + k7 * u.y * u.z, k2 + k5 * u.z + k4 * u.x + k7 * u.z * u.x,
+                     k3 + k6 * u.x + k5 * u.y + k7 * u.x * u.y);
+  return vec4(n, g);
+}
+
+// A sphere's distance and its gradient.
+float droplet_sphere(int i, vec3 p, out vec3 g) {
+  vec4 s = frame.droplet_spheres[i];
+  vec3 q = p - s.xyz;
+  float len = length(q);
+  g = len > 0.0 ? q / len : vec3(0.0, 1.0, 0.0);
+  return len - s.w;
+}
+
+// Twin of droplet_field: (value, gradient) at p.
+vec4 droplet_field(vec3 p) {
+  float d;
+  vec3 grad;
+  if (frame.droplet_kernel == 1) {
+    float m = INF;
+    vec3 g;
+    for (int i = 0; i < MAX_DROPLETS; ++i)
+      if (i < frame.droplet_count) m = min(m, droplet_sphere(i, p, g));
+    float w = droplet_exp_width(frame.droplet_blend), sum = 0.0;
+    grad = vec3(0.0);
+    for (int i = 0; i < MAX_DROPLETS; ++i) {
+      if (i >= frame.droplet_count) break;
+      float di = droplet_sphere(i, p, g);
+      float e = w > 0.0 ? exp(-(di - m) / w) : (di == m ? 1.0 : 0.0);
+      sum += e;
+      grad += e * g;
+    }
+    d = w > 0.0 ? m - w * log(sum) : m;
+    grad /= sum;
+  } else {
+    d = droplet_sphere(0, p, grad);
+    for (int i = 1; i < MAX_DROPLETS; ++i) {
+      if (i >= frame.droplet_count) break;
+      vec3 g;
+      float di = droplet_sphere(i, p, g), wa;
+      d = droplet_smin(d, di, frame.droplet_blend, wa);
+      grad = wa * grad + (1.0 - wa) * g;
+    }
+  }
+  if (frame.droplet_noise_amplitude > 0.0) {
+    vec4 nz = droplet_noise(p * frame.droplet_noise_frequency);
+    d += frame.droplet_noise_amplitude * (2.0 * nz.x - 1.0);
+    grad += 2.0 * frame.droplet_noise_amplitude * frame.droplet_noise_frequency * nz.yzw;
+  }
+  return vec4(d, grad);
+}
+
+float droplet_value(vec3 p) { return droplet_field(p).x; }
+
+// Twin of march_droplets: the first crossing along o + t d in [tmin, tmax], from outside
+// (inside false) or from within a droplet; the box clip, over-relaxed Lipschitz steps,
+// skim steps near the surface and the bisection are the reference's, step for step.
+bool march_droplets(vec3 o, vec3 d, float tmin, float tmax, bool inside, out float t_hit, out vec3 n) {
+  t_hit = INF;
+  n = vec3(0.0);
+  vec3 inv = 1.0 / d;
+  vec3 ta = (frame.droplet_bound_lo - o) * inv, tb = (frame.droplet_bound_hi - o) * inv;
+  vec3 lo = min(ta, tb), hi = max(ta, tb);
+  float t0 = max(max(lo.x, lo.y), max(lo.z, tmin)), t1 = min(min(hi.x, hi.y), min(hi.z, tmax));
+  if (!(t0 <= t1)) return false;
+  float L = frame.droplet_lipschitz, sgn = inside ? -1.0 : 1.0;
+  float t = t0, v = sgn * droplet_value(o + t * d);
+  bool found = v < 0.0;
+  float a = t, b = t;
+  for (int i = 0; i < DROPLET_MAX_STEPS; ++i) {
+    if (found) break;
+    float r = v / L;
+    bool skim = v < DROPLET_HIT_EPS;
+    float next = skim ? t + DROPLET_SKIM : t + DROPLET_RELAX * r;
+    float vn = sgn * droplet_value(o + next * d);
+    if (!skim && (vn < 0.0 || r + abs(vn) / L < next - t)) {
+      next = t + r;
+      vn = sgn * droplet_value(o + next * d);
+    }
+    if (next > t1) return false;
+    if (vn < 0.0) {
+      found = true;
+      a = t;
+      b = next;
+      for (int k = 0; k < DROPLET_BISECTIONS; ++k) {
+        float m = 0.5 * (a + b);
+        if (sgn * droplet_value(o + m * d) < 0.0) b = m;
+        else a = m;
+      }
+    }
+    t = next;
+    v = vn;
+  }
+  if (!found) return false;
+  t_hit = 0.5 * (a + b);
+  n = normalize(droplet_field(o + t_hit * d).yzw);
+  return true;
+}
+
+#endif  // LIB_DROPLETS_FIELD_GLSL

@@ -1,0 +1,118 @@
+#include "core/droplets/droplets.hpp"
+
+#include "core/params/json_input.hpp"
+#include "core/text/echo.hpp"
+#include "core/io/files.hpp"
+#include "core/params/params.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <sstream>
+
+namespace draught {
+
+const std::vector<DropletParamInfo>& droplet_param_table() {
+  static const std::vector<DropletParamInfo> table = {
+      {"count", 1, kMaxDroplets, "", "spheres in the trail"},
+      {"radius", 0.001, 0.2, "m", "radius of the head sphere"},
+      {"taper", 0, 0.95, "", "the tail's radius is radius x (1 - taper), linearly along the trail"},
+      {"blend", 0, 0.2, "m", "blend width of the smooth minimum (0: a plain union)"},
+      {"kernel", 0, 1, "", "\"polynomial\" (local, the default) or \"exponential\""},
+      {"noise_amplitude", 0, 0.02, "m", "displacement of the surface by value noise"},
+      {"noise_frequency", 0, 1000, "1/m", "frequency of the noise"},
+      {"ior", 1, 2.5, "", "index of refraction (water 1.33)"},
+      {"roughness", 0, 1, "", "GGX roughness of the surface"},
+      {"absorption", 0, 1000, "1/m", "Beer-Lambert absorption per metre, [r, g, b]"},
+      {"stiffness", 10, 5000, "1/s^2", "each sphere's spring to the one before it (the head's to the pointer)"},
+      {"damping", 0, 200, "1/s", "damping of the springs"},
+  };
+  return table;
+}
+
+namespace {
+std::string range_text(const DropletParamInfo& p) {
+  std::ostringstream s;
+  s << "[" << p.min << ", " << p.max << "]";
+  if (*p.unit) s << " (" << p.unit << ")";
+  return s.str();
+}
+}  // namespace
+
+DropletParams parse_droplet_params(const nlohmann::json& j, const std::string& file, const std::string& at) {
+  if (!j.is_object())
+    throw InputError(file + ": field '" + at + "': expected an object of droplet parameters, got " + short_dump(j));
+  DropletParams p;
+  std::vector<std::string> names;
+  for (const auto& info : droplet_param_table()) names.emplace_back(info.name);
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    const std::string key = it.key(), field = file + ": field '" + at + "." + key + "': ";
+    const DropletParamInfo* info = nullptr;
+    for (const auto& i : droplet_param_table())
+      if (key == i.name) info = &i;
+    if (!info) {
+      const std::string near = nearest_choice(key, names);
+      throw InputError(field + "unknown droplet parameter" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+    }
+    const nlohmann::json& v = it.value();
+    auto number = [&](const nlohmann::json& x) {
+      if (!x.is_number() || !(x.get<double>() >= info->min && x.get<double>() <= info->max))
+        throw InputError(field + "expected a number in " + range_text(*info) + ", got " + short_dump(v));
+      return x.get<double>();
+    };
+    if (key == "kernel") {
+      if (!v.is_string() || (v.get<std::string>() != "polynomial" && v.get<std::string>() != "exponential"))
+        throw InputError(field + "expected \"polynomial\" or \"exponential\", got " + short_dump(v));
+      p.kernel = v.get<std::string>() == "exponential" ? 1 : 0;
+    } else if (key == "count") {
+      if (!v.is_number_integer() || v.get<std::int64_t>() < 1 || v.get<std::int64_t>() > kMaxDroplets)
+        throw InputError(field + "expected a whole number in [1, " + std::to_string(kMaxDroplets) + "], got " +
+                         short_dump(v));
+      p.count = int(v.get<std::int64_t>());
+    } else if (key == "absorption") {
+      if (!v.is_array() || v.size() != 3)
+        throw InputError(field + "expected [r, g, b], each in " + range_text(*info) + ", got " + short_dump(v));
+      for (int c = 0; c < 3; ++c) p.absorption[c] = float(number(v[size_t(c)]));
+    } else {
+      const float x = float(number(v));
+      if (key == "radius") p.radius = x;
+      else if (key == "taper") p.taper = x;
+      else if (key == "blend") p.blend = x;
+      else if (key == "noise_amplitude") p.noise_amplitude = x;
+      else if (key == "noise_frequency") p.noise_frequency = x;
+      else if (key == "ior") p.ior = x;
+      else if (key == "roughness") p.roughness = x;
+      else if (key == "stiffness") p.stiffness = x;
+      else if (key == "damping") p.damping = x;
+    }
+  }
+  return p;
+}
+
+nlohmann::json droplet_params_json(const DropletParams& p) {
+  return {{"count", p.count},
+          {"radius", p.radius},
+          {"taper", p.taper},
+          {"blend", p.blend},
+          {"kernel", p.kernel == 1 ? "exponential" : "polynomial"},
+          {"noise_amplitude", p.noise_amplitude},
+          {"noise_frequency", p.noise_frequency},
+          {"ior", p.ior},
+          {"roughness", p.roughness},
+          {"absorption", {p.absorption.x, p.absorption.y, p.absorption.z}},
+          {"stiffness", p.stiffness},
+          {"damping", p.damping}};
+}
+
+DropletField droplet_field_of(const DropletParams& p, std::vector<DropletSphere> spheres) {
+  DropletField f;
+  if (spheres.size() > size_t(kMaxDroplets)) spheres.resize(size_t(kMaxDroplets));
+  f.spheres = std::move(spheres);
+  f.kernel = p.kernel == 1 ? BlendKernel::Exponential : BlendKernel::Polynomial;
+  f.blend = p.blend;
+  f.noise_amplitude = p.noise_amplitude;
+  f.noise_frequency = p.noise_frequency;
+  return f;
+}
+
+}  // namespace draught
