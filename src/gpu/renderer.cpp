@@ -2,6 +2,7 @@
 
 #include "core/bubbles/bubble_view.hpp"
 #include "gpu/decal_textures.hpp"
+#include "gpu/matcap_texture.hpp"
 #include "gpu/program.hpp"
 #include "gpu/scene_data.hpp"
 #include "gpu/screen_texture.hpp"
@@ -70,14 +71,15 @@ void bind_interface(const Program& program, const std::string& what) {
   for (const contract::Sampler& s : {contract::kObjectSampler, contract::kKnotsSampler, contract::kFloorLightSampler,
                                        contract::kBackdropLightSampler, contract::kEnvImageSampler,
                                        contract::kDecalImagesSampler, contract::kDecalArcsSampler,
-                                       contract::kScreenSampler})
+                                       contract::kScreenSampler, contract::kMatCapSampler})
     if (GLint at = glGetUniformLocation(program.id(), s.name); at >= 0) glUniform1i(at, s.unit);
 }
 }  // namespace
 
 std::unique_ptr<Program> Renderer::build_program(int variant) const {
   ShaderSource vert = assemble_shader("passes/fullscreen.vert.glsl", shader_dir_);
-  ShaderSource frag = assemble_shader("passes/path.frag.glsl", shader_dir_);
+  const char* pass = variant & kMatCap ? "passes/matcap.frag.glsl" : "passes/path.frag.glsl";
+  ShaderSource frag = assemble_shader(pass, shader_dir_);
   if (variant & kWaves) frag = with_define(std::move(frag), "SURFACE_WAVES");
   if (variant & kFoam) frag = with_define(std::move(frag), "FOAM_HEAD");
   if (variant & kDebug) frag = with_define(std::move(frag), "DEBUG_VIEWS");
@@ -88,7 +90,7 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (const int held = variant >> kHeldShift)
     frag = with_define(std::move(frag), "HELD_OBJECTS", std::to_string(held));
   auto program = std::make_unique<Program>(vert, frag);
-  bind_interface(*program, "passes/path.frag.glsl");
+  bind_interface(*program, pass);
   return program;
 }
 
@@ -98,6 +100,7 @@ Renderer::Renderer(const std::filesystem::path& shader_dir) : shader_dir_(shader
   textures_ = std::make_unique<SceneTextures>();
   decals_ = std::make_unique<DecalTextures>();
   screen_ = std::make_unique<ScreenTexture>();
+  matcap_ = std::make_unique<MatCapTexture>();
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &ubo_);
   glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
@@ -116,13 +119,21 @@ void Renderer::set_floor_light(const FloorLightSettings& s, bool on, int draft_p
 }
 
 void Renderer::draw(const FrameState& f, int width, int height, DebugView debug, int event) {
+  // The MatCap tier draws the picture with its own pass (and the thickness view is its);
+  // the other debug views are the path pass's.
+  const bool matcap = debug == DebugView::Thickness ||
+                      (debug == DebugView::None && f.params.render.tier == int(RenderTier::MatCap));
+  if (matcap) matcap_->update(f);  // a bake or a read only when its inputs change
   textures_->update(f);  // only rows that changed; the floor's light when its inputs did
   const bool decals = decals_->update(f);  // the images when they change, arc rows when a glass does
   screen_->update(f.screen);  // only when another frame comes, into the texture not drawn from
   screen_->bind();
   textures_->bind();  // (after the updates, which bind what they upload to the active unit)
   if (decals) decals_->bind();
+  if (matcap) matcap_->bind();
   contract::FrameBlock block = pack_frame_block(f, width, height, debug, event);
+  block.matcap_max_lod = matcap_->max_lod();
+  block.matcap_frost_lod = f.params.matcap.frost * std::max(matcap_->max_lod() - 3.0f, 0.0f);
   textures_->describe_floor_light(block);
   textures_->describe_backdrop_light(block);
   pack_screen(f, width, height, block);
@@ -141,16 +152,19 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   }
   const int objects = int(f.vessels.size());
   const int held = held_objects_ && objects >= 1 && objects <= kMaxHeldObjects ? objects : 0;
-  const int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0) | (debug != DebugView::None ? kDebug : 0) |
+  int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0) | (debug != DebugView::None ? kDebug : 0) |
                       (f.environment.image ? kImage : 0) | (decals ? kDecals : 0) | (held << kHeldShift) |
                       (f.screen.mode == ScreenMode::Card ? kScreenCard : 0) |
                       (f.screen.mode == ScreenMode::Background ? kScreenBackground : 0);
+  // The MatCap pass marches nothing: waves (its surface is the plane) and heads (a layer)
+  // need no variant of it.
+  if (matcap) variant = (variant & ~(kWaves | kFoam)) | kMatCap;
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
   glUseProgram(program->id());
   glBindVertexArray(vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  if (debug == DebugView::None) draw_bubbles(f, width, height);
+  if (debug == DebugView::None && !matcap) draw_bubbles(f, width, height);  // the MatCap tier leaves them out
 }
 
 void Renderer::draw_bubbles(const FrameState& f, int width, int height) {

@@ -17,6 +17,7 @@
 namespace draught::gpu {
 
 class DecalTextures;
+class MatCapTexture;
 class Program;
 class SceneTextures;
 class ScreenTexture;
@@ -75,6 +76,8 @@ class Renderer {
   // The screen's picture (gpu/screen_texture): uploaded from the frame's screen, or
   // streamed into by the app (the web page's video and camera).
   ScreenTexture& screen_texture() { return *screen_; }
+  // The MatCap tier's lit sphere (render.tier matcap; gpu/matcap_texture).
+  const MatCapTexture& matcap_texture() const { return *matcap_; }
   // Scenes of up to kMaxHeldObjects objects are drawn with a shader variant that holds
   // every object's records per pixel (object loops resolved at compile time; the same
   // pictures, much faster on llvmpipe). Four: a tasting flight; every held object costs
@@ -93,7 +96,9 @@ class Renderer {
   // What the path pass is compiled with (software rasterizers pay for code even where a
   // uniform branch skips it, so frames get only the code they use): these bits, and the
   // number of held objects (0: the general path) from bit kHeldShift on.
-  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kScreenCard = 32, kScreenBackground = 64, kHeldShift = 7 };
+  // kMatCap: the MatCap tier's pass (passes/matcap.frag.glsl) instead of the path pass.
+  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kScreenCard = 32, kScreenBackground = 64, kHeldShift = 7,
+                 kMatCap = 1 << 12 };
   std::unique_ptr<Program> build_program(int variant) const;
 
   std::filesystem::path shader_dir_;
@@ -102,6 +107,7 @@ class Renderer {
   std::unique_ptr<SceneTextures> textures_;  // u_objects, u_knots, u_floor_light
   std::unique_ptr<DecalTextures> decals_;    // u_decal_images, u_decal_arcs
   std::unique_ptr<ScreenTexture> screen_;    // u_screen
+  std::unique_ptr<MatCapTexture> matcap_;    // u_matcap
   unsigned bubble_vao_ = 0, bubble_vbo_ = 0;
   unsigned vao_ = 0, ubo_ = 0;
   bool held_objects_ = true;
