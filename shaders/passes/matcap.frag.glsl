@@ -65,13 +65,14 @@ vec2 level_span(vec2 s, float h0, float dh, float lo, float hi) {
 }
 
 // The straight line p + t d (local, t >= 0) inside the cavity: the cylinder of the inner
-// radius at p's height, between the cavity floor and the rim.
-vec2 cavity_span(Vessel v, vec3 p, vec3 d) {
+// radius at p's height, between the cavity floor and `top` (the rim, or a head's dome
+// above it).
+vec2 cavity_span(Vessel v, vec3 p, vec3 d, float top) {
   float ri = inner_radius(v, clamp(p.y, v.shape.base, v.body.height));
   float t0, t1;
   if (ri <= 0.0 || !cylinder_roots(p, d, ri, t0, t1)) return vec2(0.0);
   vec2 s = vec2(max(t0, 0.0), t1);
-  return level_span(s, p.y, d.y, v.shape.base, v.body.height);
+  return level_span(s, p.y, d.y, v.shape.base, top);
 }
 
 // The drink along the straight line from p (local) in the order the view meets it: the
@@ -80,7 +81,9 @@ vec2 cavity_span(Vessel v, vec3 p, vec3 d) {
 // from the throughput.
 void drink_along(Vessel v, vec3 p, vec3 d, vec3 pw, inout vec3 radiance, inout vec3 thr) {
   if (v.body.has_liquid == 0) return;
-  vec2 cav = cavity_span(v, p, d);
+  ObjectFoam f = fetch_object_foam(v.row);
+  float head_top = v.shape.has_head != 0 ? f.thickness * (1.0 + max(f.dome, 0.0)) : 0.0;  // the dome's top
+  vec2 cav = cavity_span(v, p, d, max(v.body.height, v.liquid.plane_offset + head_top));
   if (cav.y <= cav.x) return;
   vec3 n = v.liquid.plane_normal;
   float h0 = dot(n, p) - v.liquid.plane_offset, dh = dot(n, d);
@@ -92,12 +95,15 @@ void drink_along(Vessel v, vec3 p, vec3 d, vec3 pw, inout vec3 radiance, inout v
   float opacity = 0.0;
   vec3 head_color = vec3(0.0);
   if (v.shape.has_head != 0) {
-    ObjectFoam f = fetch_object_foam(v.row);
-    head = level_span(cav, h0, dh, 0.0, f.thickness);
+    head = level_span(cav, h0, dh, 0.0, head_top);
     opacity = 1.0 - exp(-f.density * max(head.y - head.x, 0.0));
+    // The head's top lit as the floor's paper is, by the rig and the sky from above, with
+    // the reflectance of a deep head from its single-scattering albedo (the two-stream
+    // form with the similarity relation: back to about foam.color, which core derived it from).
     vec3 up = to_world_dir(v, n);
-    vec3 face = normalize(up - to_world_dir(v, d));  // between the top and the side facing the view
-    head_color = f.foam_color * (sky_light() + rig_irradiance_far(pw, face, frame.light_count) / PI);
+    vec3 s = sqrt(max(vec3(1.0) - f.foam_color, vec3(0.0)) / max(vec3(1.0) - f.foam_color * f.anisotropy, vec3(1e-6)));
+    vec3 reflectance = (vec3(1.0) - s) / (vec3(1.0) + s);
+    head_color = reflectance * (rig_irradiance(pw, up, frame.light_count) + sky_irradiance(up)) / PI;
   }
   if (opacity > 0.0 && head.x < liquid.x) {  // the head in front (seen from above or through its side)
     radiance += thr * opacity * head_color;

@@ -97,8 +97,8 @@ class Renderer {
   // uniform branch skips it, so frames get only the code they use): these bits, and the
   // number of held objects (0: the general path) from bit kHeldShift on.
   // kMatCap: the MatCap tier's pass (passes/matcap.frag.glsl) instead of the path pass.
-  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kScreenCard = 32, kScreenBackground = 64, kHeldShift = 7,
-                 kMatCap = 1 << 12 };
+  enum Variant { kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kScreenCard = 32, kScreenBackground = 64,
+                 kMatCap = 128, kHeldShift = 8 };
   std::unique_ptr<Program> build_program(int variant) const;
 
   std::filesystem::path shader_dir_;

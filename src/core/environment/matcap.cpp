@@ -124,7 +124,7 @@ std::shared_ptr<const MatCap> load_matcap_file(const std::string& name) {
   const std::string shown = shorten(name, kEchoPathBytes);
   if (name.empty()) throw InputError("expected a MatCap PNG file, got \"\"");
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(name, ec))
+  if (!std::filesystem::exists(name, ec))
     throw InputError(shown + ": no such file (expected a MatCap PNG image)");
   const auto written = std::filesystem::last_write_time(name, ec);
   const auto bytes = std::filesystem::file_size(name, ec);
