@@ -10,7 +10,8 @@
 //   the drink: absorption and haze over the straight line's length through the cavity
 //     below the liquid's plane, the head as a layer of its colour above it;
 //   decals: their image at the wall, lit cheaply;
-//   behind everything: the backdrop, the lights and the sky seen straight.
+//   behind everything: the backdrop, the lights and the sky seen straight (drawn once per
+//     view into u_matcap_background, MATCAP_CACHED, when float targets allow).
 #include "generated/constants.glsl"
 #include "generated/frame.glsl"
 #include "lib/common/math.glsl"
@@ -103,7 +104,7 @@ void drink_along(Vessel v, vec3 p, vec3 d, vec3 pw, inout vec3 radiance, inout v
     vec3 up = to_world_dir(v, n);
     vec3 s = sqrt(max(vec3(1.0) - f.foam_color, vec3(0.0)) / max(vec3(1.0) - f.foam_color * f.anisotropy, vec3(1e-6)));
     vec3 reflectance = (vec3(1.0) - s) / (vec3(1.0) + s);
-    head_color = reflectance * (rig_irradiance(pw, up, frame.light_count) + sky_irradiance(up)) / PI;
+    head_color = reflectance * (rig_irradiance_far(pw, up, frame.light_count) + sky_irradiance(up)) / PI;
   }
   if (opacity > 0.0 && head.x < liquid.x) {  // the head in front (seen from above or through its side)
     radiance += thr * opacity * head_color;
@@ -203,6 +204,11 @@ vec4 debug_thickness(vec3 eye, vec3 dir) {
 void main() {
   init_objects();
   vec3 dir = camera_dir(gl_FragCoord.xy);
+#ifdef MATCAP_BACKDROP
+  // The background alone, in linear light, for the pictures after it (u_matcap_background).
+  frag_color = vec4(seen_straight(frame.cam_eye, dir), 1.0);
+  return;
+#endif
 #if DEBUG_VIEWS
   frag_color = debug_thickness(frame.cam_eye, dir);
   return;
@@ -215,7 +221,11 @@ void main() {
     alpha = clamp(1.0 - m, 0.0, 1.0);
     radiance += (thr - vec3(m)) * sky_light();
   } else {
+#ifdef MATCAP_CACHED
+    radiance += thr * texelFetch(u_matcap_background, ivec2(gl_FragCoord.xy), 0).rgb;  // drawn once for this view
+#else
     radiance += thr * seen_straight(frame.cam_eye, dir);
+#endif
   }
   vec3 c = radiance * frame.exposure;
   c = frame.tonemap == 1 ? aces_filmic(c) : c;

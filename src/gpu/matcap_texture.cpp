@@ -4,6 +4,7 @@
 
 #include <GLES3/gl3.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace draught::gpu {
@@ -60,6 +61,58 @@ void MatCapTexture::update(const FrameState& f) {
 
 void MatCapTexture::bind() const {
   glActiveTexture(GL_TEXTURE0 + contract::kMatCapSampler.unit);
+  glBindTexture(GL_TEXTURE_2D, tex_);
+  glActiveTexture(GL_TEXTURE0);
+}
+
+MatCapBackground::~MatCapBackground() {
+  if (fbo_) glDeleteFramebuffers(1, &fbo_);
+  if (tex_) glDeleteTextures(1, &tex_);
+}
+
+bool MatCapBackground::ready(const void* key, size_t bytes, int width, int height) const {
+  return usable_ && width == width_ && height == height_ && key_.size() == bytes &&
+         std::equal(key_.begin(), key_.end(), static_cast<const unsigned char*>(key));
+}
+
+bool MatCapBackground::begin_drawing(int width, int height) {
+  if (!usable_) return false;
+  if (width != width_ || height != height_ || !fbo_) {
+    if (fbo_) glDeleteFramebuffers(1, &fbo_);
+    if (tex_) glDeleteTextures(1, &tex_);
+    glGenTextures(1, &tex_);
+    glActiveTexture(GL_TEXTURE0 + contract::kMatCapBackgroundSampler.unit);
+    glBindTexture(GL_TEXTURE_2D, tex_);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA16F, width, height);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glActiveTexture(GL_TEXTURE0);
+    glGenFramebuffers(1, &fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex_, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {  // no half-float targets
+      usable_ = false;
+      glDeleteFramebuffers(1, &fbo_);
+      glDeleteTextures(1, &tex_);
+      fbo_ = tex_ = 0;
+      return false;
+    }
+    width_ = width;
+    height_ = height;
+  }
+  key_.clear();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  return true;
+}
+
+void MatCapBackground::done(const void* key, size_t bytes) {
+  const auto* k = static_cast<const unsigned char*>(key);
+  key_.assign(k, k + bytes);
+  ++draws_;
+}
+
+void MatCapBackground::bind() const {
+  glActiveTexture(GL_TEXTURE0 + contract::kMatCapBackgroundSampler.unit);
   glBindTexture(GL_TEXTURE_2D, tex_);
   glActiveTexture(GL_TEXTURE0);
 }

@@ -8,6 +8,7 @@
 #include "core/scene/frame.hpp"
 
 #include <memory>
+#include <vector>
 
 namespace draught::gpu {
 
@@ -30,6 +31,37 @@ class MatCapTexture {
   unsigned tex_ = 0;
   int levels_ = 1, uploads_ = 0;
   std::shared_ptr<const MatCap> current_;
+};
+
+// What the MatCap tier sees behind the glasses, straight on: the backdrop, the lights and
+// the sky are the same for every pixel's line whether a glass stands in front or not, so
+// the pass draws them once into a picture of their own (u_matcap_background, unit 9,
+// RGBA16F) and reads it per pixel. Drawn again only when the frame's uniform block (the
+// camera, the picture's size, the surroundings, the screen) differs from the one it was
+// drawn with. Without float render targets it reports itself unusable and the pass
+// draws the background inline.
+class MatCapBackground {
+ public:
+  MatCapBackground() = default;
+  ~MatCapBackground();
+  MatCapBackground(const MatCapBackground&) = delete;
+  MatCapBackground& operator=(const MatCapBackground&) = delete;
+
+  // True when the picture of `key` (the frame block's bytes) at width x height is ready
+  // to be read; else the caller draws it into the bound target (begin_drawing) and calls
+  // done. False from ready() and begin_drawing() alike when float targets are refused.
+  bool ready(const void* key, size_t bytes, int width, int height) const;
+  bool begin_drawing(int width, int height);  // binds its framebuffer
+  void done(const void* key, size_t bytes);
+  void bind() const;
+  bool usable() const { return usable_; }
+  int draws() const { return draws_; }  // how many times it was drawn (tests)
+
+ private:
+  unsigned fbo_ = 0, tex_ = 0;
+  int width_ = 0, height_ = 0, draws_ = 0;
+  bool usable_ = true;
+  std::vector<unsigned char> key_;
 };
 
 }  // namespace draught::gpu

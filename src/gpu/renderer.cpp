@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 
 namespace draught::gpu {
@@ -71,7 +72,8 @@ void bind_interface(const Program& program, const std::string& what) {
   for (const contract::Sampler& s : {contract::kObjectSampler, contract::kKnotsSampler, contract::kFloorLightSampler,
                                        contract::kBackdropLightSampler, contract::kEnvImageSampler,
                                        contract::kDecalImagesSampler, contract::kDecalArcsSampler,
-                                       contract::kScreenSampler, contract::kMatCapSampler})
+                                       contract::kScreenSampler, contract::kMatCapSampler,
+                                       contract::kMatCapBackgroundSampler})
     if (GLint at = glGetUniformLocation(program.id(), s.name); at >= 0) glUniform1i(at, s.unit);
 }
 }  // namespace
@@ -87,6 +89,8 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kDecals) frag = with_define(std::move(frag), "DECALS");
   if (variant & (kScreenCard | kScreenBackground))  // 1: a card in the scene, 2: the background
     frag = with_define(std::move(frag), "SCREEN", variant & kScreenCard ? "1" : "2");
+  if (variant & kMatCapBackdrop) frag = with_define(std::move(frag), "MATCAP_BACKDROP");
+  if (variant & kMatCapCached) frag = with_define(std::move(frag), "MATCAP_CACHED");
   if (const int held = variant >> kHeldShift)
     frag = with_define(std::move(frag), "HELD_OBJECTS", std::to_string(held));
   auto program = std::make_unique<Program>(vert, frag);
@@ -101,6 +105,7 @@ Renderer::Renderer(const std::filesystem::path& shader_dir) : shader_dir_(shader
   decals_ = std::make_unique<DecalTextures>();
   screen_ = std::make_unique<ScreenTexture>();
   matcap_ = std::make_unique<MatCapTexture>();
+  matcap_background_ = std::make_unique<MatCapBackground>();
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &ubo_);
   glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
@@ -159,12 +164,54 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   // The MatCap pass marches nothing: waves (its surface is the plane) and heads (a layer)
   // need no variant of it.
   if (matcap) variant = (variant & ~(kWaves | kFoam)) | kMatCap;
+  if (matcap && debug == DebugView::None && matcap_background(f, block, width, height, variant)) variant |= kMatCapCached;
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
   glUseProgram(program->id());
   glBindVertexArray(vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   if (debug == DebugView::None && !matcap) draw_bubbles(f, width, height);  // the MatCap tier leaves them out
+}
+
+bool Renderer::matcap_background(const FrameState& f, const contract::FrameBlock& block, int width, int height,
+                                 int variant) {
+  // A transparent picture has no background; a screen's frames change without the block.
+  if (f.params.render.transparent || f.screen.mode != ScreenMode::Off || !matcap_background_->usable()) return false;
+  // What the background depends on: the block (camera, size, surroundings), the
+  // environment image, and where the glasses stand (their contact on the floor).
+  std::vector<unsigned char> key(sizeof block + sizeof(void*));
+  std::memcpy(key.data(), &block, sizeof block);
+  const void* image = f.environment.image.get();
+  std::memcpy(key.data() + sizeof block, &image, sizeof image);
+  for (int i = 0; i < int(f.vessels.size()); ++i) {
+    const contract::ObjectRecord r = pack_object(f, i);
+    const float part[] = {r.bound_base.x, r.bound_base.y, r.bound_base.z, r.bound_axis.x, r.bound_axis.y, r.bound_axis.z,
+                          r.bound_radius, r.bound_length, r.foot_radius, r.clip_world_normal.x, r.clip_world_normal.y,
+                          r.clip_world_normal.z, r.clip_world_offset};
+    const auto* b = reinterpret_cast<const unsigned char*>(part);
+    key.insert(key.end(), b, b + sizeof part);
+  }
+  if (matcap_background_->ready(key.data(), key.size(), width, height)) {
+    matcap_background_->bind();
+    return true;
+  }
+  GLint target = 0;
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
+  const bool drawn = matcap_background_->begin_drawing(width, height);
+  if (drawn) {
+    const int v = (variant & ~(kDecals | kMatCapCached)) | kMatCapBackdrop;
+    auto& program = programs_[v];
+    if (!program) program = build_program(v);
+    glUseProgram(program->id());
+    glBindVertexArray(vao_);
+    glViewport(0, 0, width, height);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    matcap_background_->done(key.data(), key.size());
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+  glViewport(0, 0, width, height);
+  if (drawn) matcap_background_->bind();
+  return drawn;
 }
 
 void Renderer::draw_bubbles(const FrameState& f, int width, int height) {

@@ -126,5 +126,20 @@ TEST(MatCapTier, AStillFrameBakesAndUploadsOnce) {
   EXPECT_EQ(g.renderer->matcap_texture().uploads(), uploads + 1);
 }
 
+TEST(MatCapTier, TheBackgroundIsDrawnOncePerView) {
+  Gpu& g = gpu_instance();
+  const FrameState f = matcap_tier(pint_front());
+  gpu::RenderTarget target(48, 48, false);
+  g.renderer->draw(f, 48, 48);
+  const int draws = g.renderer->matcap_background().draws();
+  g.renderer->draw(f, 48, 48);
+  g.renderer->draw(f, 48, 48);
+  EXPECT_EQ(g.renderer->matcap_background().draws(), draws);
+  FrameState moved = f;
+  moved.camera.eye.x += 0.01f;  // another view: drawn again
+  g.renderer->draw(moved, 48, 48);
+  EXPECT_EQ(g.renderer->matcap_background().draws(), draws + 1);
+}
+
 }  // namespace
 }  // namespace draught::test
