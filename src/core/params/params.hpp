@@ -214,12 +214,12 @@ enum class RenderTier { Full = 0, MatCap = 1 };
 // analytic profile, a Fresnel edge, refraction as an offset look-up, frost, a tint.
 struct MatCapParams {
   std::string file;             // a MatCap PNG; "": baked from the current environment
-  float edge_range = 0.15f;     // the Fresnel edge: n.v below which the edge begins
-  float edge_intensity = 2.5f;  // how fast the edge fades towards the middle
+  float edge_range = 0.1f;      // the Fresnel edge: n.v below which the edge begins
+  float edge_intensity = 4.0f;  // how fast the edge fades towards the middle
   float refraction = 0.4f;      // the look-up's offset where the glass is thickest (MatCap widths)
   float frost = 0.0f;           // 0 clear, 1 frosted (the MatCap's blurriest level)
   glm::vec3 tint{0.93f, 0.97f, 0.96f};  // the glass body's colour
-  float thickness = 0.012f;     // m of glass along the view that makes the mask 63 % opaque
+  float thickness = 0.02f;      // m of glass along the view that makes the mask 63 % opaque
 };
 
 struct RenderParams {
