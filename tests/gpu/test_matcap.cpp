@@ -141,5 +141,22 @@ TEST(MatCapTier, TheBackgroundIsDrawnOncePerView) {
   EXPECT_EQ(g.renderer->matcap_background().draws(), draws + 1);
 }
 
+// Every matcap.* number at its minimum and its maximum: a picture with no black hole (a NaN
+// shows as black). (matcap.tint black is a black glass body, rightly.)
+TEST(MatCapTier, ExtremeParametersDrawAPicture) {
+  Gpu& g = gpu_instance();
+  for (const ParamDesc& d : param_table()) {
+    if (!d.path.starts_with("matcap.") || d.type != ParamType::Float) continue;
+    for (float v : {d.min, d.max}) {
+      FrameState f = matcap_tier(pint_front());
+      set_param(f.params, d, ParamValue(v));
+      const Image img = g.renderer->render(f, 48, 48);
+      long black = 0;
+      for (size_t i = 0; i < img.rgba.size(); i += 4) black += img.rgba[i] + img.rgba[i + 1] + img.rgba[i + 2] == 0;
+      EXPECT_EQ(black, 0) << d.path << " = " << v;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace draught::test
