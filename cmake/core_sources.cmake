@@ -17,6 +17,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/vessel/fill_table.cpp
   src/core/vessel/decal.cpp
   src/core/vessel/decal_files.cpp
+  src/core/vessel/view_thickness.cpp
   src/core/liquid/beverage.cpp
   src/core/liquid/slosh.cpp
   src/core/foam/foam.cpp
@@ -33,6 +34,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/environment/environment_sampling.cpp
   src/core/environment/environment_bake.cpp
   src/core/environment/screen.cpp
+  src/core/environment/matcap.cpp
   src/core/bubbles/bubbles.cpp
   src/core/bubbles/bubble_view.cpp
   src/core/reference/intersect.cpp

@@ -200,6 +200,33 @@ void bench_screen_decode(int frames) {
               *std::min_element(ms.begin(), ms.end()), *std::max_element(ms.begin(), ms.end()));
 }
 
+// The default pint in the full tier and in the MatCap tier (docs/MATCAP.md), timed
+// interleaved frame by frame in one run, so a busy machine slows both alike. The MatCap
+// tier draws its background once per view: a still camera (the steady state), and a
+// camera that moves every frame (two views in turn: the background drawn every frame).
+void bench_tiers(gpu::Renderer& renderer, const std::vector<int>& sizes, int frames) {
+  FrameState full = make_frame(resolve_scene({"lager", "pint", {}, {}}));
+  full.params.render.supersample = 1;
+  FrameState matcap = full;
+  matcap.params.render.tier = int(RenderTier::MatCap);
+  FrameState moved = matcap;
+  moved.camera.eye.x += 0.002f;
+  renderer.set_held_objects(true);
+  for (int size : sizes) {
+    const std::vector<double> still = interleaved_medians(renderer, {full, matcap}, size, frames);
+    const std::vector<double> moving = interleaved_medians(renderer, {full, matcap, moved}, size, frames);
+    const double moving_ms = 0.5 * (moving[1] + moving[2]);
+    char sz[32];
+    std::snprintf(sz, sizeof sz, "%dx%d", size, size);
+    std::printf("%-26s %-9s %10.2f %10s %10s %8.1f\n", "pint-lager-tier-full", sz, still[0], "", "", 1000.0 / still[0]);
+    std::printf("%-26s %-9s %10.2f %10s %10s %8.1f  (full / matcap: %.1fx)\n", "pint-lager-tier-matcap", sz, still[1], "",
+                "", 1000.0 / still[1], still[0] / still[1]);
+    std::printf("%-26s %-9s %10.2f %10s %10s %8.1f  (full / matcap: %.1fx; full this run: %.2f ms)\n",
+                "  matcap, camera moving", sz, moving_ms, "", "", 1000.0 / moving_ms, moving[0] / moving_ms, moving[0]);
+    std::fflush(stdout);
+  }
+}
+
 }  // namespace
 
 int bench(int frames, const std::vector<int>& sizes, const std::vector<std::string>& only, bool verbose) {
@@ -287,6 +314,7 @@ int bench(int frames, const std::vector<int>& sizes, const std::vector<std::stri
     }
   }
   auto wanted = [&](const char* name) { return only.empty() || std::find(only.begin(), only.end(), name) != only.end(); };
+  if (wanted("pint-lager-tiers")) bench_tiers(renderer, sizes, frames);
   if (wanted("screen-upload-720p")) bench_screen_upload(renderer, frames);
   if (wanted("screen-decode-720p")) bench_screen_decode(frames);
   return 0;

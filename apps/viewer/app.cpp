@@ -40,13 +40,17 @@ namespace {
 using gpu::DebugView;
 
 // Quality tiers for slow machines: a lower internal resolution (scaled up when shown)
-// and fewer surface interactions per path.
+// and fewer surface interactions per path; below them the MatCap tier (render.tier
+// matcap, docs/MATCAP.md), the low-cost glass at full resolution.
 struct Tier {
   const char* name;
   float scale;
   int max_events;
+  bool matcap = false;
 };
-constexpr Tier kTiers[] = {{"low", 0.5f, 6}, {"medium", 0.75f, 9}, {"high", 1.0f, 32}};
+constexpr Tier kTiers[] = {{"low", 0.5f, 6}, {"medium", 0.75f, 9}, {"high", 1.0f, 32}, {"MatCap", 1.0f, 32, true}};
+// Q steps down: high -> medium -> low -> MatCap -> high.
+constexpr int kNextTier[] = {3, 0, 1, 2};
 
 // Screenshot mode steps the clock by a fixed 1/30 s per frame, so the picture is the same
 // on a fast GPU and on llvmpipe.
@@ -300,7 +304,7 @@ void Viewer::key(const SDL_Keysym& k, bool repeat) {
       note_.clear();
       break;
     case SDLK_q:
-      tier_ = (tier_ + 2) % int(std::size(kTiers));  // high -> medium -> low -> high
+      tier_ = kNextTier[tier_];
       note_.clear();
       break;
     case SDLK_c: {  // the selected glass's cross-section on/off (undoable, like a panel edit)
@@ -485,6 +489,7 @@ void Viewer::draw_scene(int width, int height) {
   FrameState f = framed();
   const Tier& tier = kTiers[tier_];
   f.params.render.max_events = std::min(f.params.render.max_events, tier.max_events);
+  if (tier.matcap) f.params.render.tier = int(RenderTier::MatCap);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, width, height);
   glClearColor(0, 0, 0, 1);
@@ -567,8 +572,11 @@ void Viewer::draw_overlay(int width, int height) {
                          100.0 * v->spilled());
     if (view_ != 0) ImGui::Text("debug view: %s", kViewNames[view_]);
     const Tier& tier = kTiers[tier_];
-    ImGui::Text("quality %s (%.0f %% resolution, %d events)", tier.name, 100.0 * tier.scale,
-                std::min(editor_.scene().params.render.max_events, tier.max_events));
+    if (tier.matcap || editor_.scene().params.render.tier == int(RenderTier::MatCap))
+      ImGui::Text("quality: MatCap tier (the low-cost glass, %.0f %% resolution)", 100.0 * tier.scale);
+    else
+      ImGui::Text("quality %s (%.0f %% resolution, %d events)", tier.name, 100.0 * tier.scale,
+                  std::min(editor_.scene().params.render.max_events, tier.max_events));
     // The note's line is always there, so a note coming and going does not resize the overlay.
     const char* hint = show_panel_ ? "keys and mouse: in the panel" : "F1: the panel, keys";
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.75f, 0.75f, 1.0f));

@@ -15,7 +15,7 @@ struct ViewerOptions {
   std::string timeline;         // non-empty: play this timeline instead of interactive input
   bool preset_given = false, glass_given = false;  // flags win over the timeline's scene
   bool hide_panel = false;
-  int quality = 2;  // 0 low, 1 medium, 2 high
+  int quality = 2;  // 0 low, 1 medium, 2 high, 3 MatCap
 };
 
 // Returns the process exit code; throws InputError or std::runtime_error for main to report.

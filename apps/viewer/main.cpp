@@ -40,8 +40,9 @@ int main(int argc, char** argv) {
   app.add_option("-t,--timeline", o.timeline, "Play this timeline (a name or a JSON file) in a loop instead of "
                                               "interactive input");
   app.add_flag("--hide-panel", o.hide_panel, "Start with the panel hidden (F1 shows it)");
-  app.add_option("--quality", o.quality, "Quality tier: 0 low (50 % resolution), 1 medium (75 %), 2 high")
-      ->check(CLI::Range(0, 2));
+  app.add_option("--quality", o.quality,
+                 "Quality tier: 0 low (50 % resolution), 1 medium (75 %), 2 high, 3 the MatCap tier (docs/MATCAP.md)")
+      ->check(CLI::Range(0, 3));
   CLI11_PARSE(app, argc, argv);
   try {
     parse_size(size, o.width, o.height);

@@ -35,8 +35,10 @@ using namespace draught;
 using nlohmann::json;
 
 // Adaptive quality: the canvas's backing store is its CSS size x devicePixelRatio x scale
-// (the browser stretches it); when even the smallest scale misses the budget, the number
-// of surface interactions per pixel is capped too.
+// (the browser stretches it). When the budget cannot be held at 50 % resolution the page
+// falls to the MatCap tier (render.tier matcap, docs/MATCAP.md: about 5x cheaper) and
+// says so; when even the smallest scale misses the budget in the full tier (the fall
+// turned off), the number of surface interactions per pixel is capped too.
 struct Quality {
   bool adaptive = true;
   double scale = 1.0;
@@ -45,9 +47,18 @@ struct Quality {
   double shown_ms = 0;   // the same, never reset (for the page)
   int samples = 0;       // frames in ema_ms
   int events_cap = 0;    // 0: render.max_events as set
-  static constexpr double kMinScale = 0.3, kMaxScale = 1.0;
+  bool matcap_fallback = true;  // fall to the MatCap tier below kMatCapBelow
+  bool matcap = false;          // drawing the MatCap tier because of the budget
+  static constexpr double kMinScale = 0.3, kMaxScale = 1.0, kMatCapBelow = 0.5;
+  // The MatCap tier costs about a fifth of the full one (docs/PERFORMANCE.md): the full tier
+  // comes back when, by that, it would take under 60 % of the budget at kMatCapBelow.
+  static constexpr double kMatCapCostRatio = 5.0;
   static constexpr int kCapEvents = 6;
   static constexpr double kStartPixels = 5e5;
+
+  // What a full-tier frame at kMatCapBelow would take, from the MatCap tier's frames now
+  // (pixels cost scale^2).
+  double full_estimate_ms() const { return ema_ms * kMatCapCostRatio * (kMatCapBelow / scale) * (kMatCapBelow / scale); }
 
   // dt: milliseconds since the previous frame. Waits for a dozen frames after each change
   // (three when far too slow), so one slow frame (a shader compiled) does not move it.
@@ -59,18 +70,29 @@ struct Quality {
     if (++samples < (ema_ms > 3 * budget_ms ? 3 : 12)) return;
     const double before = scale;
     const int cap_before = events_cap;
+    const bool matcap_before = matcap;
+    // The full tier goes no lower than kMatCapBelow while it can fall to the MatCap tier.
+    const double lowest = matcap_fallback && !matcap ? kMatCapBelow : kMinScale;
     if (ema_ms > budget_ms * 1.15) {
-      if (scale > kMinScale + 1e-9) {  // pixels cost scale^2
+      if (scale > lowest + 1e-9) {  // pixels cost scale^2
         scale *= std::clamp(std::sqrt(budget_ms / ema_ms) * 0.97, 0.5, 0.95);
-        scale = std::max(kMinScale, std::round(scale * 20) / 20);
-      } else {
+        scale = std::max(lowest, std::round(scale * 20) / 20);
+      } else if (matcap_fallback && !matcap) {
+        if (samples < 12) return;  // a fall needs a dozen frames, not the three of "far too slow"
+        matcap = true;
+      } else if (!matcap) {
         events_cap = kCapEvents;
       }
     } else if (ema_ms < budget_ms * 0.6) {
       if (events_cap) events_cap = 0;
-      else scale = std::min(kMaxScale, std::round(scale * 1.12 * 20) / 20);
+      else if (matcap && full_estimate_ms() < budget_ms * 0.6) {  // the full tier would hold 50 % after all
+        matcap = false;
+        scale = kMatCapBelow;
+      } else {
+        scale = std::min(kMaxScale, std::round(scale * 1.12 * 20) / 20);
+      }
     }
-    if (scale != before || events_cap != cap_before) samples = 0;
+    if (scale != before || events_cap != cap_before || matcap != matcap_before) samples = 0;
     else samples = 6;  // keep watching, a little less eagerly
   }
 };
@@ -200,6 +222,7 @@ void frame() {
     if (f.screen.external) f.screen.set_external_size(app->screen_w, app->screen_h, f.params);  // the card takes its aspect
     if (app->quality.events_cap)
       f.params.render.max_events = std::min(f.params.render.max_events, app->quality.events_cap);
+    if (app->quality.matcap) f.params.render.tier = int(RenderTier::MatCap);
     emscripten_webgl_make_context_current(app->gl);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     app->renderer->draw(f, app->width, app->height);
@@ -359,6 +382,15 @@ EMSCRIPTEN_KEEPALIVE void draught_set_quality(double scale, double budget_ms) {
   q.samples = 0;
 }
 
+// on = 0: the adaptive quality never falls to the MatCap tier (the full tier only, as
+// before it; tests compare the two); 1: it does (the default).
+EMSCRIPTEN_KEEPALIVE void draught_set_matcap_fallback(int on) {
+  if (!app) return;
+  app->quality.matcap_fallback = on != 0;
+  if (!on) app->quality.matcap = false;
+  app->quality.samples = 0;
+}
+
 EMSCRIPTEN_KEEPALIVE int draught_frames() { return app ? int(app->frames) : 0; }
 
 EMSCRIPTEN_KEEPALIVE const char* draught_status() {
@@ -373,6 +405,8 @@ EMSCRIPTEN_KEEPALIVE const char* draught_status() {
             {"cpu_ms", app->cpu_ms},
             {"budget_ms", app->quality.budget_ms},
             {"events_cap", app->quality.events_cap},
+            {"tier", app->quality.matcap || app->scene.params.render.tier == int(RenderTier::MatCap) ? "matcap" : "full"},
+            {"matcap_fallback", app->quality.matcap},
             {"width", app->width},
             {"height", app->height},
             {"input", app->rig.driver ? app->rig.driver->name() : ""},

@@ -6,7 +6,8 @@
 //
 // URL options: ?size=WxH pins the canvas's CSS size; ?scale=S pins the render scale (else it
 // adapts to ?budget=MS per frame, default 33); ?preserve keeps the drawing buffer (tests read
-// pixels back).
+// pixels back); ?nomatcap keeps the full tier when the budget cannot be held at 50 % (else the
+// page falls to the MatCap tier, docs/MATCAP.md, and says so).
 'use strict';
 (() => {
   const $ = (id) => document.getElementById(id);
@@ -123,6 +124,7 @@
       start: fn('draught_start', 'string', ['string', 'number', 'number']),
       resize: fn('draught_resize', null, ['number', 'number', 'number']),
       quality: fn('draught_set_quality', null, ['number', 'number']),
+      matcapFallback: fn('draught_set_matcap_fallback', null, ['number']),
       status: fn('draught_status', 'json'),
       presets: fn('draught_presets', 'json'),
       table: fn('draught_param_table', 'json'),
@@ -158,6 +160,7 @@
     }
     const budget = parseFloat(query.get('budget') || '0');
     if (budget > 0) api.quality(scale, budget);
+    if (query.has('nomatcap')) api.matcapFallback(0);
     watchSize();
     watchContext();
     buildPickers();
@@ -206,6 +209,9 @@
     let q = `quality ${Math.round(s.scale * 100)} %`;
     if (s.events_cap) q += ` (${s.events_cap} events)`;
     if (!s.adaptive) q += ' (fixed)';
+    // The fall to the low-cost glass (docs/MATCAP.md), said where the quality is.
+    if (s.matcap_fallback) q += ' · MatCap tier: the frame budget could not be held at 50 % resolution';
+    else if (s.tier === 'matcap') q += ' · MatCap tier';
     $('quality').textContent = `${q} · ${s.width}×${s.height} · ${shown.toFixed(shown < 10 ? 1 : 0)} fps`;
     $('input').textContent = 'input: ' + s.input;
     followModuleVideo(s.screen_file || '');

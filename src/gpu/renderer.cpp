@@ -2,6 +2,7 @@
 
 #include "core/bubbles/bubble_view.hpp"
 #include "gpu/decal_textures.hpp"
+#include "gpu/matcap_texture.hpp"
 #include "gpu/program.hpp"
 #include "gpu/scene_data.hpp"
 #include "gpu/screen_texture.hpp"
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 
 namespace draught::gpu {
@@ -70,14 +72,16 @@ void bind_interface(const Program& program, const std::string& what) {
   for (const contract::Sampler& s : {contract::kObjectSampler, contract::kKnotsSampler, contract::kFloorLightSampler,
                                        contract::kBackdropLightSampler, contract::kEnvImageSampler,
                                        contract::kDecalImagesSampler, contract::kDecalArcsSampler,
-                                       contract::kScreenSampler})
+                                       contract::kScreenSampler, contract::kMatCapSampler,
+                                       contract::kMatCapBackgroundSampler})
     if (GLint at = glGetUniformLocation(program.id(), s.name); at >= 0) glUniform1i(at, s.unit);
 }
 }  // namespace
 
 std::unique_ptr<Program> Renderer::build_program(int variant) const {
   ShaderSource vert = assemble_shader("passes/fullscreen.vert.glsl", shader_dir_);
-  ShaderSource frag = assemble_shader("passes/path.frag.glsl", shader_dir_);
+  const char* pass = variant & kMatCap ? "passes/matcap.frag.glsl" : "passes/path.frag.glsl";
+  ShaderSource frag = assemble_shader(pass, shader_dir_);
   if (variant & kWaves) frag = with_define(std::move(frag), "SURFACE_WAVES");
   if (variant & kFoam) frag = with_define(std::move(frag), "FOAM_HEAD");
   if (variant & kDebug) frag = with_define(std::move(frag), "DEBUG_VIEWS");
@@ -88,10 +92,12 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
     frag = with_define(std::move(frag), "SCREEN", variant & kScreenCard ? "1" : "2");
   if (variant & kSphereLights) frag = with_define(std::move(frag), "SPHERE_LIGHTS");
   if (variant & kPaintedSky) frag = with_define(std::move(frag), "PAINTED_SKY");
+  if (variant & kMatCapBackdrop) frag = with_define(std::move(frag), "MATCAP_BACKDROP");
+  if (variant & kMatCapCached) frag = with_define(std::move(frag), "MATCAP_CACHED");
   if (const int held = variant >> kHeldShift)
     frag = with_define(std::move(frag), "HELD_OBJECTS", std::to_string(held));
   auto program = std::make_unique<Program>(vert, frag);
-  bind_interface(*program, "passes/path.frag.glsl");
+  bind_interface(*program, pass);
   return program;
 }
 
@@ -101,6 +107,8 @@ Renderer::Renderer(const std::filesystem::path& shader_dir) : shader_dir_(shader
   textures_ = std::make_unique<SceneTextures>();
   decals_ = std::make_unique<DecalTextures>();
   screen_ = std::make_unique<ScreenTexture>();
+  matcap_ = std::make_unique<MatCapTexture>();
+  matcap_background_ = std::make_unique<MatCapBackground>();
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &ubo_);
   glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
@@ -119,13 +127,21 @@ void Renderer::set_floor_light(const FloorLightSettings& s, bool on, int draft_p
 }
 
 void Renderer::draw(const FrameState& f, int width, int height, DebugView debug, int event) {
+  // The MatCap tier draws the picture with its own pass (and the thickness view is its);
+  // the other debug views are the path pass's.
+  const bool matcap = debug == DebugView::Thickness ||
+                      (debug == DebugView::None && f.params.render.tier == int(RenderTier::MatCap));
+  if (matcap) matcap_->update(f);  // a bake or a read only when its inputs change
   textures_->update(f);  // only rows that changed; the floor's light when its inputs did
   const bool decals = decals_->update(f);  // the images when they change, arc rows when a glass does
   screen_->update(f.screen);  // only when another frame comes, into the texture not drawn from
   screen_->bind();
   textures_->bind();  // (after the updates, which bind what they upload to the active unit)
   if (decals) decals_->bind();
+  if (matcap) matcap_->bind();
   contract::FrameBlock block = pack_frame_block(f, width, height, debug, event);
+  block.matcap_max_lod = matcap_->max_lod();
+  block.matcap_frost_lod = f.params.matcap.frost * std::max(matcap_->max_lod() - 3.0f, 0.0f);
   textures_->describe_floor_light(block);
   textures_->describe_backdrop_light(block);
   pack_screen(f, width, height, block);
@@ -148,18 +164,63 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   const bool painted = block.env_mode == 0 && (block.strip_intensity != 0.0f || block.backdrop_glow != 0.0f);
   const int objects = int(f.vessels.size());
   const int held = held_objects_ && objects >= 1 && objects <= kMaxHeldObjects ? objects : 0;
-  const int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0) | (debug != DebugView::None ? kDebug : 0) |
+  int variant = (waves ? kWaves : 0) | (foam ? kFoam : 0) | (debug != DebugView::None ? kDebug : 0) |
                       (f.environment.image ? kImage : 0) | (decals ? kDecals : 0) | (held << kHeldShift) |
                       (f.screen.mode == ScreenMode::Card ? kScreenCard : 0) |
                       (f.screen.mode == ScreenMode::Background ? kScreenBackground : 0) |
                       (spheres ? kSphereLights : 0) | (painted ? kPaintedSky : 0) |
                       (!f.droplets.empty() && !f.droplets.front().field.spheres.empty() ? kDroplets : 0);
+  // The MatCap pass marches nothing: waves (its surface is the plane) and heads (a layer)
+  // need no variant of it; it draws no droplets.
+  if (matcap) variant = (variant & ~(kWaves | kFoam | kDroplets)) | kMatCap;
+  if (matcap && debug == DebugView::None && matcap_background(f, block, width, height, variant)) variant |= kMatCapCached;
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
   glUseProgram(program->id());
   glBindVertexArray(vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  if (debug == DebugView::None) draw_bubbles(f, width, height);
+  if (debug == DebugView::None && !matcap) draw_bubbles(f, width, height);  // the MatCap tier leaves them out
+}
+
+bool Renderer::matcap_background(const FrameState& f, const contract::FrameBlock& block, int width, int height,
+                                 int variant) {
+  // A transparent picture has no background; a screen's frames change without the block.
+  if (f.params.render.transparent || f.screen.mode != ScreenMode::Off || !matcap_background_->usable()) return false;
+  // What the background depends on: the block (camera, size, surroundings), the
+  // environment image, and where the glasses stand (their contact on the floor).
+  std::vector<unsigned char> key(sizeof block + sizeof(void*));
+  std::memcpy(key.data(), &block, sizeof block);
+  const void* image = f.environment.image.get();
+  std::memcpy(key.data() + sizeof block, &image, sizeof image);
+  for (int i = 0; i < int(f.vessels.size()); ++i) {
+    const contract::ObjectRecord r = pack_object(f, i);
+    const float part[] = {r.bound_base.x, r.bound_base.y, r.bound_base.z, r.bound_axis.x, r.bound_axis.y, r.bound_axis.z,
+                          r.bound_radius, r.bound_length, r.foot_radius, r.clip_world_normal.x, r.clip_world_normal.y,
+                          r.clip_world_normal.z, r.clip_world_offset};
+    const auto* b = reinterpret_cast<const unsigned char*>(part);
+    key.insert(key.end(), b, b + sizeof part);
+  }
+  if (matcap_background_->ready(key.data(), key.size(), width, height)) {
+    matcap_background_->bind();
+    return true;
+  }
+  GLint target = 0;
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
+  const bool drawn = matcap_background_->begin_drawing(width, height);
+  if (drawn) {
+    const int v = (variant & ~(kDecals | kMatCapCached)) | kMatCapBackdrop;
+    auto& program = programs_[v];
+    if (!program) program = build_program(v);
+    glUseProgram(program->id());
+    glBindVertexArray(vao_);
+    glViewport(0, 0, width, height);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    matcap_background_->done(key.data(), key.size());
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+  glViewport(0, 0, width, height);
+  if (drawn) matcap_background_->bind();
+  return drawn;
 }
 
 void Renderer::draw_bubbles(const FrameState& f, int width, int height) {

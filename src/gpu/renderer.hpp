@@ -8,6 +8,7 @@
 #include "core/scene/frame.hpp"
 #include "core/io/image.hpp"
 #include "generated/constants.hpp"
+#include "generated/frame.hpp"
 
 #include <filesystem>
 #include <map>
@@ -17,6 +18,8 @@
 namespace draught::gpu {
 
 class DecalTextures;
+class MatCapTexture;
+class MatCapBackground;
 class Program;
 class SceneTextures;
 class ScreenTexture;
@@ -75,6 +78,9 @@ class Renderer {
   // The screen's picture (gpu/screen_texture): uploaded from the frame's screen, or
   // streamed into by the app (the web page's video and camera).
   ScreenTexture& screen_texture() { return *screen_; }
+  // The MatCap tier's lit sphere and its background (render.tier matcap; gpu/matcap_texture).
+  const MatCapTexture& matcap_texture() const { return *matcap_; }
+  const MatCapBackground& matcap_background() const { return *matcap_background_; }
   // Scenes of up to kMaxHeldObjects objects are drawn with a shader variant that holds
   // every object's records per pixel (object loops resolved at compile time; the same
   // pictures, much faster on llvmpipe). Four: a tasting flight; every held object costs
@@ -93,10 +99,17 @@ class Renderer {
   // What the path pass is compiled with (software rasterizers pay for code even where a
   // uniform branch skips it, so frames get only the code they use): these bits, and the
   // number of held objects (0: the general path) from bit kHeldShift on.
+  // kMatCap: the MatCap tier's pass (passes/matcap.frag.glsl) instead of the path pass.
+  // kMatCapBackdrop: its background pass (what lies behind, into MatCapBackground);
+  // kMatCapCached: its picture pass reading that background.
   enum Variant {
     kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kScreenCard = 32, kScreenBackground = 64,
-    kSphereLights = 128, kPaintedSky = 256, kDroplets = 512, kHeldShift = 10
+    kSphereLights = 128, kPaintedSky = 256, kDroplets = 512, kMatCap = 1024, kMatCapBackdrop = 2048,
+    kMatCapCached = 4096, kHeldShift = 13
   };
+  // The MatCap tier's background, drawn when it is not the one of this frame; false when
+  // it cannot be kept (no float targets, a screen whose frames it does not follow).
+  bool matcap_background(const FrameState&, const contract::FrameBlock&, int width, int height, int variant);
   std::unique_ptr<Program> build_program(int variant) const;
 
   std::filesystem::path shader_dir_;
@@ -105,6 +118,8 @@ class Renderer {
   std::unique_ptr<SceneTextures> textures_;  // u_objects, u_knots, u_floor_light
   std::unique_ptr<DecalTextures> decals_;    // u_decal_images, u_decal_arcs
   std::unique_ptr<ScreenTexture> screen_;    // u_screen
+  std::unique_ptr<MatCapTexture> matcap_;    // u_matcap
+  std::unique_ptr<MatCapBackground> matcap_background_;  // u_matcap_background
   unsigned bubble_vao_ = 0, bubble_vbo_ = 0;
   unsigned vao_ = 0, ubo_ = 0;
   bool held_objects_ = true;

@@ -60,6 +60,11 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
   b.checker_size = p.env.checker_size;
   b.sky_top = p.env.sky_top;
   b.exposure = p.render.exposure;
+  b.matcap_tint = p.matcap.tint;
+  b.matcap_edge_range = p.matcap.edge_range;
+  b.matcap_edge_intensity = p.matcap.edge_intensity;
+  b.matcap_refraction = p.matcap.refraction;
+  b.matcap_thickness = p.matcap.thickness;
   b.sky_horizon = p.env.sky_horizon;
   b.tonemap = p.render.tonemap;
   b.ground = p.env.ground;

@@ -39,6 +39,11 @@ FrameState droplets_trail() {
   req.preset = tl.preset;
   return draught::timeline_frame(tl, resolve_scene_objects(req), 1.0);
 }
+FrameState matcap_flight() {  // the MatCap tier (docs/MATCAP.md)
+  FrameState f = make_frame(flight_scene(FlightView::StraightOn));
+  f.params.render.tier = int(RenderTier::MatCap);
+  return f;
+}
 
 struct Comparison {
   int max_abs = 0;
@@ -165,7 +170,14 @@ INSTANTIATE_TEST_SUITE_P(
         GoldenCase{"decal_pint_etched_cut",
                    {"lager", "pint", {"decal_outer.file=wordmark", "decal_outer.kind=etched", "decal_outer.width=0.07",
                                       "decal_outer.height=0.075", "decal_outer.angle=-25", "clip.enabled=true",
-                                      "clip.normal=1,0,0.4"}, {}}, 160, 160, 3, 0.002, 64}),
+                                      "clip.normal=1,0,0.4"}, {}}, 160, 160, 3, 0.002, 64},
+        // The MatCap tier (docs/MATCAP.md): the low-cost glass of a pint of lager, with a
+        // decal, and the flight.
+        GoldenCase{"matcap_pint_lager", {"lager", "pint", {"render.tier=matcap"}, {}}, 160, 160, 3, 0.002, 64},
+        GoldenCase{"matcap_pint_decal",
+                   {"lager", "pint", {"render.tier=matcap", "decal_outer.file=wordmark", "decal_outer.color=0.75,0.06,0.05",
+                                      "decal_outer.width=0.07", "decal_outer.height=0.075"}, {}}, 160, 160, 3, 0.002, 64},
+        GoldenCase{"matcap_flight", {}, 256, 128, 3, 0.002, 64, nullptr, 0, matcap_flight}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -293,6 +293,57 @@ test('adaptive quality lowers the render scale to hold the frame budget and says
   desk = null;
 });
 
+// An emulated phone (390 x 844 CSS px at DPR 3, touch): the adaptive quality settles at a
+// higher resolution scale when it may fall to the MatCap tier (docs/MATCAP.md) than when it
+// may not (?nomatcap), and says so. Settled: the scale and tier unchanged for 8 s and 30
+// frames (a decision waits a dozen frames).
+test('an emulated phone settles at a higher resolution scale with the MatCap tier', async () => {
+  const phone = { viewport: { width: 390, height: 844 }, deviceScaleFactor: 3, hasTouch: true, isMobile: true };
+  const settle = async (query) => {
+    const page = await openPage(env, { query, context: phone });
+    try {
+      let last = null, since = Date.now();
+      const t0 = Date.now();
+      while (Date.now() - t0 < 200000) {
+        const s = await status(page);
+        if (!last || s.scale !== last.scale || s.tier !== last.tier || s.events_cap !== last.events_cap) {
+          last = s;
+          since = Date.now();
+        } else if (Date.now() - since > 8000 && s.frames - last.frames >= 30) {
+          break;
+        }
+        await page.waitForTimeout(500);
+      }
+      const text = await page.evaluate(() => document.getElementById('quality').textContent);
+      await page.screenshot({ path: path.join(artifacts, `phone-${query.includes('nomatcap') ? 'full' : 'matcap'}.png`) });
+      return { ...last, text, settled_s: (since - t0) / 1000 };
+    } finally {
+      await page.context().close();
+    }
+  };
+  // The budget from this machine's speed (shared, its load changes): two and a half MatCap
+  // frames at the lowest scale, so the MatCap tier can rise above it and the full tier
+  // (about 5x the cost) cannot.
+  const probe = await openPage(env, { query: 'scale=0.3', context: phone });
+  let probeMs;
+  try {
+    assert.equal(await probe.evaluate(() => window.draught.setParam('render.tier', 'matcap')), '');
+    await waitFrames(probe, 20, 120000);
+    probeMs = (await status(probe)).frame_ms;
+  } finally {
+    await probe.context().close();
+  }
+  const budget = `budget=${Math.round(2.5 * probeMs)}`;
+  const full = await settle(`nomatcap&${budget}`);
+  const matcap = await settle(budget);
+  note(`${budget} (a MatCap frame at 30 %: ${probeMs.toFixed(0)} ms); full tier only: scale ${full.scale} (${full.width}x${full.height}, events cap ${full.events_cap}, ${full.frame_ms.toFixed(0)} ms/frame, settled after ${full.settled_s.toFixed(0)} s); ` +
+       `with the MatCap tier: scale ${matcap.scale} (${matcap.width}x${matcap.height}, tier ${matcap.tier}, ${matcap.frame_ms.toFixed(0)} ms/frame, settled after ${matcap.settled_s.toFixed(0)} s); "${matcap.text}"`);
+  assert.equal(full.tier, 'full');
+  assert.equal(matcap.tier, 'matcap');
+  assert.match(matcap.text, /MatCap tier: the frame budget could not be held at 50 % resolution/);
+  assert.ok(matcap.scale > full.scale, `MatCap ${matcap.scale} vs full ${full.scale}`);
+});
+
 test('deviceorientation tilts the liquid', async () => {
   const page = await openPage(env);
   try {

@@ -1,6 +1,7 @@
 #include "core/params/params.hpp"
 
 #include "core/environment/environment_files.hpp"
+#include "core/environment/matcap.hpp"
 #include "core/environment/screen.hpp"
 #include "core/vessel/decal_files.hpp"
 #include "core/io/files.hpp"
@@ -243,6 +244,10 @@ std::vector<ParamDesc> make_camera_and_render_rows() {
           "Normal of the cut, in the glass's frame: the side it points to is removed"),
       ROW(VesselParams, clip, offset, Float, -0.3f, 0.3f, "m", "Where the cut lies along its normal, from the glass's axis"),
       // output
+      ROW(SceneParams, render, tier, Enum, 0, 0, "",
+          "full: the path pass (refraction, absorption, foam marched per pixel); matcap: the low-cost glass for "
+          "weak devices, the outer wall lit by a MatCap with a thickness mask (docs/MATCAP.md)",
+          (std::vector<std::string>{"full", "matcap"})),
       ROW(SceneParams, render, tonemap, Enum, 0, 0, "",
           "none: clamp then sRGB; aces: filmic tone map then sRGB", (std::vector<std::string>{"none", "aces"})),
       ROW(SceneParams, render, exposure, Float, 0.01f, 100.0f, "", "Linear exposure multiplier before tone mapping"),
@@ -250,6 +255,22 @@ std::vector<ParamDesc> make_camera_and_render_rows() {
           "Transparent background, premultiplied alpha (the floor is left out)"),
       ROW(SceneParams, render, supersample, Int, 1.0f, 4.0f, "", "Supersampling factor per axis (anti-aliasing)"),
       ROW(SceneParams, render, max_events, Int, 2.0f, 32.0f, "", "Most surface interactions followed per pixel"),
+      // the MatCap tier
+      with_file_check(ROW(SceneParams, matcap, file, File, 0, 0, "",
+                          "render.tier matcap: a MatCap PNG (a lit sphere seen straight on, at most 4096 x 4096); "
+                          "\"\": baked from the current environment and lights"),
+                      &check_matcap_image),
+      ROW(SceneParams, matcap, edge_range, Float, -1.0f, 1.0f, "",
+          "render.tier matcap: the Fresnel edge begins where the surface turns this far from the view (n.v below it)"),
+      ROW(SceneParams, matcap, edge_intensity, Float, 0.0f, 10.0f, "",
+          "render.tier matcap: how sharply the Fresnel edge fades towards the glass's middle"),
+      ROW(SceneParams, matcap, refraction, Float, 0.0f, 1.0f, "",
+          "render.tier matcap: the refraction's look-up offset where the glass is thickest, in MatCap widths"),
+      ROW(SceneParams, matcap, frost, Float, 0.0f, 1.0f, "",
+          "render.tier matcap: 0 clear glass, 1 frosted (the MatCap blurred to its coarsest level)"),
+      ROW(SceneParams, matcap, tint, Color, 0.0f, 1.0f, "", "render.tier matcap: the colour of the glass body"),
+      ROW(SceneParams, matcap, thickness, Float, 0.0005f, 0.1f, "m",
+          "render.tier matcap: glass along the view that makes the refraction mask 63 % opaque"),
   };
 }
 #undef ROW

@@ -205,7 +205,25 @@ struct DecalParams {
   float roughness = 0.3f;  // a metallic decal's: 0 a mirror, more a satin metal
 };
 
+// Which pass draws the picture: the full path pass, or the low-cost MatCap glass
+// (docs/MATCAP.md) for weak devices.
+enum class RenderTier { Full = 0, MatCap = 1 };
+
+// The MatCap tier's glass (docs/MATCAP.md, shaders/passes/matcap.frag.glsl): the outer
+// wall lit by a MatCap (baked from the environment, or a PNG), a thickness mask from the
+// analytic profile, a Fresnel edge, refraction as an offset look-up, frost, a tint.
+struct MatCapParams {
+  std::string file;             // a MatCap PNG; "": baked from the current environment
+  float edge_range = 0.1f;      // the Fresnel edge: n.v below which the edge begins
+  float edge_intensity = 4.0f;  // how fast the edge fades towards the middle
+  float refraction = 0.4f;      // the look-up's offset where the glass is thickest (MatCap widths)
+  float frost = 0.0f;           // 0 clear, 1 frosted (the MatCap's blurriest level)
+  glm::vec3 tint{0.93f, 0.97f, 0.96f};  // the glass body's colour
+  float thickness = 0.02f;      // m of glass along the view that makes the mask 63 % opaque
+};
+
 struct RenderParams {
+  int tier = int(RenderTier::Full);  // RenderTier
   int tonemap = int(Tonemap::Aces);  // Tonemap
   float exposure = 1.15f;
   bool transparent = false;
@@ -233,6 +251,7 @@ struct SceneParams {
   ScreenParams screen;
   CameraParams camera;
   RenderParams render;
+  MatCapParams matcap;
 };
 
 // One glass in its scene: what a single-glass preset describes and what `--set glass.ior`

@@ -3,6 +3,7 @@
 #include "core/params/param_row.hpp"
 #include "core/params/params.hpp"
 #include "core/params/preset.hpp"
+#include "core/vessel/decal_files.hpp"
 
 #include "test_common.hpp"
 
@@ -63,6 +64,7 @@ ParamValue other_value(const ParamDesc& d) {
     case ParamType::File:  // shipped: an environment, a decal, or the screen's clip
       if (d.path.starts_with("decal_")) return std::string(std::get<std::string>(d.def) == "crest" ? "wordmark" : "crest");
       if (d.path == "screen.source") return std::string("draught-loop");
+      if (d.path == "matcap.file") return resolve_decal("crest").string();  // any PNG's path
       return std::string(std::get<std::string>(d.def) == "bar" ? "studio" : "bar");
   }
   return 0.0f;
@@ -128,7 +130,7 @@ std::vector<ParamValue> out_of_range(const ParamDesc& d) {
 
 TEST(ParamTable, PathsAreUniqueAndGrouped) {
   std::set<std::string> seen;
-  const std::set<std::string> groups = {"glass", "liquid", "foam", "bubbles", "env", "light", "strips", "backlight", "screen", "camera", "clip", "decal_outer", "decal_inner", "render"};
+  const std::set<std::string> groups = {"glass", "liquid", "foam", "bubbles", "env", "light", "strips", "backlight", "screen", "camera", "clip", "decal_outer", "decal_inner", "render", "matcap"};
   for (const auto& d : param_table()) {
     EXPECT_TRUE(seen.insert(d.path).second) << "duplicate path " << d.path;
     const auto dot = d.path.find('.');
