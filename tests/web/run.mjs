@@ -834,13 +834,18 @@ test('the camera on the screen: its moving picture is seen through the drink', a
     await waitUploads(page, 5);
     await waitFrames(page, 2);
     const a = await snapshot(page);
-    await waitUploads(page, 4);
-    await waitFrames(page, 2);
-    const b = await snapshot(page);
+    // The clip holds some of its frames still, and a loaded machine may see a few camera
+    // frames repeated: up to five looks, four uploads apart, for the picture to move.
+    let moved = 0;
+    for (let look = 0; look < 5 && moved <= Math.max(1.0, 4 * still); ++look) {
+      await waitUploads(page, 4);
+      await waitFrames(page, 2);
+      moved = Math.max(moved, differenceAt(a, await snapshot(page), inDrink));
+    }
     const st = await status(page);
     assert.ok(st.screen_frames >= 9, `frames uploaded: ${st.screen_frames}`);
     assert.equal(st.screen_size, '320x180', 'the fake camera plays the test clip');
-    const moved = differenceAt(a, b, inDrink), versusPlain = differenceAt(plain, a, inDrink);
+    const versusPlain = differenceAt(plain, a, inDrink);
     note(`camera ${st.screen_size}: through the drink it moved ${moved.toFixed(2)} between frames (a still scene ${still.toFixed(2)}); differs ${versusPlain.toFixed(1)} from the studio`);
     assert.ok(versusPlain > 10, `the camera's picture is behind the drink: ${versusPlain.toFixed(1)}`);
     assert.ok(moved > Math.max(1.0, 4 * still), `the picture moves through the drink: ${moved.toFixed(2)} (still: ${still.toFixed(2)})`);

@@ -1,5 +1,7 @@
 #include "core/environment/reflection.hpp"
 
+#include "core/environment/sphere_grid.hpp"
+
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -34,36 +36,29 @@ void image_glint(const Studio& studio, EnvironmentFrame& f) {
 
 SkyIrradiance surround_irradiance(const Studio& studio, const SkyIrradiance& sky, const LightRig& rig,
                                   const BackdropSurface& backdrop, const glm::dvec3& at) {
-  constexpr double kPi = std::numbers::pi;
   if (!backdrop.present) return sky;
-  const double band[9] = {kPi, 2 * kPi / 3, 2 * kPi / 3, 2 * kPi / 3, kPi / 4, kPi / 4, kPi / 4, kPi / 4, kPi / 4};
-  constexpr int kTheta = 32, kPhi = 64;
-  const double dt = kPi / kTheta, dp = 2 * kPi / kPhi;
-  // Where each direction meets the backdrop, once: the point, its normal, what the rig
-  // gives it, and the sky the paper hides there.
+  // Where each direction of a 32 x 64 grid meets the backdrop, once: the point's normal,
+  // its albedo / pi, what the rig gives it, the sky the paper hides there (each times the
+  // cell's solid angle) and the harmonics, with the cosine's bands, of the direction.
   struct Patch {
     glm::dvec3 n, albedo, rig, hidden;
     std::array<double, 9> y;
   };
   std::vector<Patch> patches;
-  for (int i = 0; i < kTheta; ++i) {
-    const double theta = (i + 0.5) * dt, st = std::sin(theta), ct = std::cos(theta);
-    const double weight = (std::cos(i * dt) - std::cos((i + 1) * dt)) * dp;
-    for (int j = 0; j < kPhi; ++j) {
-      const double phi = (j + 0.5) * dp;
-      const glm::dvec3 d(st * std::cos(phi), ct, st * std::sin(phi));
-      double t;
-      glm::dvec3 n;
-      if (!backdrop.intersect(at, d, 0.0, t, n)) continue;
-      const glm::dvec3 p = at + t * d;
-      Patch patch{n, backdrop.albedo(p) / kPi * weight, rig.irradiance(p, n), studio.sky(d) * weight, SkyIrradiance::basis(d)};
-      for (int k = 0; k < 9; ++k) patch.y[size_t(k)] *= band[k];
-      patches.push_back(patch);
-    }
-  }
+  for_each_sphere_cell(32, 64, [&](const glm::dvec3& d, double weight) {
+    double t;
+    glm::dvec3 n;
+    if (!backdrop.intersect(at, d, 0.0, t, n)) return;
+    const glm::dvec3 p = at + t * d;
+    Patch patch{n, backdrop.albedo(p) / std::numbers::pi * weight, rig.irradiance(p, n), studio.sky(d) * weight,
+                SkyIrradiance::basis(d)};
+    for (int k = 0; k < 9; ++k) patch.y[size_t(k)] *= kCosineBand[size_t(k)];
+    patches.push_back(patch);
+  });
   // The paper is lit by the rig and by what is around it, the paper itself included: three
-  // rounds of its bounce (each about the paper's albedo times its share of the sphere of
-  // the last, under a tenth of a per cent left after the third for white paper).
+  // rounds of its bounce (each about the paper's albedo times its share of the sphere, some
+  // 0.4, of the last for the default sweep: what is left after the third is a few per cent
+  // of the bounce, itself a few per cent of the paper's light).
   SkyIrradiance s = sky;
   for (int round = 0; round < 3; ++round) {
     SkyIrradiance next = sky;

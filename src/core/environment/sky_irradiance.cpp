@@ -1,5 +1,7 @@
 #include "core/environment/sky_irradiance.hpp"
 
+#include "core/environment/sphere_grid.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -52,31 +54,20 @@ SkyIrradiance image_irradiance(const Studio& studio) {
 }  // namespace
 
 SkyIrradiance sky_irradiance(const Studio& studio) {
-  constexpr double kPi = std::numbers::pi;
-  const double band[9] = {kPi, 2 * kPi / 3, 2 * kPi / 3, 2 * kPi / 3, kPi / 4, kPi / 4, kPi / 4, kPi / 4, kPi / 4};
   if (studio.image) {
     SkyIrradiance s = image_irradiance(studio);
-    for (int k = 0; k < 9; ++k) s.coef[size_t(k)] *= band[k];
+    for (int k = 0; k < 9; ++k) s.coef[size_t(k)] *= kCosineBand[size_t(k)];
     return s;
   }
   // 64 x 128 cells: the painted strips (a few degrees wide) are resolved well enough for
   // irradiance, which only keeps their low frequencies.
-  constexpr int kTheta = 64, kPhi = 128;
   SkyIrradiance s;
-  const double dt = kPi / kTheta, dp = 2 * kPi / kPhi;
-  for (int i = 0; i < kTheta; ++i) {
-    const double theta = (i + 0.5) * dt, st = std::sin(theta), ct = std::cos(theta);
-    // The integral of sin(theta) over the cell, exact, so a constant sky projects exactly.
-    const double weight = (std::cos(i * dt) - std::cos((i + 1) * dt)) * dp;
-    for (int j = 0; j < kPhi; ++j) {
-      const double phi = (j + 0.5) * dp;
-      const glm::dvec3 d(st * std::cos(phi), ct, st * std::sin(phi));
-      const glm::dvec3 l = studio.sky(d) * weight;
-      const std::array<double, 9> y = SkyIrradiance::basis(d);
-      for (int k = 0; k < 9; ++k) s.coef[size_t(k)] += l * y[size_t(k)];
-    }
-  }
-  for (int k = 0; k < 9; ++k) s.coef[size_t(k)] *= band[k];
+  for_each_sphere_cell(64, 128, [&](const glm::dvec3& d, double weight) {
+    const glm::dvec3 l = studio.sky(d) * weight;
+    const std::array<double, 9> y = SkyIrradiance::basis(d);
+    for (int k = 0; k < 9; ++k) s.coef[size_t(k)] += l * y[size_t(k)];
+  });
+  for (int k = 0; k < 9; ++k) s.coef[size_t(k)] *= kCosineBand[size_t(k)];
   return s;
 }
 
