@@ -128,10 +128,11 @@ void play_timeline_in_scene(SceneSimulation& sim, TimelineDriver& driver, const 
                             double t) {
   sim.set_scene(timeline_scene(tl, base, t, sim.selected()));
   Simulation& driven = sim.selected_vessel();
-  if (sim.time() == 0 && tl.pours_in(0, 1e-9)) driven.pour();  // a pour at 0 shows in frame 0
+  if (sim.time() == 0)
+    if (auto d = tl.pours_in(0, 1e-9)) driven.pour_over(*d);  // a pour at 0 shows in frame 0
   while (sim.time() + Simulation::kStep <= t + 1e-9) {
     const double next = sim.time() + Simulation::kStep;
-    if (tl.pours_in(sim.time(), next)) driven.pour();
+    if (auto d = tl.pours_in(sim.time(), next)) driven.pour_over(*d);
     sim.step(driver.sample(next), tl.drink_rate_at(next));
   }
 }
@@ -286,7 +287,7 @@ void Viewer::key(const SDL_Keysym& k, bool repeat) {
     case SDLK_F1: show_panel_ = !show_panel_; break;
     case SDLK_r: restart(); note_ = timeline_ ? "timeline restarted" : "reset: upright, refilled"; break;
     case SDLK_p:
-      if (Simulation* v = selected_sim()) v->pour();
+      if (Simulation* v = selected_sim()) v->pour_over(kPourSeconds);
       note_ = "pour";
       break;
     case SDLK_TAB: select(cycle(editor_.selected(), int(editor_.scene().objects.size()), k.mod & KMOD_SHIFT ? -1 : 1)); break;

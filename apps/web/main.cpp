@@ -9,6 +9,7 @@
 #include "core/input/combined.hpp"
 #include "core/params/params.hpp"
 #include "core/params/preset.hpp"
+#include "core/params/timeline.hpp"
 #include "core/scene/scene.hpp"
 #include "core/sim/scene_simulation.hpp"
 #include "core/text/echo.hpp"
@@ -671,7 +672,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_export_preset(const char* name) {
 // Fills the selected glass again with a fresh head building.
 EMSCRIPTEN_KEEPALIVE void draught_pour() {
   if (app && app->sim)
-    if (Simulation* v = app->sim->vessel(app->scene.selected)) v->pour();
+    if (Simulation* v = app->sim->vessel(app->scene.selected)) v->pour_over(kPourSeconds);
 }
 
 // One of input_driver_names ("mouse", "touch+gyro", ...); "" or the error.

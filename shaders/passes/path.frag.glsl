@@ -34,8 +34,8 @@ out vec4 frag_color;
 // The one path of this pixel.
 struct Path {
   vec3 o, d;      // where it is and where it goes (world)
-  int medium;     // MEDIUM_AIR, MEDIUM_GLASS or MEDIUM_LIQUID
-  int obj;        // the object whose glass or drink it is in; -1 in the air
+  int medium;     // MEDIUM_AIR, MEDIUM_GLASS, MEDIUM_LIQUID, MEDIUM_DROPLET or MEDIUM_CLOUD
+  int obj;        // the object whose glass or drink it is in; -1 in the air; -2 - c in cloud c
   vec3 radiance;  // gathered so far
   vec3 thr;       // throughput: what still reaches the eye of what lies ahead
 };
@@ -252,6 +252,50 @@ void shade_droplet(inout Path path, Hit h, bool transparent, out Look look) {
 }
 #endif
 
+#if CLOUDS
+// ---- a point cloud's surface (lib/pointcloud): hot glass or a drink against the air ----
+
+// The crossing of cloud h's surface (h.obj = -2 - the cloud).
+Crossing cloud_crossing(Path path, Hit h) {
+  int k = -2 - h.obj;
+  float ior = frame.cloud_lo[k].w;
+  Crossing c;
+  bool inside = path.medium == MEDIUM_CLOUD;
+  c.next = inside ? MEDIUM_AIR : MEDIUM_CLOUD;
+  c.n = dot(h.n, path.d) < 0.0 ? h.n : -h.n;
+  c.n1 = inside ? ior : 1.0;
+  c.n2 = inside ? 1.0 : ior;
+  c.F = fresnel_dielectric(-dot(c.n, path.d), c.n1, c.n2);
+  return c;
+}
+
+// As shade_droplet for a blob of a point cloud: the body absorbs (Beer-Lambert) and, hot,
+// glows: the blackbody's light of the surface's temperature leaves through the surface
+// towards the path (the part Fresnel lets out). A point's colour tints the light that
+// crosses the surface there (coloured glass, a tinted drink).
+void shade_cloud(inout Path path, Hit h, bool transparent, out Look look) {
+  look = no_look();
+  int k = -2 - h.obj;
+  vec3 p = path.o + h.t * path.d;
+  bool inside = path.medium == MEDIUM_CLOUD;
+  vec3 chord = exp(-frame.cloud_absorption[k].rgb * h.t);
+  if (inside) path.thr *= chord;
+  Crossing c = cloud_crossing(path, h);
+  float kelvin = g_cloud_attrs.x > 0.0 ? g_cloud_attrs.x : frame.cloud_absorption[k].w;
+  float glow = frame.cloud_glow[k].x;
+  if (!inside && glow > 0.0) path.radiance += path.thr * (1.0 - c.F) * glow * blackbody_luminance(kelvin);
+  float rough = frame.cloud_hi[k].w;
+  if (c.F < 1.0) {
+    vec3 r = reflect(path.d, c.n);
+    if (inside) look = Look(p, r, path.thr * c.F * chord, rough, false, false);
+    else if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true);
+    path.thr *= 1.0 - c.F;
+    if (max3(g_cloud_attrs.yzw) > 0.0) path.thr *= g_cloud_attrs.yzw;
+  }
+  go_on(path, h, c, p);
+}
+#endif
+
 // ---- stage: trace the path ----
 
 // Follows the path from the camera through at most frame.max_events interfaces; whatever
@@ -321,6 +365,10 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
       } else {
 #if DROPLETS
         if (h.m == M_DROPLET) shade_droplet(path, h, transparent, look);
+        else
+#endif
+#if CLOUDS
+        if (h.m == M_CLOUD) shade_cloud(path, h, transparent, look);
         else
 #endif
         shade_interface(path, h, v, transparent, look);
@@ -393,6 +441,12 @@ vec4 debug_path_event(vec3 eye, vec3 dir, int n) {
     if (h.m == M_DROPLET) {
       go_on(path, h, droplet_crossing(path, h), p);
       path.obj = -1;
+      continue;
+    }
+#endif
+#if CLOUDS
+    if (h.m == M_CLOUD) {
+      go_on(path, h, cloud_crossing(path, h), p);
       continue;
     }
 #endif

@@ -3,6 +3,7 @@
 #include "core/bubbles/bubble_view.hpp"
 #include "gpu/decal_textures.hpp"
 #include "gpu/matcap_texture.hpp"
+#include "gpu/cloud_textures.hpp"
 #include "gpu/program.hpp"
 #include "gpu/scene_data.hpp"
 #include "gpu/screen_texture.hpp"
@@ -73,7 +74,8 @@ void bind_interface(const Program& program, const std::string& what) {
                                        contract::kBackdropLightSampler, contract::kEnvImageSampler,
                                        contract::kDecalImagesSampler, contract::kDecalArcsSampler,
                                        contract::kScreenSampler, contract::kMatCapSampler,
-                                       contract::kMatCapBackgroundSampler})
+                                       contract::kMatCapBackgroundSampler, contract::kCloudPointsSampler,
+                                       contract::kCloudAttrsSampler, contract::kCloudNodesSampler})
     if (GLint at = glGetUniformLocation(program.id(), s.name); at >= 0) glUniform1i(at, s.unit);
 }
 }  // namespace
@@ -88,6 +90,7 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kImage) frag = with_define(std::move(frag), "ENV_IMAGE");
   if (variant & kDecals) frag = with_define(std::move(frag), "DECALS");
   if (variant & kDroplets) frag = with_define(std::move(frag), "DROPLETS");
+  if (variant & kClouds) frag = with_define(std::move(frag), "CLOUDS");
   if (variant & (kScreenCard | kScreenBackground))  // 1: a card in the scene, 2: the background
     frag = with_define(std::move(frag), "SCREEN", variant & kScreenCard ? "1" : "2");
   if (variant & kSphereLights) frag = with_define(std::move(frag), "SPHERE_LIGHTS");
@@ -109,6 +112,7 @@ Renderer::Renderer(const std::filesystem::path& shader_dir) : shader_dir_(shader
   screen_ = std::make_unique<ScreenTexture>();
   matcap_ = std::make_unique<MatCapTexture>();
   matcap_background_ = std::make_unique<MatCapBackground>();
+  clouds_ = std::make_unique<CloudTextures>();
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &ubo_);
   glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
@@ -139,7 +143,13 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   textures_->bind();  // (after the updates, which bind what they upload to the active unit)
   if (decals) decals_->bind();
   if (matcap) matcap_->bind();
+  // The point clouds: trees kept, refit or rebuilt as their points change (core), the
+  // textures uploaded only then.
+  if (cloud_scene_.update(f.clouds)) clouds_->upload(cloud_scene_.texels());
+  const bool clouds = !f.clouds.empty() && !matcap;
+  if (clouds) clouds_->bind();
   contract::FrameBlock block = pack_frame_block(f, width, height, debug, event);
+  if (clouds) pack_clouds(f, cloud_scene_, block);
   block.matcap_max_lod = matcap_->max_lod();
   block.matcap_frost_lod = f.params.matcap.frost * std::max(matcap_->max_lod() - 3.0f, 0.0f);
   textures_->describe_floor_light(block);
@@ -169,10 +179,11 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
                       (f.screen.mode == ScreenMode::Card ? kScreenCard : 0) |
                       (f.screen.mode == ScreenMode::Background ? kScreenBackground : 0) |
                       (spheres ? kSphereLights : 0) | (painted ? kPaintedSky : 0) |
-                      (!f.droplets.empty() && !f.droplets.front().field.spheres.empty() ? kDroplets : 0);
+                      (!f.droplets.empty() && !f.droplets.front().field.spheres.empty() ? kDroplets : 0) |
+                      (clouds ? kClouds : 0);
   // The MatCap pass marches nothing: waves (its surface is the plane) and heads (a layer)
-  // need no variant of it; it draws no droplets.
-  if (matcap) variant = (variant & ~(kWaves | kFoam | kDroplets)) | kMatCap;
+  // need no variant of it; it draws no droplets and no point clouds.
+  if (matcap) variant = (variant & ~(kWaves | kFoam | kDroplets | kClouds)) | kMatCap;
   if (matcap && debug == DebugView::None && matcap_background(f, block, width, height, variant)) variant |= kMatCapCached;
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);

@@ -7,6 +7,7 @@
 #include "core/environment/floor_light.hpp"
 #include "core/scene/frame.hpp"
 #include "core/io/image.hpp"
+#include "core/pointcloud/cloud_scene.hpp"
 #include "generated/constants.hpp"
 #include "generated/frame.hpp"
 
@@ -18,6 +19,7 @@
 namespace draught::gpu {
 
 class DecalTextures;
+class CloudTextures;
 class MatCapTexture;
 class MatCapBackground;
 class Program;
@@ -105,7 +107,7 @@ class Renderer {
   enum Variant {
     kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kScreenCard = 32, kScreenBackground = 64,
     kSphereLights = 128, kPaintedSky = 256, kDroplets = 512, kMatCap = 1024, kMatCapBackdrop = 2048,
-    kMatCapCached = 4096, kHeldShift = 13
+    kMatCapCached = 4096, kHeldShift = 13, kClouds = 1 << 16  // (held objects: bits 13-15)
   };
   // The MatCap tier's background, drawn when it is not the one of this frame; false when
   // it cannot be kept (no float targets, a screen whose frames it does not follow).
@@ -120,6 +122,8 @@ class Renderer {
   std::unique_ptr<ScreenTexture> screen_;    // u_screen
   std::unique_ptr<MatCapTexture> matcap_;    // u_matcap
   std::unique_ptr<MatCapBackground> matcap_background_;  // u_matcap_background
+  CloudScene cloud_scene_;                   // the point clouds' trees and texel arrays
+  std::unique_ptr<CloudTextures> clouds_;    // u_cloud_points, u_cloud_attrs, u_cloud_nodes
   unsigned bubble_vao_ = 0, bubble_vbo_ = 0;
   unsigned vao_ = 0, ubo_ = 0;
   bool held_objects_ = true;

@@ -1,5 +1,7 @@
 #include "gpu/scene_data.hpp"
 
+#include "core/pointcloud/blackbody.hpp"
+
 #include "core/foam/head_volume.hpp"
 #include "core/scene/camera.hpp"
 #include "gpu/decal_textures.hpp"
@@ -109,6 +111,24 @@ namespace {
 // (the same test picks the FOAM_HEAD shader variant).
 bool has_head(const VesselFrame& v) { return v.has_liquid && v.foam.thickness > 1e-4; }
 }  // namespace
+
+void pack_clouds(const FrameState& f, const CloudScene& clouds, contract::FrameBlock& b) {
+  // The glow's table: the same for every frame (the shader interpolates it in 1/T).
+  static const std::vector<glm::vec4> table =
+      blackbody_table(contract::kBlackbodyEntries, contract::kBlackbodyMinK, contract::kBlackbodyMaxK);
+  for (int i = 0; i < contract::kBlackbodyEntries; ++i) b.blackbody[i] = table[size_t(i)];
+  const std::vector<CloudRange>& ranges = clouds.ranges();
+  b.cloud_count = int(std::min({f.clouds.size(), ranges.size(), size_t(contract::kMaxClouds)}));
+  for (int i = 0; i < b.cloud_count; ++i) {
+    const CloudFrame& c = f.clouds[size_t(i)];
+    const CloudRange& r = ranges[size_t(i)];
+    b.cloud_ref[i] = glm::vec4(float(r.root), c.threshold, r.min_support, float(c.material));
+    b.cloud_lo[i] = glm::vec4(r.lo, c.ior);
+    b.cloud_hi[i] = glm::vec4(r.hi, c.roughness);
+    b.cloud_absorption[i] = glm::vec4(c.absorption, c.temperature);
+    b.cloud_glow[i] = glm::vec4(float(c.glow * kGlowPerNit), 0.0f, 0.0f, 0.0f);
+  }
+}
 
 contract::ObjectRecord pack_object(const FrameState& f, int row) {
   const VesselFrame& vf = f.vessels[size_t(row)];

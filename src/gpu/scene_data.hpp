@@ -9,6 +9,7 @@
 
 #include "core/environment/backdrop_light.hpp"
 #include "core/environment/floor_light.hpp"
+#include "core/pointcloud/cloud_scene.hpp"
 #include "core/scene/frame.hpp"
 #include "generated/constants.hpp"
 #include "generated/frame.hpp"
@@ -27,6 +28,9 @@ using contract::DebugView;
 // The uniform block for a width x height target. debug_event: the event the PathEvent
 // view reports.
 contract::FrameBlock pack_frame_block(const FrameState&, int width, int height, DebugView, int debug_event = 0);
+// The point clouds' members of the block (cloud_*, blackbody): each cloud's place in the
+// texel arrays of `clouds` (brought up to the frame's clouds) and its material.
+void pack_clouds(const FrameState&, const CloudScene& clouds, contract::FrameBlock&);
 // Object `row` of the frame (a vessel; its knots in u_knots row `row`).
 contract::ObjectRecord pack_object(const FrameState&, int row);
 // A vessel's knot row: texel k = (r_outer[k], r_inner[k], r_outer[k + 1], r_inner[k + 1]).

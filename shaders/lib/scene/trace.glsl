@@ -20,6 +20,12 @@
 #if DROPLETS
 #include "lib/droplets/field.glsl"
 #endif
+#ifndef CLOUDS
+#define CLOUDS 0
+#endif
+#if CLOUDS
+#include "lib/pointcloud/scene.glsl"
+#endif
 
 // The vessel's nearest surface for a world ray, as a world hit.
 Hit object_hit(Vessel v, vec3 o, vec3 d, int medium, float tmin) {
@@ -78,6 +84,25 @@ bool search_step(inout Search s, vec3 o, vec3 d, int medium, int obj, bool floor
     float t;
     vec3 n;
     if (march_droplets(o, d, s.tmin, s.best.t, medium == MEDIUM_DROPLET, t, n)) s.best = Hit(t, n, M_DROPLET, -1);
+  }
+#endif
+#if CLOUDS
+  // The scene's point clouds (lib/pointcloud), likewise: in the air every cloud is
+  // marched on the search's first step; inside a blob (object -2 - cloud) only its own
+  // surface bounds the path.
+  if (s.after_t0 == -INF && (medium == MEDIUM_AIR || medium == MEDIUM_CLOUD)) {
+    int own = medium == MEDIUM_CLOUD ? -2 - obj : -1;
+    for (int c = 0; c < MAX_CLOUDS; ++c) {
+      if (c >= frame.cloud_count) break;
+      if (own >= 0 && c != own) continue;
+      float t;
+      vec3 n;
+      vec4 a;
+      if (march_cloud(cloud_ref_of(c), o, d, s.tmin, s.best.t, c == own, t, n, a)) {
+        s.best = Hit(t, n, M_CLOUD, -2 - c);
+        g_cloud_attrs = a;
+      }
+    }
   }
 #endif
   float entry, then;

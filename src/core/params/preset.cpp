@@ -67,24 +67,34 @@ PresetObject parse_object(const json& o, const std::string& file, const std::str
   if (!o.is_object())
     throw InputError(file + ": field '" + at + "': expected an object with name, glass, drink, position, yaw, "
                      "params; got " + short_dump(o));
-  check_keys(o, file, at + ".", {"name", "kind", "glass", "drink", "position", "yaw", "params", "droplets"});
+  check_keys(o, file, at + ".", {"name", "kind", "glass", "drink", "position", "yaw", "params", "droplets", "pointcloud"});
   PresetObject obj;
   if (o.contains("kind")) {
     const json& k = o["kind"];
-    if (!k.is_string() || (k.get<std::string>() != "vessel" && k.get<std::string>() != "droplets"))
-      throw InputError(file + ": field '" + at + ".kind': expected \"vessel\" (the default) or \"droplets\", got " +
-                       short_dump(k));
-    if (k.get<std::string>() == "droplets") {
+    const std::string kind = k.is_string() ? k.get<std::string>() : "";
+    if (kind != "vessel" && kind != "droplets" && kind != "pointcloud")
+      throw InputError(file + ": field '" + at + ".kind': expected \"vessel\" (the default), \"droplets\" or "
+                       "\"pointcloud\", got " + short_dump(k));
+    if (kind != "vessel") {
+      const std::string own = kind;  // the key that holds this kind's parameters
       for (const char* key : {"glass", "drink", "params"})
         if (o.contains(key))
-          throw InputError(file + ": field '" + at + "." + key + "': a droplets object has no " + key +
-                           " (its parameters are in " + at + ".droplets)");
+          throw InputError(file + ": field '" + at + "." + key + "': a " + kind + " object has no " + key +
+                           " (its parameters are in " + at + "." + own + ")");
+    }
+    if (kind == "droplets")
       obj.droplets = o.contains("droplets") ? parse_droplet_params(o["droplets"], file, at + ".droplets")
                                             : DropletParams{};
-    }
+    if (kind == "pointcloud")
+      obj.cloud = o.contains("pointcloud") ? parse_point_cloud_params(o["pointcloud"], file, at + ".pointcloud",
+                                                                      std::filesystem::path(file).parent_path().string())
+                                           : PointCloudParams{};
   }
   if (o.contains("droplets") && !obj.droplets)
     throw InputError(file + ": field '" + at + ".droplets': only an object of \"kind\": \"droplets\" has droplets");
+  if (o.contains("pointcloud") && !obj.cloud)
+    throw InputError(file + ": field '" + at + ".pointcloud': only an object of \"kind\": \"pointcloud\" has "
+                     "point-cloud parameters");
   auto str = [&](const char* key, bool required) -> std::string {
     const std::string f = at + "." + key;
     if (!o.contains(key)) {
@@ -188,6 +198,13 @@ Preset parse_preset(const std::string& text, const std::string& file) {
     for (size_t i = 0; i < objects.size(); ++i) {
       const std::string at = "objects[" + std::to_string(i) + "]";
       p.objects.push_back(parse_object(objects[i], file, at));
+      if (p.objects[i].cloud) {
+        int clouds = 0;
+        for (size_t k = 0; k <= i; ++k) clouds += p.objects[k].cloud ? 1 : 0;
+        if (clouds > contract::kMaxClouds)
+          throw InputError(file + ": field '" + at + ".kind': a scene holds at most " + std::to_string(contract::kMaxClouds) +
+                           " point clouds");
+      }
       if (p.objects[i].droplets)
         for (size_t k = 0; k < i; ++k)
           if (p.objects[k].droplets)
@@ -326,6 +343,15 @@ std::string scene_preset_json(const Scene& scene, const std::string& name, const
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
     const Placement& at = o.placement;
+    if (const PointCloudObject* c = as_cloud(o)) {
+      objects.push_back({{"name", o.name},
+                         {"kind", "pointcloud"},
+                         {"position", {shortest_double(at.position.x), shortest_double(at.position.y),
+                                       shortest_double(at.position.z)}},
+                         {"yaw", shortest_double(at.yaw)},
+                         {"pointcloud", point_cloud_params_json(c->params)}});
+      continue;
+    }
     if (const DropletsObject* d = as_droplets(o)) {
       objects.push_back({{"name", o.name},
                          {"kind", "droplets"},
@@ -452,6 +478,11 @@ Scene scene_from_preset(const Preset& preset, std::string* log) {
   for (size_t i = 0; i < preset.objects.size(); ++i) {
     const PresetObject& o = preset.objects[i];
     const std::string at = "objects[" + std::to_string(i) + "]";
+    if (o.cloud) {
+      scene.objects.push_back(SceneObject{o.name, o.placement, PointCloudObject{*o.cloud}});
+      used += at + " " + o.name + ": point cloud\n";
+      continue;
+    }
     if (o.droplets) {
       scene.objects.push_back(SceneObject{o.name, o.placement, DropletsObject{*o.droplets}});
       used += at + " " + o.name + ": droplets\n";

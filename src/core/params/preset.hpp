@@ -23,6 +23,7 @@
 #pragma once
 
 #include "core/droplets/droplets.hpp"
+#include "core/pointcloud/cloud_object.hpp"
 #include "core/params/params.hpp"
 #include "core/scene/scene.hpp"
 
@@ -45,6 +46,8 @@ struct PresetObject {
   // "kind": "droplets": a trail of droplets (core/droplets) with these parameters; no
   // glass, drink or params then.
   std::optional<DropletParams> droplets;
+  // "kind": "pointcloud": a cloud of metaballs (core/pointcloud) with these parameters.
+  std::optional<PointCloudParams> cloud;
 };
 
 struct Preset {

@@ -202,8 +202,10 @@ TimelineAction parse_action(const Reader& r, const json& a, const std::string& a
     act.to = {to[0].get<double>(), to[1].get<double>()};
     act.duration = duration(0, &zero);
   } else if (kind == "pour") {
-    check_keys(r, a, f, {"at", "action", "object"});
+    check_keys(r, a, f, {"at", "action", "object", "duration"});
     act.kind = TimelineAction::Kind::Pour;
+    const double pour_default = kPourSeconds;
+    act.duration = r.number(a, "duration", at + ".duration", 0, 30, " (seconds; 0 fills the glass at once)", &pour_default);
   } else if (kind == "play" || kind == "seek" || kind == "stop") {
     // The screen's source: the scene has one screen, so these take no object.
     if (a.contains("object")) r.fail(f + "object", kind + " drives the scene's screen: it takes no object");
@@ -366,10 +368,10 @@ double Timeline::drink_rate_at(double t, int object) const {
   return rate;
 }
 
-bool Timeline::pours_in(double t0, double t1, int object) const {
+std::optional<double> Timeline::pours_in(double t0, double t1, int object) const {
   for (auto& a : actions)
-    if (a.kind == TimelineAction::Kind::Pour && drives(a, object) && a.at >= t0 && a.at < t1) return true;
-  return false;
+    if (a.kind == TimelineAction::Kind::Pour && drives(a, object) && a.at >= t0 && a.at < t1) return a.duration;
+  return std::nullopt;
 }
 
 namespace {
@@ -495,10 +497,11 @@ std::optional<glm::dvec2> Timeline::pointer_at(double t, int object) const {
 
 void play_timeline(Simulation& sim, TimelineDriver& driver, const Timeline& tl, const Params& base, double t) {
   sim.set_params(tl.params_at(t, base));
-  if (sim.time() == 0 && tl.pours_in(0, 1e-9)) sim.pour();  // a pour at 0 shows in frame 0
+  if (sim.time() == 0)
+    if (auto d = tl.pours_in(0, 1e-9)) sim.pour_over(*d);  // a pour at 0 shows in frame 0
   while (sim.time() + Simulation::kStep <= t + 1e-9) {
     const double next = sim.time() + Simulation::kStep;
-    if (tl.pours_in(sim.time(), next)) sim.pour();
+    if (auto d = tl.pours_in(sim.time(), next)) sim.pour_over(*d);
     sim.step(driver.sample(next), tl.drink_rate_at(next));
   }
 }
@@ -525,7 +528,8 @@ void play_timeline(SceneSimulation& sim, std::vector<TimelineDriver>& drivers, c
   if (int(drivers.size()) != n) throw std::logic_error("play_timeline: one driver per object is needed");
   auto pour = [&](double t0, double t1) {
     for (int i = 0; i < n; ++i)
-      if (Simulation* v = sim.vessel(i); v && tl.pours_in(t0, t1, i)) v->pour();
+      if (Simulation* v = sim.vessel(i))
+        if (auto d = tl.pours_in(t0, t1, i)) v->pour_over(*d);
   };
   if (sim.time() == 0) pour(0, 1e-9);  // a pour at 0 shows in frame 0
   std::vector<MotionSample> motions(static_cast<size_t>(n));

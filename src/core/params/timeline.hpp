@@ -20,8 +20,10 @@
 // rotate: spin about its own axis. shake: move it to and fro horizontally (amplitude in
 // metres, frequency in Hz, along `toward`). sip: drink `amount` of the glass's volume.
 // orbit: move the camera around the glass. set: any parameter of the table; numbers
-// and vectors blend over `duration`, others switch at `at`. pour: the glass is filled to
-// liquid.fill and a fresh head builds (foam.rise_time), then settles. Easing is smooth
+// and vectors blend over `duration`, others switch at `at`. pour: a stream falls from
+// above into the emptied glass for `duration` seconds (default kPourSeconds; 0 fills it
+// at once), the level rising to liquid.fill as its volume arrives, and a fresh head
+// builds (foam.rise_time) from the first splash, then settles. Easing is smooth
 // (zero speed at both ends) unless "ease": "linear".
 // play, seek, stop drive the screen's source (core/environment/screen.hpp): play starts it
 // (from `from` seconds into the source when given, else where it stands), seek jumps to
@@ -52,6 +54,9 @@
 #include <vector>
 
 namespace draught {
+
+// How long a pour action lasts when it does not say (seconds): a pint poured at a tap.
+inline constexpr double kPourSeconds = 3.0;
 
 inline constexpr int kTimelineFormat = 1;
 
@@ -98,7 +103,8 @@ struct Timeline {
   // pointer action blends from where the pointer was when it started to its `to`); none
   // when no pointer action drives the object.
   std::optional<glm::dvec2> pointer_at(double t, int object = 0) const;
-  bool pours_in(double t0, double t1, int object = 0) const;  // a pour action at a time in [t0, t1)
+  // The duration of a pour action at a time in [t0, t1) (0: an instant fill), or none.
+  std::optional<double> pours_in(double t0, double t1, int object = 0) const;
   // The parameters at time t: `base` with the set and orbit actions applied (a single
   // glass: the actions for every object and for object 0).
   Params params_at(double t, const Params& base) const;

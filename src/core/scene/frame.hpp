@@ -58,6 +58,7 @@ struct FrameState {
   double time = 0;               // the scene's time (s): what the screen shows depends on it
   ScreenFrame screen;            // the moving picture on a card or as the background (screen.*)
   std::vector<DropletsFrame> droplets;  // the droplets objects (at most one), their spheres in the world
+  std::vector<CloudFrame> clouds;       // the point clouds (at most kMaxClouds), their points in the world
 };
 
 // The scene's centre the studio's lights (and the sweep) are placed around: the middle of

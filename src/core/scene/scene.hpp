@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/droplets/droplets.hpp"
+#include "core/pointcloud/cloud_object.hpp"
 #include "core/params/params.hpp"
 #include "generated/constants.hpp"
 
@@ -36,8 +37,14 @@ struct DropletsObject {
   DropletParams params;
 };
 
+// A cloud of metaballs: molten glass, a stream, points from files (core/pointcloud,
+// docs/POINT_CLOUDS.md). Up to contract::kMaxClouds per scene (they share the data textures).
+struct PointCloudObject {
+  PointCloudParams params;
+};
+
 // Every kind an object can be (one registration per kind).
-using ObjectKind = std::variant<VesselObject, DropletsObject>;
+using ObjectKind = std::variant<VesselObject, DropletsObject, PointCloudObject>;
 
 struct SceneObject {
   std::string name;  // from the scene file ("pilsner"); unique within the scene
@@ -93,5 +100,7 @@ inline VesselObject* as_vessel(SceneObject& o) { return std::get_if<VesselObject
 inline const VesselObject* as_vessel(const SceneObject& o) { return std::get_if<VesselObject>(&o.kind); }
 inline DropletsObject* as_droplets(SceneObject& o) { return std::get_if<DropletsObject>(&o.kind); }
 inline const DropletsObject* as_droplets(const SceneObject& o) { return std::get_if<DropletsObject>(&o.kind); }
+inline PointCloudObject* as_cloud(SceneObject& o) { return std::get_if<PointCloudObject>(&o.kind); }
+inline const PointCloudObject* as_cloud(const SceneObject& o) { return std::get_if<PointCloudObject>(&o.kind); }
 
 }  // namespace draught

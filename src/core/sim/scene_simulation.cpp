@@ -22,10 +22,25 @@ void SceneSimulation::set_scene(const Scene& s) {
   if (!same_list) {
     sims_.assign(s.objects.size(), std::nullopt);
     trails_.assign(s.objects.size(), std::nullopt);
+    clouds_.assign(s.objects.size(), std::nullopt);
     releases_.assign(s.objects.size(), Release{});
   }
   for (size_t i = 0; i < s.objects.size(); ++i) {
     const VesselObject* v = as_vessel(s.objects[i]);
+    if (const PointCloudObject* c = as_cloud(s.objects[i])) {
+      // A new source when its parameters or placement changed (a cloud has no state worth
+      // keeping across an edit: a gob restarts, a file is read again).
+      const Placement& at = s.objects[i].placement;
+      const bool same = clouds_[i] && same_list && as_cloud(scene_.objects[i]) &&
+                        point_cloud_params_json(as_cloud(scene_.objects[i])->params) == point_cloud_params_json(c->params) &&
+                        scene_.objects[i].placement.position == at.position && scene_.objects[i].placement.yaw == at.yaw;
+      if (!same) {
+        clouds_[i].emplace(c->params, at.position, at.yaw);
+        clouds_[i]->advance_to(time());
+      }
+    } else {
+      clouds_[i].reset();
+    }
     if (!v) {
       sims_[i].reset();
       if (const DropletsObject* d = as_droplets(s.objects[i])) {
@@ -94,6 +109,16 @@ void SceneSimulation::settle_bubbles(double seconds) {
     if (s) s->settle_bubbles(seconds);
 }
 
+const CloudSource* SceneSimulation::cloud(int i) const {
+  return i >= 0 && i < int(clouds_.size()) && clouds_[size_t(i)] ? &*clouds_[size_t(i)] : nullptr;
+}
+
+void SceneSimulation::step_clouds() {
+  const double t = time();
+  for (auto& c : clouds_)
+    if (c) c->advance_to(t);
+}
+
 const DropletTrail* SceneSimulation::trail(int i) const {
   return i >= 0 && i < int(trails_.size()) && trails_[size_t(i)] ? &*trails_[size_t(i)] : nullptr;
 }
@@ -119,6 +144,7 @@ void SceneSimulation::step(const MotionSample& m, double drink_rate) {
       sims_[i]->step(placed(released(i, m.time), at), 0);
     }
   }
+  step_clouds();
 }
 
 void SceneSimulation::step_each(const std::vector<MotionSample>& motions, const std::vector<double>& drink_rates) {
@@ -135,11 +161,12 @@ void SceneSimulation::step_each(const std::vector<MotionSample>& motions, const 
     }
     sims_[i]->step(placed(m, at), i < drink_rates.size() ? drink_rates[i] : 0.0);
   }
+  step_clouds();
 }
 
 void SceneSimulation::advance(InputDriver& driver, double t, double drink_rate) {
   // Fixed steps as Simulation::advance, every object on the same clock.
-  if (!std::isfinite(t) || sims_.empty()) return;
+  if (!std::isfinite(t) || scene_.objects.empty()) return;
   if (t - time() > Simulation::kMaxCatchUp) {
     for (auto& s : sims_)
       if (s) s->skip_to(t - Simulation::kMaxCatchUp);
@@ -162,6 +189,13 @@ FrameState SceneSimulation::frame() const {
       const DropletParams& p = as_droplets(scene_.objects[i])->params;
       f.droplets.push_back({p, at.position, at.yaw, droplet_field_of(p, trails_[i]->spheres(at.position, at.yaw))});
     }
+  for (const auto& c : clouds_)
+    if (c) f.clouds.push_back(c->frame());
+  // The vessels' streams (a pour, a spill), as long as there is room for them.
+  for (const auto& s : sims_)
+    if (s)
+      for (CloudFrame& c : s->streams())
+        if (int(f.clouds.size()) < contract::kMaxClouds) f.clouds.push_back(std::move(c));
   return f;
 }
 

@@ -6,6 +6,7 @@
 #include "core/scene/frame.hpp"
 #include "core/scene/scene.hpp"
 #include "core/droplets/trail.hpp"
+#include "core/pointcloud/cloud_object.hpp"
 #include "core/sim/simulation.hpp"
 
 #include <optional>
@@ -55,14 +56,18 @@ class SceneSimulation {
   // in the trail's plane: core/droplets/trail.hpp droplet_plane_hit); a motion sample that
   // carries its own pointer (a timeline's) wins for its step.
   void set_pointer(glm::dvec2 p) { pointer_ = p; }
+  // The source of a point-cloud object (nullptr for another kind).
+  const CloudSource* cloud(int object) const;
 
  private:
   Scene scene_;
   std::vector<std::optional<Simulation>> sims_;  // one per object; empty for other kinds
   std::vector<std::optional<DropletTrail>> trails_;  // one per object; set for droplets objects
+  std::vector<std::optional<CloudSource>> clouds_;   // one per object; set for point-cloud objects
   glm::dvec2 pointer_{0.0};
   double trail_time_ = 0;  // the clock of a scene without vessels
   void step_trails(const std::vector<MotionSample>* each, const MotionSample* all);
+  void step_clouds();  // each cloud's source to the scene's time
   // A glass that input lets go of (the selection moved on) is set back upright over
   // kSettleSeconds, smoothly, so its drink sloshes as when a hand puts a glass down
   // instead of snapping to rest.

@@ -66,11 +66,106 @@ void Simulation::set_fraction(double fraction) {
 }
 
 void Simulation::pour() {
+  pour_.reset();
   fraction_ = params_.liquid.fill;
   spilled_ = 0;  // a new fill: what spills from now on is of this drink
   foam_.pour();
   bubbles_->clear();
   update_surface();
+}
+
+namespace {
+// Where the pour's spout stands: above the rim, a little behind the axis, so the stream
+// lands near the middle of the surface with a slight arc.
+constexpr double kSpoutAboveRim = 0.12;    // m
+constexpr double kSpoutBehind = 0.35;      // of the rim's radius, towards -z
+constexpr double kSpoutSpeed = 0.12;       // m/s forwards (+z) as the liquid leaves the spout
+constexpr double kSpillSpeed = 0.15;       // m/s outwards as the drink leaves the rim
+std::uint64_t stream_version() {
+  static std::uint64_t counter = std::uint64_t(1) << 40;  // apart from the cloud objects' versions
+  return ++counter;
+}
+}  // namespace
+
+glm::dvec3 Simulation::world(const glm::dvec3& local) const {
+  return motion_.pose.position + motion_.pose.orientation * local;
+}
+
+void Simulation::pour_over(double seconds) {
+  if (!(seconds > 0)) {
+    pour();
+    return;
+  }
+  seconds = std::min(seconds, 30.0);
+  fraction_ = 0;  // a fresh pour starts with an empty glass
+  spilled_ = 0;
+  bubbles_->clear();
+  update_surface();
+  const double volume = params_.liquid.fill * vessel_.cavity_volume();
+  Stream s;
+  const double rim = vessel_.rim_major;
+  s.stream.set_origin(world(glm::dvec3(0, vessel_.height + kSpoutAboveRim, -kSpoutBehind * rim)),
+                      motion_.pose.orientation * glm::dvec3(0, 0, kSpoutSpeed));
+  s.stream.set_target_height(world(glm::dvec3(0, vessel_.base, 0)).y);
+  s.stream.set_flow(0, volume / seconds);
+  s.end = seconds;
+  pour_ = std::move(s);
+}
+
+std::vector<CloudFrame> Simulation::streams() const {
+  std::vector<CloudFrame> out;
+  for (const std::optional<Stream>* s : {&pour_, &spill_}) {
+    if (!*s || (*s)->stream.in_flight_volume() <= 0) continue;
+    CloudFrame f;
+    f.points = std::make_shared<const PointCloud>((*s)->stream.cloud());
+    f.version = (*s)->version;
+    f.material = int(CloudMaterial::Drink);
+    f.glow = 0;
+    f.ior = params_.liquid.ior;
+    f.roughness = params_.liquid.roughness;
+    f.absorption = liquid_absorption(params_.liquid);
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+void Simulation::step_streams(double dt, double spilled_before) {
+  const double cavity = vessel_.cavity_volume();
+  // The level the stream lands on: the drink's surface where it crosses the axis (the
+  // cavity's floor while the glass is empty).
+  const double level = fraction_ > kEmpty ? axis_level() : vessel_.base;
+  if (pour_) {
+    Stream& s = *pour_;
+    s.stream.set_target_height(world(glm::dvec3(0, level, 0)).y);
+    // The flow is a clock of its own (started at 0 by pour_over), in step with ours.
+    const double t = s.stream.time() + dt;
+    if (t >= s.end) s.stream.set_flow(s.end, 0);
+    s.stream.advance(dt);
+    const double arrived = s.stream.arrived_volume();
+    if (s.counted == 0 && arrived > 0) foam_.pour();  // the head builds from the first splash
+    fraction_ += (arrived - s.counted) / cavity;
+    s.counted = arrived;
+    s.version = stream_version();
+    if (t >= s.end && s.stream.in_flight_volume() <= 0) pour_.reset();
+  }
+  // What spilled over the rim this step leaves as a stream from the rim's lowest point,
+  // falling to the floor.
+  const double spilled = (spilled_ - spilled_before) * cavity;
+  if (spilled > 0 && !spill_) {
+    spill_.emplace();
+    spill_->stream.set_target_height(0.0);
+  }
+  if (spill_) {
+    Stream& s = *spill_;
+    // The rim is lowest against the surface's normal, opposite its lean (glass frame).
+    const glm::dvec3 out(-std::cos(azimuth_), 0, -std::sin(azimuth_));
+    const glm::dvec3 lip = world(glm::dvec3(0, vessel_.height, 0) + (vessel_.rim_major + vessel_.rim_minor) * out);
+    s.stream.set_origin(lip, motion_.pose.orientation * (kSpillSpeed * out));
+    s.stream.set_flow(s.stream.time(), spilled / dt);
+    s.stream.advance(dt);
+    s.version = stream_version();
+    if (spilled <= 0 && s.stream.in_flight_volume() <= 0) spill_.reset();
+  }
 }
 
 void Simulation::settle_bubbles(double seconds) {
@@ -149,7 +244,12 @@ void Simulation::step(const MotionSample& raw, double drink_rate) {
   motion_ = m;
   first_step_ = false;
   if (std::isfinite(drink_rate) && drink_rate > 0) fraction_ = std::max(fraction_ - drink_rate * dt, 0.0);
+  const double spilled_before = spilled_;
   update_surface();
+  if (pour_ || spill_ || spilled_ > spilled_before) {
+    step_streams(dt, spilled_before);
+    update_surface();
+  }
   // The head follows the volume (the level the drink would have upright), not the slosh.
   const double level = table_->offset_at(0, fraction_);
   foam_.step(dt, level, vessel_.inner_radius(std::clamp(level, vessel_.base, vessel_.height)));

@@ -9,6 +9,8 @@
 #include "core/scene/frame.hpp"
 #include "core/input/driver.hpp"
 #include "core/liquid/slosh.hpp"
+#include "core/pointcloud/cloud_object.hpp"
+#include "core/pointcloud/stream.hpp"
 
 #include <memory>
 #include <optional>
@@ -27,6 +29,14 @@ class Simulation {
   void set_params(const VesselParams&);
   void set_fraction(double fraction);  // drink or refill; clamped to what the glass holds
   void pour();                         // fill to liquid.fill with a fresh head building
+  // A pour seen: a stream falls from above the glass into it for `seconds`, carrying
+  // what liquid.fill lacks (from an empty glass); the level rises as its volume arrives
+  // and the head builds from the first splash. 0 seconds: pour().
+  void pour_over(double seconds);
+  bool pouring() const { return pour_.has_value(); }
+  // The streams in the air now: the pour's, and what spills over the rim (world, drink
+  // material); empty when none is.
+  std::vector<CloudFrame> streams() const;
   // Lets the bubbles rise for a while with the glass at rest, so a still picture (or
   // the first frame of an animation) shows a drink that has been standing.
   void settle_bubbles(double seconds);
@@ -81,6 +91,17 @@ class Simulation {
   LiquidPlane surface_;
   double tilt_ = 0, azimuth_ = 0;
   bool first_step_ = true;
+  // The pour's stream and the spill's: parcels in the air, their volume counted out of
+  // the glass (spill) or into it (pour) so that stream and glass conserve it.
+  struct Stream {
+    PourStream stream;
+    double counted = 0;   // arrived volume already added to the glass (pour)
+    double end = 0;       // time the flow stops
+    std::uint64_t version = 0;
+  };
+  std::optional<Stream> pour_, spill_;
+  void step_streams(double dt, double spilled_before);
+  glm::dvec3 world(const glm::dvec3& local) const;
 };
 
 }  // namespace draught
