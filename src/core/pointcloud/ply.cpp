@@ -4,6 +4,7 @@
 #include "core/pointcloud/point_fields.hpp"
 #include "core/text/echo.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -386,20 +387,14 @@ class Reader {
   }
 
   void skip_ascii(const Element& e, std::size_t& pos, std::size_t& line) const {
-    if (e.count == 0) return;
-    // Each element takes a line of at least one byte and its newline.
-    if (e.count > (s_.size() - pos + 1) / 2)
-      fail(at_line(e.line), "element '" + e.name + "' announces " + std::to_string(e.count) +
-                                " lines, more than the rest of the file can hold");
+    // A count beyond the file's lines fails at the first missing one.
     for (std::uint64_t i = 0; i < e.count; ++i) ascii_element(e, i, pos, line, nullptr);
   }
 
   PointCloud read_ascii_vertices(const Element& e, std::size_t pos, std::size_t line) const {
-    if (e.count > (s_.size() - pos + 1) / (2 * e.props.size()))
-      fail(at_line(e.line), std::to_string(e.count) + " vertices of " + std::to_string(e.props.size()) +
-                                " values each: more than the rest of the file (" + std::to_string(s_.size() - pos) +
-                                " bytes) can hold");
-    PointCloudBuilder cloud(fields_, std::size_t(e.count));
+    // Memory for no more vertices than the rest can hold (a value and a separator each);
+    // a count beyond the file's lines fails at the first missing one.
+    PointCloudBuilder cloud(fields_, std::min<std::size_t>(std::size_t(e.count), (s_.size() - pos + 1) / (2 * e.props.size())));
     std::vector<double> values(e.props.size());
     std::array<double, kPointFieldCount> point{};
     for (std::uint64_t i = 0; i < e.count; ++i) {
@@ -472,10 +467,7 @@ class Reader {
       pos += std::size_t(e.count) * *size;
       return;
     }
-    if (e.count > avail / e.min_size())
-      fail(at_byte(pos), "element '" + e.name + "' announces " + std::to_string(e.count) + " elements of at least " +
-                             std::to_string(e.min_size()) + " bytes: more than the " + std::to_string(avail) +
-                             " bytes left; expected a complete element");
+    // Each element takes at least one byte, so a count beyond the file fails at its end.
     for (std::uint64_t i = 0; i < e.count; ++i) binary_element(e, i, pos, nullptr);
   }
 
@@ -483,10 +475,8 @@ class Reader {
     const std::size_t avail = s_.size() - pos;
     const auto size = e.fixed_size();
     if (size && e.count > avail / *size) truncated(e, *size, pos, avail);
-    if (!size && e.count > avail / e.min_size())
-      fail(at_byte(pos), std::to_string(e.count) + " vertices of at least " + std::to_string(e.min_size()) +
-                             " bytes: more than the " + std::to_string(avail) + " bytes left");
-    PointCloudBuilder cloud(fields_, std::size_t(e.count));
+    // (with lists: memory for no more vertices than the bytes left can hold)
+    PointCloudBuilder cloud(fields_, size ? std::size_t(e.count) : std::min<std::size_t>(std::size_t(e.count), avail / e.min_size()));
     std::vector<double> values(e.props.size());
     std::vector<std::size_t> offsets(e.props.size());
     std::array<double, kPointFieldCount> point{};
