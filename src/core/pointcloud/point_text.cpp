@@ -136,7 +136,7 @@ PointCloud parse_point_text(std::string_view text, const std::string& name) {
 
     split(content, width, cols);
     if (cols.size() != width)
-      fail(at, "expected " + std::to_string(width) + " columns (as " + (header ? "the header on line " : "on line ") +
+      fail(at, "expected " + std::to_string(width) + " columns (as " + (header ? "the header on line " : "line ") +
                    std::to_string(layout_line) + (header ? " names" : " has") + "), got " +
                    (cols.size() > width ? "more" : std::to_string(cols.size())));
     if (cloud->size() == kMaxCloudPoints)
