@@ -14,6 +14,10 @@ set(DRAUGHT_CORE_SOURCES
   src/core/droplets/trail.cpp
   src/core/pointcloud/cloud_object.cpp
   src/core/pointcloud/cloud_scene.cpp
+  src/core/pointcloud/point_fields.cpp
+  src/core/pointcloud/ply.cpp
+  src/core/pointcloud/point_text.cpp
+  src/core/pointcloud/cloud_files.cpp
   src/core/vessel/profile.cpp
   src/core/vessel/vessel.cpp
   src/core/vessel/fill_table.cpp
