@@ -12,6 +12,9 @@ set(DRAUGHT_CORE_SOURCES
   src/core/droplets/field.cpp
   src/core/droplets/droplets.cpp
   src/core/droplets/trail.cpp
+  src/core/pointcloud/bvh.cpp
+  src/core/pointcloud/field.cpp
+  src/core/pointcloud/cloud_texels.cpp
   src/core/vessel/profile.cpp
   src/core/vessel/vessel.cpp
   src/core/vessel/fill_table.cpp
