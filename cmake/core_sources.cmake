@@ -18,6 +18,12 @@ set(DRAUGHT_CORE_SOURCES
   src/core/pointcloud/ply.cpp
   src/core/pointcloud/point_text.cpp
   src/core/pointcloud/cloud_files.cpp
+  src/core/pointcloud/blackbody.cpp
+  src/core/pointcloud/glass_heat.cpp
+  src/core/pointcloud/gob.cpp
+  src/core/pointcloud/bvh.cpp
+  src/core/pointcloud/field.cpp
+  src/core/pointcloud/cloud_texels.cpp
   src/core/vessel/profile.cpp
   src/core/vessel/vessel.cpp
   src/core/vessel/fill_table.cpp

@@ -1,0 +1,53 @@
+// A scene's point clouds flattened into the texel arrays of the cloud textures
+// (src/interface/objects.def: u_cloud_points, u_cloud_attrs, u_cloud_nodes; uploaded by
+// gpu/cloud_textures): every cloud's points in its tree's leaf order and its nodes, with
+// indices made absolute, appended one after another. The CPU twin of the march
+// (core/pointcloud/field.hpp) reads these same arrays.
+#pragma once
+
+#include "core/pointcloud/bvh.hpp"
+#include "core/pointcloud/cloud.hpp"
+#include "generated/constants.hpp"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace draught {
+
+inline constexpr int kCloudTextureWidth = contract::kCloudTextureWidth;
+inline constexpr int kMaxClouds = contract::kMaxClouds;
+
+// Where one cloud lies in the shared arrays.
+struct CloudRange {
+  int root = -1;          // its root node (absolute); -1: an empty cloud
+  int first_point = 0;    // its first point texel
+  int point_count = 0;
+  int first_node = 0;
+  int node_count = 0;
+  float min_support = 0;  // its smallest support radius (m): the march's step scale
+  glm::vec3 lo{0.0f}, hi{0.0f};  // its root box (m)
+};
+
+struct CloudTexels {
+  std::vector<float> points;        // 4 per point: centre xyz, support radius R
+  std::vector<std::uint16_t> attrs; // 4 halves per point: temperature K, linear r, g, b (0: not given)
+  std::vector<float> nodes;         // 8 per node: lo xyz, index; hi xyz, count
+  std::vector<CloudRange> clouds;
+
+  // Appends a cloud whose tree was built (or refit) for it; throws std::invalid_argument
+  // when the tree is not the cloud's (another count), for a kMaxClouds + 1st cloud, or
+  // when the arrays would pass what a texture of kCloudTextureWidth^2 texels holds.
+  CloudRange append(const PointCloud&, const CloudBvh&);
+  void clear();
+  int point_count() const { return int(points.size() / 4); }
+  int node_count() const { return int(nodes.size() / 8); }
+  // Bytes the three textures take on the GPU, rows padded to kCloudTextureWidth.
+  std::size_t gpu_bytes() const;
+};
+
+// Rows of a texture of `texels` texels, kCloudTextureWidth per row (at least 1).
+int cloud_texture_rows(std::size_t texels);
+
+}  // namespace draught

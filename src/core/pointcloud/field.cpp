@@ -1,0 +1,485 @@
+#include "core/pointcloud/field.hpp"
+
+#include <glm/gtc/packing.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace draught {
+
+double cloud_support_scale(double threshold) { return 1.0 / std::sqrt(1.0 - std::cbrt(threshold)); }
+
+// ---- the reference ----
+namespace {
+
+struct RefSupport {
+  glm::dvec3 c{0.0};
+  double R2 = 0;
+  std::size_t i = 0;
+};
+
+// The points' supports the ray crosses within [tmin, tmax] and the ends of their spans.
+void ref_supports(const PointCloud& cloud, double scale, glm::dvec3 o, glm::dvec3 d, double tmin, double tmax,
+                  std::vector<RefSupport>& out, std::vector<double>& breaks) {
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const glm::dvec3 c(cloud.position[i]);
+    const double R = scale * double(cloud.radius_of(i));
+    const glm::dvec3 q = o - c;
+    const double b = glm::dot(q, d), disc = b * b - (glm::dot(q, q) - R * R);
+    if (disc <= 0) continue;
+    const double sq = std::sqrt(disc), t0 = -b - sq, t1 = -b + sq;
+    if (t1 < tmin || t0 > tmax) continue;
+    out.push_back({c, R * R, i});
+    if (t0 > tmin) breaks.push_back(t0);
+    if (t1 < tmax) breaks.push_back(t1);
+  }
+}
+
+struct RefRay {
+  const std::vector<RefSupport>& s;
+  glm::dvec3 o, d;
+  double thr, sgn;
+  // g = sgn (threshold - F) and dg/dt.
+  double g(double t, double* dg = nullptr) const {
+    const glm::dvec3 p = o + t * d;
+    double f = 0, df = 0;
+    for (const RefSupport& r : s) {
+      const glm::dvec3 q = p - r.c;
+      const double u = glm::dot(q, q) / r.R2;
+      if (u >= 1.0) continue;
+      const double w = 1.0 - u;
+      f += w * w * w;
+      df += -6.0 * w * w * glm::dot(q, d) / r.R2;
+    }
+    if (dg) *dg = -sgn * df;
+    return sgn * (thr - f);
+  }
+};
+
+// The reference's scan: the first t where g <= 0 (nullopt: none), and the smallest g seen.
+std::optional<double> ref_scan(const RefRay& ray, std::vector<double> breaks, double tmin, double tmax,
+                               double& gmin) {
+  breaks.push_back(tmin);
+  breaks.push_back(tmax);
+  std::sort(breaks.begin(), breaks.end());
+  gmin = ray.g(tmin);
+  if (gmin <= 0) return tmin;
+  auto root = [&](double a, double b) {
+    for (int k = 0; k < 100 && b - a > 0; ++k) {
+      const double m = 0.5 * (a + b);
+      if (ray.g(m) <= 0) b = m;
+      else a = m;
+    }
+    return b;
+  };
+  for (std::size_t j = 0; j + 1 < breaks.size(); ++j) {
+    const double u0 = breaks[j], u1 = breaks[j + 1];
+    if (!(u1 > u0)) continue;
+    constexpr int kCuts = 16;
+    for (int k = 0; k < kCuts; ++k) {
+      const double a = u0 + (u1 - u0) * k / kCuts, b = k + 1 == kCuts ? u1 : u0 + (u1 - u0) * (k + 1) / kCuts;
+      double da, db;
+      ray.g(a, &da);
+      const double gb = ray.g(b, &db);
+      gmin = std::min(gmin, gb);
+      if (gb <= 0) return root(a, b);
+      if (da < 0 && db > 0) {
+        double lo = a, hi = b;
+        for (int it = 0; it < 80; ++it) {
+          const double m = 0.5 * (lo + hi);
+          double dm;
+          ray.g(m, &dm);
+          if (dm < 0) lo = m;
+          else hi = m;
+        }
+        const double m = 0.5 * (lo + hi), gm = ray.g(m);
+        gmin = std::min(gmin, gm);
+        if (gm <= 0) return root(a, m);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+double cloud_field_reference(const PointCloud& cloud, double threshold, glm::dvec3 p) {
+  const double scale = cloud_support_scale(threshold);
+  double f = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const double R = scale * double(cloud.radius_of(i));
+    const glm::dvec3 q = p - glm::dvec3(cloud.position[i]);
+    f += cloud_kernel(glm::dot(q, q) / (R * R));
+  }
+  return f;
+}
+
+glm::dvec3 cloud_gradient_reference(const PointCloud& cloud, double threshold, glm::dvec3 p) {
+  const double scale = cloud_support_scale(threshold);
+  glm::dvec3 g(0.0);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const double R = scale * double(cloud.radius_of(i)), R2 = R * R;
+    const glm::dvec3 q = p - glm::dvec3(cloud.position[i]);
+    const double s = glm::dot(q, q) / R2;
+    if (s < 1.0) g += -6.0 * (1.0 - s) * (1.0 - s) * q / R2;
+  }
+  return g;
+}
+
+std::optional<CloudReferenceHit> march_cloud_reference(const PointCloud& cloud, double threshold, glm::dvec3 o,
+                                                       glm::dvec3 d, double tmin, double tmax, bool inside) {
+  const double scale = cloud_support_scale(threshold);
+  std::vector<RefSupport> s;
+  std::vector<double> breaks;
+  ref_supports(cloud, scale, o, d, tmin, tmax, s, breaks);
+  const RefRay ray{s, o, d, threshold, inside ? -1.0 : 1.0};
+  double gmin;
+  const std::optional<double> t = ref_scan(ray, breaks, tmin, tmax, gmin);
+  if (!t) return std::nullopt;
+  CloudReferenceHit h;
+  h.t = *t;
+  const glm::dvec3 p = o + h.t * d;
+  glm::dvec3 grad(0.0);
+  double wsum = 0;
+  glm::dvec4 a(0.0);
+  for (const RefSupport& r : s) {
+    const glm::dvec3 q = p - r.c;
+    const double u = glm::dot(q, q) / r.R2;
+    if (u >= 1.0) continue;
+    const double w = 1.0 - u, k = w * w * w;
+    grad += -6.0 * w * w * q / r.R2;
+    wsum += k;
+    const double temp = cloud.temperature.empty() ? 0.0 : double(cloud.temperature[r.i]);
+    const glm::dvec3 col = cloud.color.empty() ? glm::dvec3(0.0) : glm::dvec3(cloud.color[r.i]);
+    a += k * glm::dvec4(temp, col);
+  }
+  h.n = glm::length(grad) > 0 ? -glm::normalize(grad) : glm::dvec3(0.0);
+  h.attrs = wsum > 0 ? a / wsum : glm::dvec4(0.0);
+  return h;
+}
+
+double cloud_ray_extreme_reference(const PointCloud& cloud, double threshold, glm::dvec3 o, glm::dvec3 d,
+                                   double tmin, double tmax, bool inside) {
+  const double scale = cloud_support_scale(threshold);
+  std::vector<RefSupport> s;
+  std::vector<double> breaks;
+  ref_supports(cloud, scale, o, d, tmin, tmax, s, breaks);
+  // A threshold no F reaches (outside) or every F passes (inside): the scan runs to the end.
+  const double sgn = inside ? -1.0 : 1.0, far = inside ? -1.0 : 1e30;
+  const RefRay ray{s, o, d, far, sgn};
+  double gmin;
+  ref_scan(ray, breaks, tmin, tmax, gmin);
+  return far - sgn * gmin;
+}
+
+// ---- the float twin ----
+namespace {
+
+glm::vec4 point_texel(const CloudTexels& tx, int i) {
+  const float* p = &tx.points[std::size_t(i) * 4];
+  return {p[0], p[1], p[2], p[3]};
+}
+
+glm::vec4 attr_texel(const CloudTexels& tx, int i) {
+  const std::uint16_t* a = &tx.attrs[std::size_t(i) * 4];
+  return {glm::unpackHalf1x16(a[0]), glm::unpackHalf1x16(a[1]), glm::unpackHalf1x16(a[2]),
+          glm::unpackHalf1x16(a[3])};
+}
+
+struct NodeTexels {
+  glm::vec4 a, b;  // (lo, index), (hi, count)
+};
+NodeTexels node_texels(const CloudTexels& tx, int n) {
+  const float* p = &tx.nodes[std::size_t(n) * 8];
+  return {{p[0], p[1], p[2], p[3]}, {p[4], p[5], p[6], p[7]}};
+}
+
+bool in_box(const NodeTexels& nd, glm::vec3 p) {
+  return p.x >= nd.a.x && p.y >= nd.a.y && p.z >= nd.a.z && p.x <= nd.b.x && p.y <= nd.b.y && p.z <= nd.b.z;
+}
+
+// The entry of o + t d into the box within [tmin, tmax]; INFINITY when it misses.
+float box_entry(glm::vec3 lo, glm::vec3 hi, glm::vec3 o, glm::vec3 inv, float tmin, float tmax) {
+  const glm::vec3 ta = (lo - o) * inv, tb = (hi - o) * inv;
+  const glm::vec3 mn = glm::min(ta, tb), mx = glm::max(ta, tb);
+  const float t0 = std::max(std::max(mn.x, mn.y), std::max(mn.z, tmin));
+  const float t1 = std::min(std::min(mx.x, mx.y), std::min(mx.z, tmax));
+  return t0 <= t1 ? t0 : INFINITY;
+}
+
+// One point's share: adds its kernel (and gradient) at p; returns the kernel.
+float add_point(glm::vec4 c, glm::vec3 p, CloudSample& s) {
+  const glm::vec3 q = p - glm::vec3(c);
+  const float inv_r2 = 1.0f / (c.w * c.w), u = glm::dot(q, q) * inv_r2;
+  if (u >= 1.0f) return 0.0f;
+  const float w = 1.0f - u;
+  s.f += w * w * w;
+  s.grad += (-6.0f * w * w * inv_r2) * q;
+  return w * w * w;
+}
+
+// The span of o + t d (d unit) in point c's support; false when it misses.
+bool support_span(glm::vec4 c, glm::vec3 o, glm::vec3 d, float& t0, float& t1) {
+  const glm::vec3 q = o - glm::vec3(c);
+  const float b = glm::dot(q, d), disc = b * b - (glm::dot(q, q) - c.w * c.w);
+  if (!(disc > 0.0f)) return false;
+  const float sq = std::sqrt(disc);
+  t0 = -b - sq;
+  t1 = -b + sq;
+  return true;
+}
+
+// Queries through the tree (the shader's way).
+struct TreeQueries {
+  const CloudTexels& tx;
+  const CloudRef& c;
+  CloudSample field(glm::vec3 p, glm::vec4* attrs) const {
+    CloudSample s;
+    glm::vec4 a(0.0f);
+    int stack[kCloudMaxDepth + 1];
+    int sp = 0;
+    stack[sp++] = c.root;
+    while (sp > 0) {
+      const int n = stack[--sp];
+      const NodeTexels nd = node_texels(tx, n);
+      if (!in_box(nd, p)) continue;
+      const int index = int(nd.a.w), count = int(nd.b.w);
+      if (count > 0) {
+        for (int i = index; i < index + count; ++i) {
+          const float k = add_point(point_texel(tx, i), p, s);
+          if (attrs && k > 0.0f) a += k * attr_texel(tx, i);
+        }
+      } else {
+        stack[sp++] = index;
+        stack[sp++] = n + 1;
+      }
+    }
+    if (attrs) *attrs = s.f > 0.0f ? a / s.f : glm::vec4(0.0f);
+    return s;
+  }
+  float next_entry(glm::vec3 o, glm::vec3 d, float tmin, float limit) const {
+    const glm::vec3 inv = 1.0f / d;
+    float best = limit;
+    int stack[kCloudMaxDepth + 1];
+    float entry[kCloudMaxDepth + 1];
+    int sp = 0;
+    {
+      const NodeTexels r = node_texels(tx, c.root);
+      const float e = box_entry(r.a, r.b, o, inv, tmin, best);
+      if (e == INFINITY) return INFINITY;
+      stack[sp] = c.root;
+      entry[sp++] = e;
+    }
+    while (sp > 0) {
+      --sp;
+      if (!(entry[sp] < best)) continue;
+      const int n = stack[sp];
+      const NodeTexels nd = node_texels(tx, n);
+      const int index = int(nd.a.w), count = int(nd.b.w);
+      if (count > 0) {
+        for (int i = index; i < index + count; ++i) {
+          float t0, t1;
+          if (support_span(point_texel(tx, i), o, d, t0, t1) && t1 >= tmin) best = std::min(best, std::max(t0, tmin));
+        }
+        continue;
+      }
+      const NodeTexels l = node_texels(tx, n + 1), r = node_texels(tx, index);
+      const float el = box_entry(l.a, l.b, o, inv, tmin, best), er = box_entry(r.a, r.b, o, inv, tmin, best);
+      // The farther child first onto the stack, so the nearer one is taken next.
+      const bool left_near = el <= er;
+      const float e_far = left_near ? er : el, e_near = left_near ? el : er;
+      const int far = left_near ? index : n + 1, near = left_near ? n + 1 : index;
+      if (e_far < best) {
+        stack[sp] = far;
+        entry[sp++] = e_far;
+      }
+      if (e_near < best) {
+        stack[sp] = near;
+        entry[sp++] = e_near;
+      }
+    }
+    return best < limit ? best : INFINITY;
+  }
+};
+
+// Queries by looping over every point of the cloud (the benchmark's baseline).
+struct AllPointQueries {
+  const CloudTexels& tx;
+  const CloudRange& range;
+  CloudSample field(glm::vec3 p, glm::vec4* attrs) const {
+    CloudSample s;
+    glm::vec4 a(0.0f);
+    for (int i = range.first_point; i < range.first_point + range.point_count; ++i) {
+      const float k = add_point(point_texel(tx, i), p, s);
+      if (attrs && k > 0.0f) a += k * attr_texel(tx, i);
+    }
+    if (attrs) *attrs = s.f > 0.0f ? a / s.f : glm::vec4(0.0f);
+    return s;
+  }
+  float next_entry(glm::vec3 o, glm::vec3 d, float tmin, float limit) const {
+    float best = limit;
+    for (int i = range.first_point; i < range.first_point + range.point_count; ++i) {
+      float t0, t1;
+      if (support_span(point_texel(tx, i), o, d, t0, t1) && t1 >= tmin) best = std::min(best, std::max(t0, tmin));
+    }
+    return best < limit ? best : INFINITY;
+  }
+};
+
+// The minimum of the cubic Hermite interpolant of (g0, m0) at 0 and (g1, m1) at 1 (slopes
+// per unit of u, m0 < 0 < m1): its derivative's root by bisection, as u in (0, 1).
+float hermite_min(float g0, float m0, float g1, float m1, float& value) {
+  const float a = 6.0f * g0 + 3.0f * m0 - 6.0f * g1 + 3.0f * m1, b = -6.0f * g0 - 4.0f * m0 + 6.0f * g1 - 2.0f * m1;
+  float lo = 0.0f, hi = 1.0f;
+  for (int k = 0; k < 10; ++k) {
+    const float u = 0.5f * (lo + hi);
+    if ((a * u + b) * u + m0 < 0.0f) lo = u;
+    else hi = u;
+  }
+  const float u = 0.5f * (lo + hi), u2 = u * u, u3 = u2 * u;
+  value = (2.0f * u3 - 3.0f * u2 + 1.0f) * g0 + (u3 - 2.0f * u2 + u) * m0 + (-2.0f * u3 + 3.0f * u2) * g1 +
+          (u3 - u2) * m1;
+  return u;
+}
+
+template <class Q>
+std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::vec3 d, float tmin, float tmax,
+                              bool inside) {
+  if (c.root < 0 || !(c.min_support > 0.0f)) return std::nullopt;
+  const glm::vec3 inv = 1.0f / d;
+  const glm::vec3 ta = (c.lo - o) * inv, tb = (c.hi - o) * inv;
+  const glm::vec3 mn = glm::min(ta, tb), mx = glm::max(ta, tb);
+  // Outside the root box F = 0: a march from outside starts at the box, one from inside
+  // at tmin (where F < threshold is an exit at once).
+  const float t0 = inside ? tmin : std::max(std::max(mn.x, mn.y), std::max(mn.z, tmin));
+  const float t1 = std::min(std::min(mx.x, mx.y), std::min(mx.z, tmax));
+  if (!inside && !(t0 <= t1)) return std::nullopt;
+  const float h = kCloudStepFraction * c.min_support, sgn = inside ? -1.0f : 1.0f;
+  CloudHit hit;
+  auto sample = [&](float t, float& slope) {
+    const CloudSample s = q.field(o + t * d, nullptr);
+    ++hit.queries;
+    slope = sgn * -glm::dot(s.grad, d);
+    return s.f == 0.0f && !inside ? INFINITY : sgn * (c.threshold - s.f);  // INFINITY: in no support
+  };
+  float t = t0, slope;
+  float g = sample(t, slope);
+  bool found = g <= 0.0f;
+  float a = t, b = t;
+  for (int i = 0; i < kCloudMaxSteps && !found; ++i) {
+    ++hit.steps;
+    if (g == INFINITY) {
+      // In no support: nothing can cross before the next support's entry, where F = 0
+      // with zero slope (the kernel is C2 where it ends).
+      const float te = q.next_entry(o, d, t, t1);
+      ++hit.queries;
+      if (te == INFINITY) return std::nullopt;
+      t = std::max(t, te);
+      g = c.threshold;
+      slope = 0.0f;
+    }
+    const float next = std::min(t + h, t1);
+    float sn;
+    float gn = sample(next, sn);
+    const float gv = gn == INFINITY ? c.threshold : gn;
+    if (gv <= 0.0f) {
+      found = true;
+      a = t;
+      b = next;
+    } else if (slope < 0.0f && sn > 0.0f) {
+      // A dip between the samples: where the Hermite cubic says it comes within a tenth of
+      // the threshold, look at its bottom.
+      float predicted;
+      const float u = hermite_min(g, slope * (next - t), gv, sn * (next - t), predicted);
+      if (predicted < 0.1f * c.threshold) {
+        const float tm = t + u * (next - t);
+        float sm;
+        const float gm = sample(tm, sm);
+        if (gm <= 0.0f) {
+          found = true;
+          a = t;
+          b = tm;
+        }
+      }
+    }
+    if (found) {
+      for (int k = 0; k < kCloudBisections; ++k) {
+        const float m = 0.5f * (a + b);
+        float sm;
+        if (sample(m, sm) <= 0.0f) b = m;
+        else a = m;
+      }
+      break;
+    }
+    if (next >= t1) return std::nullopt;
+    t = next;
+    g = gn;
+    slope = sn;
+  }
+  if (!found) return std::nullopt;
+  hit.t = 0.5f * (a + b);
+  glm::vec4 attrs;
+  const CloudSample s = q.field(o + hit.t * d, &attrs);
+  ++hit.queries;
+  hit.n = glm::length(s.grad) > 0.0f ? -glm::normalize(s.grad) : glm::vec3(0.0f);
+  hit.attrs = attrs;
+  return hit;
+}
+
+}  // namespace
+
+CloudRef cloud_ref(const CloudRange& r, float threshold) { return {r.root, threshold, r.min_support, r.lo, r.hi}; }
+
+CloudSample cloud_field(const CloudTexels& tx, const CloudRef& c, glm::vec3 p) {
+  if (c.root < 0) return {};
+  return TreeQueries{tx, c}.field(p, nullptr);
+}
+
+glm::vec4 cloud_attrs(const CloudTexels& tx, const CloudRef& c, glm::vec3 p) {
+  if (c.root < 0) return glm::vec4(0.0f);
+  glm::vec4 a;
+  TreeQueries{tx, c}.field(p, &a);
+  return a;
+}
+
+float cloud_next_entry(const CloudTexels& tx, const CloudRef& c, glm::vec3 o, glm::vec3 d, float tmin, float limit) {
+  if (c.root < 0) return INFINITY;
+  return TreeQueries{tx, c}.next_entry(o, d, tmin, limit);
+}
+
+std::vector<int> cloud_supports_crossed(const CloudTexels& tx, const CloudRef& c, glm::vec3 o, glm::vec3 d,
+                                        float tmin, float tmax) {
+  std::vector<int> out;
+  if (c.root < 0) return out;
+  const glm::vec3 inv = 1.0f / d;
+  std::vector<int> stack{c.root};
+  while (!stack.empty()) {
+    const int n = stack.back();
+    stack.pop_back();
+    const NodeTexels nd = node_texels(tx, n);
+    if (box_entry(nd.a, nd.b, o, inv, tmin, tmax) == INFINITY) continue;
+    const int index = int(nd.a.w), count = int(nd.b.w);
+    if (count > 0) {
+      for (int i = index; i < index + count; ++i) {
+        float t0, t1;
+        if (support_span(point_texel(tx, i), o, d, t0, t1) && t1 >= tmin && t0 <= tmax) out.push_back(i);
+      }
+    } else {
+      stack.push_back(index);
+      stack.push_back(n + 1);
+    }
+  }
+  return out;
+}
+
+std::optional<CloudHit> march_cloud(const CloudTexels& tx, const CloudRef& c, glm::vec3 o, glm::vec3 d, float tmin,
+                                    float tmax, bool inside) {
+  return march(TreeQueries{tx, c}, c, o, d, tmin, tmax, inside);
+}
+
+std::optional<CloudHit> march_cloud_all_points(const CloudTexels& tx, const CloudRef& c, const CloudRange& range,
+                                               glm::vec3 o, glm::vec3 d, float tmin, float tmax, bool inside) {
+  return march(AllPointQueries{tx, range}, c, o, d, tmin, tmax, inside);
+}
+
+}  // namespace draught
