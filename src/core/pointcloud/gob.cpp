@@ -1,0 +1,250 @@
+#include "core/pointcloud/gob.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace draught {
+namespace {
+
+// Neighbours reach this many spacings; the lists are rebuilt every kRebuild steps (the
+// glass moves well under a tenth of a spacing in that time).
+constexpr double kReach = 1.6;
+constexpr int kRebuild = 4;
+// Gauss-Seidel sweeps of the mobility: many at the start (from zero), few per step
+// (warm-started, the shape changes slowly).
+constexpr int kFirstSweeps = 400;
+constexpr int kSweepsPerStep = 2;
+// Pairs closer than kPushBelow spacings are pushed apart; nearest neighbours drawn
+// past a spacing (up to kPullBelow) are pulled back a little: a weak cohesion that
+// stands in for the pressure the creeping flow lacks (it is not divergence-free, and
+// would thin the glass where it stretches).
+constexpr double kPushBelow = 0.85;
+constexpr double kPullBelow = 1.25;
+constexpr double kPull = 0.1;
+
+void check(double v, double lo, double hi, const char* field) {
+  if (!(v >= lo && v <= hi))
+    throw std::invalid_argument(std::string("gob: ") + field + " is " + std::to_string(v) +
+                                ", expected " + std::to_string(lo) + " to " + std::to_string(hi));
+}
+
+// A 32-bit integer hash (the lowbias32 mix): the lattice's jitter without a global RNG.
+std::uint32_t mix(std::uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x7feb352dU;
+  x ^= x >> 15;
+  x *= 0x846ca68bU;
+  x ^= x >> 16;
+  return x;
+}
+double unit(std::uint32_t h) { return (h >> 8) * (1.0 / 16777216.0) * 2.0 - 1.0; }  // [-1, 1)
+
+glm::dvec3 rotate_x(glm::dvec3 v, double a) {
+  const double c = std::cos(a), s = std::sin(a);
+  return {v.x, c * v.y - s * v.z, s * v.y + c * v.z};
+}
+
+}  // namespace
+
+MoltenGob::MoltenGob(const GobParams& p) : p_(p) {
+  check(p.count, 500, 100000, "count");
+  check(p.radius, 0.01, 0.2, "radius");
+  if (p.blob_radius != 0) check(p.blob_radius, 1e-4, 0.05, "blob_radius");
+  check(p.pipe_radius, 0.003, std::min(0.05, 0.9 * p.radius), "pipe_radius");
+  check(p.pipe_depth, 0, p.radius, "pipe_depth");
+  check(p.turn_rate, -20, 20, "turn_rate");
+  check(p.viscosity, 100, 1e7, "viscosity");
+  check(p.density, 2000, 3000, "density");
+  check(p.gravity, 0, 30, "gravity");
+  check(p.start_kelvin, 293, 2000, "start_kelvin");
+  check(p.ambient_kelvin, 0, 400, "ambient_kelvin");
+  check(p.diffusivity, 0, 1e-4, "diffusivity");
+  check(p.surface.emissivity, 0, 1, "surface.emissivity");
+  check(p.surface.heat_capacity, 700, 1600, "surface.heat_capacity");
+  check(p.surface.convection, 0, 100, "surface.convection");
+
+  // A jittered cubic lattice filling the ball, less the pipe's end inside it, at the
+  // spacing that gives about `count` particles.
+  const glm::dvec3 centre(p.radius - p.pipe_depth, 0, 0);
+  const double r = p.radius, pr = p.pipe_radius;
+  const double pipe_in = M_PI * pr * pr * p.pipe_depth;
+  spacing_ = std::cbrt((4.0 / 3.0 * M_PI * r * r * r - pipe_in) / p.count);
+  blob_ = p.blob_radius != 0 ? p.blob_radius : 0.8 * spacing_;
+  reach_ = kReach * spacing_;
+  const int n = static_cast<int>(std::ceil(r / spacing_)) + 1;
+  for (int k = -n; k <= n; ++k)
+    for (int j = -n; j <= n; ++j)
+      for (int i = -n; i <= n; ++i) {
+        const std::uint32_t h = mix(p.seed * 0x9e3779b9U ^ mix((i + 1024) | (j + 1024) << 11 ^ (k + 1024) << 22));
+        const glm::dvec3 q = centre + spacing_ * glm::dvec3(i + 0.15 * unit(h), j + 0.15 * unit(mix(h + 1)),
+                                                            k + 0.15 * unit(mix(h + 2)));
+        if (glm::length(q - centre) > r) continue;
+        const double axis = std::hypot(q.y, q.z);
+        if (q.x < 0 && axis < pr) continue;  // inside the pipe
+        x_.push_back(q);
+        // Glass wetting the pipe's end and its outside turns with it.
+        pinned_.push_back(q.x <= 0.5 * spacing_ && axis <= pr + 1.2 * spacing_);
+      }
+  phi_.assign(x_.size(), 0.0);
+  temp_.assign(x_.size(), p.start_kelvin);
+  exposure_.assign(x_.size(), 0.0);
+  build_neighbours();
+  relax_mobility(kFirstSweeps);
+}
+
+void MoltenGob::build_neighbours() {
+  const std::size_t n = x_.size();
+  glm::dvec3 lo(1e30), hi(-1e30);
+  for (auto& q : x_) {
+    lo = glm::min(lo, q);
+    hi = glm::max(hi, q);
+  }
+  const glm::ivec3 dim = glm::ivec3((hi - lo) / reach_) + 1;
+  auto cell_of = [&](const glm::dvec3& q) {
+    const glm::ivec3 c = glm::clamp(glm::ivec3((q - lo) / reach_), glm::ivec3(0), dim - 1);
+    return (c.z * dim.y + c.y) * dim.x + c.x;
+  };
+  // Counting sort of the particles into cells.
+  std::vector<int> cell_start(static_cast<std::size_t>(dim.x) * dim.y * dim.z + 1, 0), order(n);
+  for (auto& q : x_) ++cell_start[cell_of(q) + 1];
+  for (std::size_t c = 1; c < cell_start.size(); ++c) cell_start[c] += cell_start[c - 1];
+  std::vector<int> fill(cell_start.begin(), cell_start.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) order[fill[cell_of(x_[i])]++] = static_cast<int>(i);
+
+  start_.assign(n + 1, 0);
+  nbr_.clear();
+  w_.clear();
+  mean_r2_.assign(n, 0.0);
+  weight_sum_.assign(n, 0.0);
+  const double reach2 = reach_ * reach_;
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::ivec3 c = glm::clamp(glm::ivec3((x_[i] - lo) / reach_), glm::ivec3(0), dim - 1);
+    double ws = 0, wr2 = 0;
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const glm::ivec3 d = c + glm::ivec3(dx, dy, dz);
+          if (glm::any(glm::lessThan(d, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(d, dim))) continue;
+          const int cell = (d.z * dim.y + d.y) * dim.x + d.x;
+          for (int k = cell_start[cell]; k < cell_start[cell + 1]; ++k) {
+            const int j = order[k];
+            if (j == static_cast<int>(i)) continue;
+            const glm::dvec3 e = x_[j] - x_[i];
+            const double r2 = glm::dot(e, e);
+            if (r2 >= reach2) continue;
+            const double w = 1.0 - std::sqrt(r2) / reach_;
+            nbr_.push_back(j);
+            w_.push_back(static_cast<float>(w));
+            ws += w;
+            wr2 += w * r2;
+          }
+        }
+    start_[i + 1] = static_cast<int>(nbr_.size());
+    weight_sum_[i] = ws;
+    mean_r2_[i] = ws > 0 ? wr2 / ws : spacing_ * spacing_;
+  }
+  // The weight of a full neighbourhood: the 75th percentile over all particles (more
+  // than half of them are inside), taken afresh as the packing drifts.
+  std::vector<double> sorted = weight_sum_;
+  std::nth_element(sorted.begin(), sorted.begin() + 3 * n / 4, sorted.end());
+  interior_weight_ = sorted[3 * n / 4];
+  // 0.85 of a full neighbourhood or more: inside; half of one: a flat face.
+  for (std::size_t i = 0; i < n; ++i)
+    exposure_[i] = std::clamp((0.85 - weight_sum_[i] / interior_weight_) / 0.35, 0.0, 1.0);
+}
+
+void MoltenGob::relax_mobility(int sweeps) {
+  // Discretely nu laplace(phi) = -1 with laplace(phi)_i ~ 6 (mean_j phi_j - phi_i) / <r^2>_i
+  // (the weighted mean over neighbours), so phi_i = mean_j phi_j + <r^2>_i / (6 nu).
+  const double nu = p_.viscosity / p_.density;  // kinematic, m^2/s
+  for (int s = 0; s < sweeps; ++s)
+    for (std::size_t i = 0; i < x_.size(); ++i) {
+      if (pinned_[i]) continue;
+      double sum = 0;
+      for (int k = start_[i]; k < start_[i + 1]; ++k) sum += w_[k] * phi_[nbr_[k]];
+      const double mean = weight_sum_[i] > 0 ? sum / weight_sum_[i] : 0.0;
+      phi_[i] = mean + mean_r2_[i] / (6.0 * nu);
+    }
+}
+
+double MoltenGob::angle() const { return p_.turn_rate * time(); }
+
+glm::dvec3 MoltenGob::position(std::size_t i) const { return rotate_x(x_[i], angle()); }
+
+glm::dvec3 MoltenGob::centre_of_mass() const {
+  glm::dvec3 s(0.0);
+  for (std::size_t i = 0; i < x_.size(); ++i) s += position(i);
+  return s / static_cast<double>(x_.size());
+}
+
+void MoltenGob::step() {
+  if (steps_ % kRebuild == 0 && steps_ > 0) build_neighbours();
+  relax_mobility(kSweepsPerStep);
+  // Gravity in the pipe's frame: the world's (0, -g, 0) turned back by the pipe's angle.
+  const double a = angle() + 0.5 * p_.turn_rate * kStep;  // mid-step
+  const glm::dvec3 g = rotate_x(glm::dvec3(0, -p_.gravity, 0), -a);
+  for (std::size_t i = 0; i < x_.size(); ++i) x_[i] += kStep * phi_[i] * g;
+  // Keep the spacing: pairs too close are pushed apart, pairs drawn apart pulled back a
+  // little, half each (a pinned one stays).
+  const double push = kPushBelow * spacing_, pull = kPullBelow * spacing_;
+  for (std::size_t i = 0; i < x_.size(); ++i)
+    for (int k = start_[i]; k < start_[i + 1]; ++k) {
+      const int j = nbr_[k];
+      if (j < static_cast<int>(i)) continue;  // each pair once
+      const glm::dvec3 e = x_[j] - x_[i];
+      const double r = glm::length(e);
+      if (r <= 0 || (r >= push && (r <= spacing_ || r >= pull))) continue;
+      const glm::dvec3 d = r < push ? e * (0.25 * (push - r) / r) : e * (0.5 * kPull * (spacing_ - r) / r);
+      if (!pinned_[i]) x_[i] -= d;
+      if (!pinned_[j]) x_[j] += d;
+    }
+  // Heat: lost at the surface by radiation and convection (a surface particle holds a
+  // layer one spacing thick), spread by conduction.
+  GlassCooling layer = p_.surface;
+  layer.thickness = spacing_;
+  layer.density = p_.density;
+  for (std::size_t i = 0; i < x_.size(); ++i) {
+    double t = temp_[i];
+    if (weight_sum_[i] > 0 && p_.diffusivity > 0) {
+      double sum = 0;
+      for (int k = start_[i]; k < start_[i + 1]; ++k) sum += w_[k] * temp_[nbr_[k]];
+      const double c = std::min(1.0, kStep * p_.diffusivity * 6.0 / mean_r2_[i]);
+      t += c * (sum / weight_sum_[i] - t);
+    }
+    if (exposure_[i] > 0) t += kStep * exposure_[i] * glass_cooling_rate(layer, t, p_.ambient_kelvin);
+    temp_[i] = t;
+  }
+  ++steps_;
+}
+
+void MoltenGob::advance(double seconds) {
+  if (!(seconds > 0)) return;
+  pending_ += seconds;
+  while (pending_ >= kStep * (1 - 1e-9)) {
+    step();
+    pending_ -= kStep;
+  }
+}
+
+PointCloud MoltenGob::cloud() const {
+  PointCloud c;
+  c.default_radius = static_cast<float>(blob_);
+  c.position.reserve(x_.size());
+  c.temperature.reserve(x_.size());
+  c.velocity.reserve(x_.size());
+  const double a = angle();
+  const glm::dvec3 g = rotate_x(glm::dvec3(0, -p_.gravity, 0), -a);
+  for (std::size_t i = 0; i < x_.size(); ++i) {
+    const glm::dvec3 q = rotate_x(x_[i], a);
+    c.position.emplace_back(q);
+    c.temperature.push_back(static_cast<float>(temp_[i]));
+    // The turn (omega x q about +x) and the creeping flow turned into the gob's frame.
+    const glm::dvec3 v = glm::dvec3(0, -p_.turn_rate * q.z, p_.turn_rate * q.y) + rotate_x(phi_[i] * g, a);
+    c.velocity.emplace_back(v);
+  }
+  return c;
+}
+
+}  // namespace draught
