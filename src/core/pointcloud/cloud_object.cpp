@@ -4,12 +4,14 @@
 #include "core/params/json_input.hpp"
 #include "core/pointcloud/blackbody.hpp"
 #include "core/pointcloud/cloud_files.hpp"
+#include "core/pointcloud/glass_heat.hpp"
 #include "core/pointcloud/gob.hpp"
 #include "core/pointcloud/stream.hpp"
 #include "core/text/suggest.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -173,6 +175,7 @@ nlohmann::json point_cloud_params_json(const PointCloudParams& p) {
 
 struct CloudSource::State {
   std::optional<MoltenGob> gob;
+  GobParams gob_params;
   std::optional<PourStream> stream;
   std::optional<PointCloudSequence> sequence;  // a numbered run of files
   std::shared_ptr<const PointCloud> still;      // one file, placed once
@@ -191,6 +194,27 @@ bool numbered(const std::string& file) {
   const std::string stem = f.stem().string();
   return f.filename().string().find('%') != std::string::npos ||
          (!stem.empty() && std::isdigit(static_cast<unsigned char>(stem.back())));
+}
+
+// The gob's blowpipe, drawn as points of the same cloud: a row along -x from inside the
+// gob, cold (no glow) and nearly black (their colour darkens the light that enters
+// them: a dark, glossy steel tube under the same reflections). The gob's own points are
+// white (colour leaves their light as it is).
+PointCloud with_pipe(PointCloud c, const GobParams& g) {
+  constexpr double kPipeLength = 0.3;  // m shown behind the gob
+  const double r = g.pipe_radius, spacing = 0.5 * r;
+  const std::size_t gob = c.size();
+  if (c.radius.empty()) c.radius.assign(gob, c.default_radius);
+  if (c.temperature.empty()) c.temperature.assign(gob, float(g.start_kelvin));
+  c.color.assign(gob, glm::vec3(1.0f));
+  c.velocity.clear();
+  for (double x = g.pipe_depth; x > -kPipeLength; x -= spacing) {
+    c.position.push_back(glm::vec3(float(x), 0.0f, 0.0f));
+    c.radius.push_back(float(r));
+    c.temperature.push_back(float(g.ambient_kelvin));
+    c.color.push_back(glm::vec3(0.04f));
+  }
+  return c;
 }
 
 std::uint64_t next_version() {
@@ -224,11 +248,13 @@ CloudSource::CloudSource(const PointCloudParams& p, glm::vec3 position, float ya
     case CloudSourceKind::Gob: {
       GobParams g;
       g.count = p.count;
-      g.gob_radius = p.gob_radius;
+      g.radius = p.gob_radius;
       g.blob_radius = p.blob_radius;
+      g.pipe_radius = std::min(g.pipe_radius, 0.5 * g.radius);
+      g.pipe_depth = std::min(g.pipe_depth, 0.5 * g.radius);
       g.turn_rate = p.turn;
-      g.start_kelvin = p.temperature;
-      g.cooling_time = p.cooling;
+      g.start_kelvin = std::clamp(double(p.temperature), 293.0, 2000.0);
+      state_->gob_params = g;
       state_->gob.emplace(g);
       state_->gob->advance(p.age);
       break;
@@ -269,13 +295,14 @@ void CloudSource::advance_to(double t) {
 
 CloudFrame CloudSource::frame() const {
   State& s = *state_;
-  const double room = kRoomKelvin;
+  const double room = kZeroCelsius + 20.0;
   const double kelvin = params_.cooling > 0 ? cooled_temperature(params_.temperature, room, time_, params_.cooling)
                                             : double(params_.temperature);
   if (s.dirty || !s.placed) {
     if (s.gob) {
-      s.placed = place_cloud(s.gob->cloud(), PointCloudParams{params_.source, "", 0, true, 1.0f, params_.blob_radius},
-                             position_, yaw_, kelvin);
+      PointCloudParams unit = params_;
+      unit.scale = 1.0f;
+      s.placed = place_cloud(with_pipe(s.gob->cloud(), s.gob_params), unit, position_, yaw_, kelvin);
     } else if (s.stream) {
       auto c = std::make_shared<PointCloud>(s.stream->cloud());  // already in the world
       if (c->temperature.empty()) c->temperature.assign(c->size(), float(kelvin));
