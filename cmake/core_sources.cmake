@@ -12,6 +12,10 @@ set(DRAUGHT_CORE_SOURCES
   src/core/droplets/field.cpp
   src/core/droplets/droplets.cpp
   src/core/droplets/trail.cpp
+  src/core/pointcloud/blackbody.cpp
+  src/core/pointcloud/glass_heat.cpp
+  src/core/pointcloud/gob.cpp
+  src/core/pointcloud/stream.cpp
   src/core/vessel/profile.cpp
   src/core/vessel/vessel.cpp
   src/core/vessel/fill_table.cpp
