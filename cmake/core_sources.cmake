@@ -24,6 +24,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/pointcloud/bvh.cpp
   src/core/pointcloud/field.cpp
   src/core/pointcloud/cloud_texels.cpp
+  src/core/pointcloud/stream.cpp
   src/core/vessel/profile.cpp
   src/core/vessel/vessel.cpp
   src/core/vessel/fill_table.cpp

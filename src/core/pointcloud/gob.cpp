@@ -74,10 +74,11 @@ MoltenGob::MoltenGob(const GobParams& p) : p_(p) {
   blob_ = p.blob_radius != 0 ? p.blob_radius : 0.8 * spacing_;
   reach_ = kReach * spacing_;
   const int n = static_cast<int>(std::ceil(r / spacing_)) + 1;
+  const auto u = [](int v) { return static_cast<std::uint32_t>(v + 1024); };  // 11 bits each
   for (int k = -n; k <= n; ++k)
     for (int j = -n; j <= n; ++j)
       for (int i = -n; i <= n; ++i) {
-        const std::uint32_t h = mix(p.seed * 0x9e3779b9U ^ mix((i + 1024) | (j + 1024) << 11 ^ (k + 1024) << 22));
+        const std::uint32_t h = mix(p.seed * 0x9e3779b9U ^ mix(u(i) | u(j) << 11 | u(k) << 22));
         const glm::dvec3 q = centre + spacing_ * glm::dvec3(i + 0.15 * unit(h), j + 0.15 * unit(mix(h + 1)),
                                                             k + 0.15 * unit(mix(h + 2)));
         if (glm::length(q - centre) > r) continue;
