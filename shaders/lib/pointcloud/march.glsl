@@ -1,0 +1,216 @@
+// A point cloud's surface, F = sum (1 - |p - c|^2 / R^2)^3 = threshold over the points
+// whose support holds p, marched through the cloud's BVH in the data textures u_cloud_points,
+// u_cloud_attrs, u_cloud_nodes (src/interface/objects.def, gpu/cloud_textures). GLSL twin
+// of core/pointcloud/field.cpp's float march (the same function names and steps;
+// tests/gpu/test_cloud_march.cpp compares them). docs/pointcloud-tree.md.
+#ifndef LIB_POINTCLOUD_MARCH_GLSL
+#define LIB_POINTCLOUD_MARCH_GLSL
+#include "generated/constants.glsl"
+#include "generated/objects.glsl"
+#include "lib/common/math.glsl"
+
+// One cloud of the shared textures (core: CloudRef, filled from its CloudRange).
+struct CloudRef {
+  int root;           // its root node; < 0: empty
+  float threshold;    // the surface's level of F
+  float min_support;  // its smallest support radius (m): the step's scale
+  vec3 lo;            // its root box (m, world)
+  vec3 hi;
+};
+
+ivec2 cloud_texel(int i) { return ivec2(i % CLOUD_TEXTURE_WIDTH, i / CLOUD_TEXTURE_WIDTH); }
+vec4 cloud_point(int i) { return texelFetch(u_cloud_points, cloud_texel(i), 0); }
+vec4 cloud_attr(int i) { return texelFetch(u_cloud_attrs, cloud_texel(i), 0); }
+// A node's two texels: (lo, index), (hi, count); both in one row (the width is even).
+void cloud_node(int n, out vec4 a, out vec4 b) {
+  a = texelFetch(u_cloud_nodes, cloud_texel(2 * n), 0);
+  b = texelFetch(u_cloud_nodes, cloud_texel(2 * n + 1), 0);
+}
+
+// Twin of box_entry: the entry into [lo, hi] within [tmin, tmax]; INF when it misses.
+float cloud_box_entry(vec3 lo, vec3 hi, vec3 o, vec3 inv, float tmin, float tmax) {
+  vec3 ta = (lo - o) * inv, tb = (hi - o) * inv;
+  vec3 mn = min(ta, tb), mx = max(ta, tb);
+  float t0 = max(max(mn.x, mn.y), max(mn.z, tmin)), t1 = min(min(mx.x, mx.y), min(mx.z, tmax));
+  return t0 <= t1 ? t0 : INF;
+}
+
+// Twin of TreeQueries::field: F (w) and grad F (xyz) at p; with_attrs also returns the
+// k-weighted temperature and colour.
+vec4 cloud_field_at(CloudRef c, vec3 p, bool with_attrs, out vec4 attrs) {
+  float f = 0.0;
+  vec3 grad = vec3(0.0);
+  vec4 acc = vec4(0.0);
+  int stack[CLOUD_MAX_DEPTH + 1];
+  int sp = 0;
+  stack[sp++] = c.root;
+  while (sp > 0) {
+    int n = stack[--sp];
+    vec4 a, b;
+    cloud_node(n, a, b);
+    if (any(lessThan(p, a.xyz)) || any(greaterThan(p, b.xyz))) continue;
+    int index = int(a.w), count = int(b.w);
+    if (count > 0) {
+      for (int i = index; i < index + count; ++i) {
+        vec4 pt = cloud_point(i);
+        vec3 q = p - pt.xyz;
+        float inv_r2 = 1.0 / (pt.w * pt.w), u = dot(q, q) * inv_r2;
+        if (u >= 1.0) continue;
+        float w = 1.0 - u, k = w * w * w;
+        f += k;
+        grad += (-6.0 * w * w * inv_r2) * q;
+        if (with_attrs) acc += k * cloud_attr(i);
+      }
+    } else {
+      stack[sp++] = index;
+      stack[sp++] = n + 1;
+    }
+  }
+  attrs = f > 0.0 ? acc / f : vec4(0.0);
+  return vec4(grad, f);
+}
+
+// Twin of TreeQueries::next_entry: the smallest t >= tmin below limit where o + t d is
+// in a support (ordered: the nearer child first, boxes beyond the best pruned); INF: none.
+float cloud_next_entry(CloudRef c, vec3 o, vec3 d, float tmin, float limit) {
+  vec3 inv = 1.0 / d;
+  float best = limit;
+  int stack[CLOUD_MAX_DEPTH + 1];
+  float entry[CLOUD_MAX_DEPTH + 1];
+  int sp = 0;
+  vec4 a, b;
+  cloud_node(c.root, a, b);
+  float e0 = cloud_box_entry(a.xyz, b.xyz, o, inv, tmin, best);
+  if (e0 == INF) return INF;
+  stack[0] = c.root;
+  entry[0] = e0;
+  sp = 1;
+  while (sp > 0) {
+    --sp;
+    if (!(entry[sp] < best)) continue;
+    int n = stack[sp];
+    cloud_node(n, a, b);
+    int index = int(a.w), count = int(b.w);
+    if (count > 0) {
+      for (int i = index; i < index + count; ++i) {
+        vec4 pt = cloud_point(i);
+        vec3 q = o - pt.xyz;
+        float bq = dot(q, d), disc = bq * bq - (dot(q, q) - pt.w * pt.w);
+        if (!(disc > 0.0)) continue;
+        float sq = sqrt(disc), t0 = -bq - sq, t1 = -bq + sq;
+        if (t1 >= tmin) best = min(best, max(t0, tmin));
+      }
+      continue;
+    }
+    vec4 la, lb, ra, rb;
+    cloud_node(n + 1, la, lb);
+    cloud_node(index, ra, rb);
+    float el = cloud_box_entry(la.xyz, lb.xyz, o, inv, tmin, best);
+    float er = cloud_box_entry(ra.xyz, rb.xyz, o, inv, tmin, best);
+    bool left_near = el <= er;
+    float e_far = left_near ? er : el, e_near = left_near ? el : er;
+    int far_node = left_near ? index : n + 1, near_node = left_near ? n + 1 : index;
+    if (e_far < best) {
+      stack[sp] = far_node;
+      entry[sp++] = e_far;
+    }
+    if (e_near < best) {
+      stack[sp] = near_node;
+      entry[sp++] = e_near;
+    }
+  }
+  return best < limit ? best : INF;
+}
+
+// Twin of hermite_min: the minimum of the cubic Hermite interpolant on [0, 1] of (g0, m0)
+// and (g1, m1), m0 < 0 < m1; returns u, its value in `value`.
+float cloud_hermite_min(float g0, float m0, float g1, float m1, out float value) {
+  float a = 6.0 * g0 + 3.0 * m0 - 6.0 * g1 + 3.0 * m1, b = -6.0 * g0 - 4.0 * m0 + 6.0 * g1 - 2.0 * m1;
+  float lo = 0.0, hi = 1.0;
+  for (int k = 0; k < 10; ++k) {
+    float u = 0.5 * (lo + hi);
+    if ((a * u + b) * u + m0 < 0.0) lo = u;
+    else hi = u;
+  }
+  float u = 0.5 * (lo + hi), u2 = u * u, u3 = u2 * u;
+  value = (2.0 * u3 - 3.0 * u2 + 1.0) * g0 + (u3 - 2.0 * u2 + u) * m0 + (-2.0 * u3 + 3.0 * u2) * g1 + (u3 - u2) * m1;
+  return u;
+}
+
+// sgn (threshold - F) at o + t d and its slope; INF where no support holds the point (outside only).
+float cloud_g(CloudRef c, vec3 o, vec3 d, float t, float sgn, bool inside, out float slope) {
+  vec4 unused;
+  vec4 s = cloud_field_at(c, o + t * d, false, unused);
+  slope = sgn * -dot(s.xyz, d);
+  return s.w == 0.0 && !inside ? INF : sgn * (c.threshold - s.w);
+}
+
+// Twin of march_cloud: the first crossing of F = threshold along o + t d (d unit), t in
+// [tmin, tmax], from outside or (inside) the exit; its normal normalize(-grad F) and the
+// k-weighted (temperature, r, g, b).
+bool march_cloud(CloudRef c, vec3 o, vec3 d, float tmin, float tmax, bool inside, out float t_hit, out vec3 n,
+                 out vec4 attrs) {
+  t_hit = INF;
+  n = vec3(0.0);
+  attrs = vec4(0.0);
+  if (c.root < 0 || !(c.min_support > 0.0)) return false;
+  vec3 inv = 1.0 / d;
+  vec3 ta = (c.lo - o) * inv, tb = (c.hi - o) * inv;
+  vec3 mn = min(ta, tb), mx = max(ta, tb);
+  float t0 = inside ? tmin : max(max(mn.x, mn.y), max(mn.z, tmin));
+  float t1 = min(min(mx.x, mx.y), min(mx.z, tmax));
+  if (!inside && !(t0 <= t1)) return false;
+  float h = CLOUD_STEP_FRACTION * c.min_support, sgn = inside ? -1.0 : 1.0;
+  float t = t0, slope;
+  float g = cloud_g(c, o, d, t, sgn, inside, slope);
+  bool found = g <= 0.0;
+  float a = t, b = t;
+  for (int i = 0; i < CLOUD_MAX_STEPS; ++i) {
+    if (found) break;
+    if (g == INF) {
+      float te = cloud_next_entry(c, o, d, t, t1);
+      if (te == INF) return false;
+      t = max(t, te);
+      g = c.threshold;
+      slope = 0.0;
+    }
+    float next = min(t + h, t1), sn;
+    float gn = cloud_g(c, o, d, next, sgn, inside, sn);
+    float gv = gn == INF ? c.threshold : gn;
+    if (gv <= 0.0) {
+      found = true;
+      a = t;
+      b = next;
+    } else if (slope < 0.0 && sn > 0.0) {
+      float predicted;
+      float u = cloud_hermite_min(g, slope * (next - t), gv, sn * (next - t), predicted);
+      if (predicted < 0.1 * c.threshold) {
+        float tm = t + u * (next - t), sm;
+        if (cloud_g(c, o, d, tm, sgn, inside, sm) <= 0.0) {
+          found = true;
+          a = t;
+          b = tm;
+        }
+      }
+    }
+    if (found) {
+      for (int k = 0; k < CLOUD_BISECTIONS; ++k) {
+        float m = 0.5 * (a + b), sm;
+        if (cloud_g(c, o, d, m, sgn, inside, sm) <= 0.0) b = m;
+        else a = m;
+      }
+      break;
+    }
+    if (next >= t1) return false;
+    t = next;
+    g = gn;
+    slope = sn;
+  }
+  if (!found) return false;
+  t_hit = 0.5 * (a + b);
+  vec4 s = cloud_field_at(c, o + t_hit * d, true, attrs);
+  n = length(s.xyz) > 0.0 ? -normalize(s.xyz) : vec3(0.0);
+  return true;
+}
+
+#endif  // LIB_POINTCLOUD_MARCH_GLSL
