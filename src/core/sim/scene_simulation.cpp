@@ -1,5 +1,7 @@
 #include "core/sim/scene_simulation.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -22,7 +24,8 @@ void SceneSimulation::set_scene(const Scene& s) {
   if (!same_list) {
     sims_.assign(s.objects.size(), std::nullopt);
     trails_.assign(s.objects.size(), std::nullopt);
-    clouds_.assign(s.objects.size(), std::nullopt);
+    clouds_.clear();  // (sources move, they do not copy)
+    clouds_.resize(s.objects.size());
     releases_.assign(s.objects.size(), Release{});
   }
   for (size_t i = 0; i < s.objects.size(); ++i) {

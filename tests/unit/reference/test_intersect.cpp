@@ -621,6 +621,7 @@ std::string check_first_hit(const SceneGeometry& scene, const Ray& ray, double t
       break;
     case Material::None: break;
     case Material::Droplet: break;  // not a vessel surface (tests/unit/droplets)
+    case Material::Cloud: break;    // not a vessel surface (tests/unit/pointcloud)
   }
   if (!err.str().empty()) return head.str() + err.str() + " (" + material_name(hit.m) + ")";
   // 3. It is a crossing, and the normal points out of the glass (glass surfaces) or
