@@ -16,13 +16,10 @@ constexpr int kRebuild = 4;
 // (warm-started, the shape changes slowly).
 constexpr int kFirstSweeps = 400;
 constexpr int kSweepsPerStep = 2;
-// Pairs closer than kPushBelow spacings are pushed apart; nearest neighbours drawn
-// past a spacing (up to kPullBelow) are pulled back a little: a weak cohesion that
-// stands in for the pressure the creeping flow lacks (it is not divergence-free, and
-// would thin the glass where it stretches).
-constexpr double kPushBelow = 0.85;
-constexpr double kPullBelow = 1.25;
-constexpr double kPull = 0.1;
+// The density projection's relaxation (of a full step towards the rest density) and
+// its regulariser (of a typical denominator).
+constexpr double kDensityRelax = 0.5;
+constexpr double kDensityEps = 0.05;
 
 void check(double v, double lo, double hi, const char* field) {
   if (!(v >= lo && v <= hi))
@@ -92,6 +89,7 @@ MoltenGob::MoltenGob(const GobParams& p) : p_(p) {
   temp_.assign(x_.size(), p.start_kelvin);
   exposure_.assign(x_.size(), 0.0);
   build_neighbours();
+  measure_rest_density();
   relax_mobility(kFirstSweeps);
 }
 
@@ -170,6 +168,33 @@ void MoltenGob::relax_mobility(int sweeps) {
     }
 }
 
+void MoltenGob::measure_rest_density() {
+  // The rest density and a typical denominator: 75th percentiles over all particles
+  // (more than half of them are inside) of the starting lattice.
+  const std::size_t n = x_.size();
+  const double h2 = reach_ * reach_;
+  std::vector<double> rho(n), denom(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    double r = 1.0, sum2 = 0;
+    glm::dvec3 gi(0.0);
+    for (int k = start_[i]; k < start_[i + 1]; ++k) {
+      const glm::dvec3 e = x_[i] - x_[nbr_[k]];
+      const double q = 1.0 - glm::dot(e, e) / h2;
+      if (q <= 0) continue;
+      r += q * q * q;
+      const glm::dvec3 gj = (6.0 * q * q / h2) * e;
+      gi -= gj;
+      sum2 += glm::dot(gj, gj);
+    }
+    rho[i] = r;
+    denom[i] = sum2 + glm::dot(gi, gi);
+  }
+  std::nth_element(rho.begin(), rho.begin() + 3 * n / 4, rho.end());
+  std::nth_element(denom.begin(), denom.begin() + 3 * n / 4, denom.end());
+  rest_density_ = rho[3 * n / 4];
+  rest_eps_ = kDensityEps * denom[3 * n / 4] / (rest_density_ * rest_density_);
+}
+
 double MoltenGob::angle() const { return p_.turn_rate * time(); }
 
 glm::dvec3 MoltenGob::position(std::size_t i) const { return rotate_x(x_[i], angle()); }
@@ -180,6 +205,48 @@ glm::dvec3 MoltenGob::centre_of_mass() const {
   return s / static_cast<double>(x_.size());
 }
 
+void MoltenGob::keep_density() {
+  // One position-based projection (Macklin and Mueller, "Position Based Fluids", 2013)
+  // towards the rest density: it stands in for the pressure the creeping flow lacks
+  // (that flow is not divergence-free: without it the glass would pack or thin).
+  // Exposed particles only push (their missing neighbours are not a deficit), so the
+  // surface is not drawn in.
+  const std::size_t n = x_.size();
+  const double h2 = reach_ * reach_;
+  lambda_.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    double rho = 1.0, sum2 = 0;
+    glm::dvec3 gi(0.0);
+    for (int k = start_[i]; k < start_[i + 1]; ++k) {
+      const glm::dvec3 e = x_[i] - x_[nbr_[k]];
+      const double q = 1.0 - glm::dot(e, e) / h2;
+      if (q <= 0) continue;
+      rho += q * q * q;
+      const glm::dvec3 gj = (6.0 * q * q / (h2 * rest_density_)) * e;  // d C_i / d x_j
+      gi -= gj;
+      sum2 += glm::dot(gj, gj);
+    }
+    double c = rho / rest_density_ - 1.0;
+    if (exposure_[i] > 0) c = std::max(c, 0.0);
+    const double denom = sum2 + glm::dot(gi, gi);
+    lambda_[i] = -c / (denom + rest_eps_);
+  }
+  dx_.assign(n, glm::dvec3(0.0));
+  for (std::size_t i = 0; i < n; ++i) {
+    if (pinned_[i]) continue;
+    glm::dvec3 d(0.0);
+    for (int k = start_[i]; k < start_[i + 1]; ++k) {
+      const int j = nbr_[k];
+      const glm::dvec3 e = x_[i] - x_[j];
+      const double q = 1.0 - glm::dot(e, e) / h2;
+      if (q <= 0) continue;
+      d -= (lambda_[i] + lambda_[j]) * (6.0 * q * q / h2) * e;
+    }
+    dx_[i] = d * (kDensityRelax / rest_density_);
+  }
+  for (std::size_t i = 0; i < n; ++i) x_[i] += dx_[i];
+}
+
 void MoltenGob::step() {
   if (steps_ % kRebuild == 0 && steps_ > 0) build_neighbours();
   relax_mobility(kSweepsPerStep);
@@ -187,20 +254,7 @@ void MoltenGob::step() {
   const double a = angle() + 0.5 * p_.turn_rate * kStep;  // mid-step
   const glm::dvec3 g = rotate_x(glm::dvec3(0, -p_.gravity, 0), -a);
   for (std::size_t i = 0; i < x_.size(); ++i) x_[i] += kStep * phi_[i] * g;
-  // Keep the spacing: pairs too close are pushed apart, pairs drawn apart pulled back a
-  // little, half each (a pinned one stays).
-  const double push = kPushBelow * spacing_, pull = kPullBelow * spacing_;
-  for (std::size_t i = 0; i < x_.size(); ++i)
-    for (int k = start_[i]; k < start_[i + 1]; ++k) {
-      const int j = nbr_[k];
-      if (j < static_cast<int>(i)) continue;  // each pair once
-      const glm::dvec3 e = x_[j] - x_[i];
-      const double r = glm::length(e);
-      if (r <= 0 || (r >= push && (r <= spacing_ || r >= pull))) continue;
-      const glm::dvec3 d = r < push ? e * (0.25 * (push - r) / r) : e * (0.5 * kPull * (spacing_ - r) / r);
-      if (!pinned_[i]) x_[i] -= d;
-      if (!pinned_[j]) x_[j] += d;
-    }
+  keep_density();
   // Heat: lost at the surface by radiation and convection (a surface particle holds a
   // layer one spacing thick), spread by conduction.
   GlassCooling layer = p_.surface;
