@@ -1,4 +1,5 @@
 #include "core/pointcloud/gob.hpp"
+#include "core/math/hash.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +19,7 @@ constexpr int kFirstSweeps = 400;
 constexpr int kSweepsPerStep = 2;
 // The density projection's relaxation (of a full step towards the rest density) and
 // its regulariser (of a typical denominator).
-constexpr double kDensityRelax = 0.5;
+constexpr double kDensityRelax = 1.0;
 constexpr double kDensityEps = 0.05;
 
 void check(double v, double lo, double hi, const char* field) {
@@ -26,17 +27,6 @@ void check(double v, double lo, double hi, const char* field) {
     throw std::invalid_argument(std::string("gob: ") + field + " is " + std::to_string(v) +
                                 ", expected " + std::to_string(lo) + " to " + std::to_string(hi));
 }
-
-// A 32-bit integer hash (the lowbias32 mix): the lattice's jitter without a global RNG.
-std::uint32_t mix(std::uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return x;
-}
-double unit(std::uint32_t h) { return (h >> 8) * (1.0 / 16777216.0) * 2.0 - 1.0; }  // [-1, 1)
 
 glm::dvec3 rotate_x(glm::dvec3 v, double a) {
   const double c = std::cos(a), s = std::sin(a);
@@ -71,13 +61,14 @@ MoltenGob::MoltenGob(const GobParams& p) : p_(p) {
   blob_ = p.blob_radius != 0 ? p.blob_radius : 0.8 * spacing_;
   reach_ = kReach * spacing_;
   const int n = static_cast<int>(std::ceil(r / spacing_)) + 1;
-  const auto u = [](int v) { return static_cast<std::uint32_t>(v + 1024); };  // 11 bits each
+  const auto u = [](int v) { return static_cast<std::uint64_t>(v + 1024); };  // 11 bits each
   for (int k = -n; k <= n; ++k)
     for (int j = -n; j <= n; ++j)
       for (int i = -n; i <= n; ++i) {
-        const std::uint32_t h = mix(p.seed * 0x9e3779b9U ^ mix(u(i) | u(j) << 11 | u(k) << 22));
-        const glm::dvec3 q = centre + spacing_ * glm::dvec3(i + 0.15 * unit(h), j + 0.15 * unit(mix(h + 1)),
-                                                            k + 0.15 * unit(mix(h + 2)));
+        // The lattice's jitter: up to 0.15 spacing per axis, from the project's hash.
+        const std::uint64_t cell = u(i) | u(j) << 11 | u(k) << 22;
+        auto jitter = [&](int axis) { return 0.15 * (2 * hash01(p.seed, cell, axis, 0) - 1); };
+        const glm::dvec3 q = centre + spacing_ * glm::dvec3(i + jitter(0), j + jitter(1), k + jitter(2));
         if (glm::length(q - centre) > r) continue;
         const double axis = std::hypot(q.y, q.z);
         if (q.x < 0 && axis < pr) continue;  // inside the pipe

@@ -42,7 +42,7 @@ struct GobParams {
   GlassCooling surface{};        // emissivity, heat capacity, convection of the surface
                                  // (its thickness is unused: a surface particle's layer is
                                  // one spacing thick)
-  std::uint32_t seed = 1;        // the lattice's jitter
+  std::uint32_t seed = 1;        // the lattice's jitter (core/math/hash.hpp)
 };
 
 class MoltenGob {
