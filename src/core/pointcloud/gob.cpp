@@ -1,4 +1,5 @@
 #include "core/pointcloud/gob.hpp"
+#include "core/math/hash.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,30 +17,16 @@ constexpr int kRebuild = 4;
 // (warm-started, the shape changes slowly).
 constexpr int kFirstSweeps = 400;
 constexpr int kSweepsPerStep = 2;
-// Pairs closer than kPushBelow spacings are pushed apart; nearest neighbours drawn
-// past a spacing (up to kPullBelow) are pulled back a little: a weak cohesion that
-// stands in for the pressure the creeping flow lacks (it is not divergence-free, and
-// would thin the glass where it stretches).
-constexpr double kPushBelow = 0.85;
-constexpr double kPullBelow = 1.25;
-constexpr double kPull = 0.1;
+// The density projection's relaxation (of a full step towards the rest density) and
+// its regulariser (of a typical denominator).
+constexpr double kDensityRelax = 1.0;
+constexpr double kDensityEps = 0.05;
 
 void check(double v, double lo, double hi, const char* field) {
   if (!(v >= lo && v <= hi))
     throw std::invalid_argument(std::string("gob: ") + field + " is " + std::to_string(v) +
                                 ", expected " + std::to_string(lo) + " to " + std::to_string(hi));
 }
-
-// A 32-bit integer hash (the lowbias32 mix): the lattice's jitter without a global RNG.
-std::uint32_t mix(std::uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return x;
-}
-double unit(std::uint32_t h) { return (h >> 8) * (1.0 / 16777216.0) * 2.0 - 1.0; }  // [-1, 1)
 
 glm::dvec3 rotate_x(glm::dvec3 v, double a) {
   const double c = std::cos(a), s = std::sin(a);
@@ -74,13 +61,14 @@ MoltenGob::MoltenGob(const GobParams& p) : p_(p) {
   blob_ = p.blob_radius != 0 ? p.blob_radius : 0.8 * spacing_;
   reach_ = kReach * spacing_;
   const int n = static_cast<int>(std::ceil(r / spacing_)) + 1;
-  const auto u = [](int v) { return static_cast<std::uint32_t>(v + 1024); };  // 11 bits each
+  const auto u = [](int v) { return static_cast<std::uint64_t>(v + 1024); };  // 11 bits each
   for (int k = -n; k <= n; ++k)
     for (int j = -n; j <= n; ++j)
       for (int i = -n; i <= n; ++i) {
-        const std::uint32_t h = mix(p.seed * 0x9e3779b9U ^ mix(u(i) | u(j) << 11 | u(k) << 22));
-        const glm::dvec3 q = centre + spacing_ * glm::dvec3(i + 0.15 * unit(h), j + 0.15 * unit(mix(h + 1)),
-                                                            k + 0.15 * unit(mix(h + 2)));
+        // The lattice's jitter: up to 0.15 spacing per axis, from the project's hash.
+        const std::uint64_t cell = u(i) | u(j) << 11 | u(k) << 22;
+        auto jitter = [&](int axis) { return 0.15 * (2 * hash01(p.seed, cell, axis, 0) - 1); };
+        const glm::dvec3 q = centre + spacing_ * glm::dvec3(i + jitter(0), j + jitter(1), k + jitter(2));
         if (glm::length(q - centre) > r) continue;
         const double axis = std::hypot(q.y, q.z);
         if (q.x < 0 && axis < pr) continue;  // inside the pipe
@@ -92,6 +80,7 @@ MoltenGob::MoltenGob(const GobParams& p) : p_(p) {
   temp_.assign(x_.size(), p.start_kelvin);
   exposure_.assign(x_.size(), 0.0);
   build_neighbours();
+  measure_rest_density();
   relax_mobility(kFirstSweeps);
 }
 
@@ -170,6 +159,33 @@ void MoltenGob::relax_mobility(int sweeps) {
     }
 }
 
+void MoltenGob::measure_rest_density() {
+  // The rest density and a typical denominator: 75th percentiles over all particles
+  // (more than half of them are inside) of the starting lattice.
+  const std::size_t n = x_.size();
+  const double h2 = reach_ * reach_;
+  std::vector<double> rho(n), denom(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    double r = 1.0, sum2 = 0;
+    glm::dvec3 gi(0.0);
+    for (int k = start_[i]; k < start_[i + 1]; ++k) {
+      const glm::dvec3 e = x_[i] - x_[nbr_[k]];
+      const double q = 1.0 - glm::dot(e, e) / h2;
+      if (q <= 0) continue;
+      r += q * q * q;
+      const glm::dvec3 gj = (6.0 * q * q / h2) * e;
+      gi -= gj;
+      sum2 += glm::dot(gj, gj);
+    }
+    rho[i] = r;
+    denom[i] = sum2 + glm::dot(gi, gi);
+  }
+  std::nth_element(rho.begin(), rho.begin() + 3 * n / 4, rho.end());
+  std::nth_element(denom.begin(), denom.begin() + 3 * n / 4, denom.end());
+  rest_density_ = rho[3 * n / 4];
+  rest_eps_ = kDensityEps * denom[3 * n / 4] / (rest_density_ * rest_density_);
+}
+
 double MoltenGob::angle() const { return p_.turn_rate * time(); }
 
 glm::dvec3 MoltenGob::position(std::size_t i) const { return rotate_x(x_[i], angle()); }
@@ -180,6 +196,48 @@ glm::dvec3 MoltenGob::centre_of_mass() const {
   return s / static_cast<double>(x_.size());
 }
 
+void MoltenGob::keep_density() {
+  // One position-based projection (Macklin and Mueller, "Position Based Fluids", 2013)
+  // towards the rest density: it stands in for the pressure the creeping flow lacks
+  // (that flow is not divergence-free: without it the glass would pack or thin).
+  // Exposed particles only push (their missing neighbours are not a deficit), so the
+  // surface is not drawn in.
+  const std::size_t n = x_.size();
+  const double h2 = reach_ * reach_;
+  lambda_.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    double rho = 1.0, sum2 = 0;
+    glm::dvec3 gi(0.0);
+    for (int k = start_[i]; k < start_[i + 1]; ++k) {
+      const glm::dvec3 e = x_[i] - x_[nbr_[k]];
+      const double q = 1.0 - glm::dot(e, e) / h2;
+      if (q <= 0) continue;
+      rho += q * q * q;
+      const glm::dvec3 gj = (6.0 * q * q / (h2 * rest_density_)) * e;  // d C_i / d x_j
+      gi -= gj;
+      sum2 += glm::dot(gj, gj);
+    }
+    double c = rho / rest_density_ - 1.0;
+    if (exposure_[i] > 0) c = std::max(c, 0.0);
+    const double denom = sum2 + glm::dot(gi, gi);
+    lambda_[i] = -c / (denom + rest_eps_);
+  }
+  dx_.assign(n, glm::dvec3(0.0));
+  for (std::size_t i = 0; i < n; ++i) {
+    if (pinned_[i]) continue;
+    glm::dvec3 d(0.0);
+    for (int k = start_[i]; k < start_[i + 1]; ++k) {
+      const int j = nbr_[k];
+      const glm::dvec3 e = x_[i] - x_[j];
+      const double q = 1.0 - glm::dot(e, e) / h2;
+      if (q <= 0) continue;
+      d -= (lambda_[i] + lambda_[j]) * (6.0 * q * q / h2) * e;
+    }
+    dx_[i] = d * (kDensityRelax / rest_density_);
+  }
+  for (std::size_t i = 0; i < n; ++i) x_[i] += dx_[i];
+}
+
 void MoltenGob::step() {
   if (steps_ % kRebuild == 0 && steps_ > 0) build_neighbours();
   relax_mobility(kSweepsPerStep);
@@ -187,20 +245,7 @@ void MoltenGob::step() {
   const double a = angle() + 0.5 * p_.turn_rate * kStep;  // mid-step
   const glm::dvec3 g = rotate_x(glm::dvec3(0, -p_.gravity, 0), -a);
   for (std::size_t i = 0; i < x_.size(); ++i) x_[i] += kStep * phi_[i] * g;
-  // Keep the spacing: pairs too close are pushed apart, pairs drawn apart pulled back a
-  // little, half each (a pinned one stays).
-  const double push = kPushBelow * spacing_, pull = kPullBelow * spacing_;
-  for (std::size_t i = 0; i < x_.size(); ++i)
-    for (int k = start_[i]; k < start_[i + 1]; ++k) {
-      const int j = nbr_[k];
-      if (j < static_cast<int>(i)) continue;  // each pair once
-      const glm::dvec3 e = x_[j] - x_[i];
-      const double r = glm::length(e);
-      if (r <= 0 || (r >= push && (r <= spacing_ || r >= pull))) continue;
-      const glm::dvec3 d = r < push ? e * (0.25 * (push - r) / r) : e * (0.5 * kPull * (spacing_ - r) / r);
-      if (!pinned_[i]) x_[i] -= d;
-      if (!pinned_[j]) x_[j] += d;
-    }
+  keep_density();
   // Heat: lost at the surface by radiation and convection (a surface particle holds a
   // layer one spacing thick), spread by conduction.
   GlassCooling layer = p_.surface;

@@ -6,9 +6,10 @@
 // nu laplace(u) + g = 0 on the particles (a neighbour-weighted Laplacian, Gauss-Seidel
 // warm-started from the last step), zero on the particles that wet the pipe. Turning
 // only turns gravity in that frame, so the sag's direction goes round and the centre of
-// mass stays near the axis, as a glassblower keeps a gob centred. A short-range push
-// keeps the particles' spacing. Temperatures fall by radiation and convection at the
-// surface (particles with fewer neighbours) and spread by conduction inside.
+// mass stays near the axis, as a glassblower keeps a gob centred. A position-based
+// density projection keeps the particles' spacing (and so, roughly, the glass's volume).
+// Temperatures fall by radiation and convection at the surface (particles with fewer
+// neighbours) and spread by conduction inside.
 // Frame: the pipe's end at the origin, the pipe along -x (the gob hangs around +x),
 // y up, metres. The pipe is not in the cloud (the renderer may draw it as a cylinder of
 // pipe_radius along -x). Fixed steps, deterministic: no global RNG, one thread.
@@ -41,7 +42,7 @@ struct GobParams {
   GlassCooling surface{};        // emissivity, heat capacity, convection of the surface
                                  // (its thickness is unused: a surface particle's layer is
                                  // one spacing thick)
-  std::uint32_t seed = 1;        // the lattice's jitter
+  std::uint32_t seed = 1;        // the lattice's jitter (core/math/hash.hpp)
 };
 
 class MoltenGob {
@@ -73,6 +74,8 @@ class MoltenGob {
  private:
   void build_neighbours();
   void relax_mobility(int sweeps);
+  void measure_rest_density();
+  void keep_density();
   void step();
 
   GobParams p_;
@@ -84,6 +87,9 @@ class MoltenGob {
   std::vector<int> start_, nbr_;
   std::vector<float> w_;
   std::vector<double> mean_r2_, weight_sum_;
+  double rest_density_ = 1, rest_eps_ = 0;
+  std::vector<double> lambda_;
+  std::vector<glm::dvec3> dx_;
   long steps_ = 0;
   double pending_ = 0;
 };

@@ -46,9 +46,10 @@ TEST(GlassHeat, RadiationDominatesWhenHot) {
   EXPECT_NEAR(one, two, 1e-6);
   EXPECT_GT(cooled_glass_temperature(g, 1373.15, ta, 1e6), ta - 1e-9);
   EXPECT_LT(cooled_glass_temperature(g, 1373.15, ta, 1e6), ta + 1);
-  // A 4 cm gob takes minutes to lose its glow (below ~800 K), not seconds.
+  // A 4 cm gob takes minutes to lose its glow (below ~800 K), not seconds: ~6.5 min.
   EXPECT_GT(cooled_glass_temperature(g, 1373.15, ta, 30), 1200);
-  EXPECT_LT(cooled_glass_temperature(g, 1373.15, ta, 900), 800);
+  EXPECT_GT(cooled_glass_temperature(g, 1373.15, ta, 300), 800);
+  EXPECT_LT(cooled_glass_temperature(g, 1373.15, ta, 420), 800);
 }
 
 TEST(GlassHeat, NamedHeats) {
