@@ -270,20 +270,26 @@ Crossing cloud_crossing(Path path, Hit h) {
 }
 
 // As shade_droplet for a blob of a point cloud: the body absorbs (Beer-Lambert) and, hot,
-// glows: the blackbody's light of the surface's temperature leaves through the surface
-// towards the path (the part Fresnel lets out). A point's colour tints the light that
-// crosses the surface there (coloured glass, a tinted drink).
+// glows. Along a chord inside, hot glass emits the blackbody's light of its temperature
+// and absorbs as much (Kirchhoff: emissivity 1 - exp(-kappa chord)), its visible
+// extinction kappa growing from 0 at 700 K to 1 / glow_depth at 1100 K and above: a thick
+// gob glows deep and bright, its thin edges less, and little is seen through it; cooled,
+// it is clear glass. A point's colour tints the light that crosses the surface there
+// (coloured glass, a tinted drink).
 void shade_cloud(inout Path path, Hit h, bool transparent, out Look look) {
   look = no_look();
   int k = -2 - h.obj;
   vec3 p = path.o + h.t * path.d;
   bool inside = path.medium == MEDIUM_CLOUD;
   vec3 chord = exp(-frame.cloud_absorption[k].rgb * h.t);
-  if (inside) path.thr *= chord;
-  Crossing c = cloud_crossing(path, h);
   float kelvin = g_cloud_attrs.x > 0.0 ? g_cloud_attrs.x : frame.cloud_absorption[k].w;
-  float glow = frame.cloud_glow[k].x;
-  if (!inside && glow > 0.0) path.radiance += path.thr * (1.0 - c.F) * glow * blackbody_luminance(kelvin);
+  vec4 glow = frame.cloud_glow[k];
+  if (inside) {
+    float hot = exp(-glow.y * clamp((kelvin - 700.0) / 400.0, 0.0, 1.0) * h.t);
+    if (glow.x > 0.0) path.radiance += path.thr * (1.0 - hot) * glow.x * blackbody_luminance(kelvin);
+    path.thr *= chord * hot;
+  }
+  Crossing c = cloud_crossing(path, h);
   float rough = frame.cloud_hi[k].w;
   if (c.F < 1.0) {
     vec3 r = reflect(path.d, c.n);

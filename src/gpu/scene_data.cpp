@@ -126,7 +126,7 @@ void pack_clouds(const FrameState& f, const CloudScene& clouds, contract::FrameB
     b.cloud_lo[i] = glm::vec4(r.lo, c.ior);
     b.cloud_hi[i] = glm::vec4(r.hi, c.roughness);
     b.cloud_absorption[i] = glm::vec4(c.absorption, c.temperature);
-    b.cloud_glow[i] = glm::vec4(float(c.glow * kGlowPerNit), 0.0f, 0.0f, 0.0f);
+    b.cloud_glow[i] = glm::vec4(float(c.glow * kGlowPerNit), c.glow_depth > 0 ? 1.0f / c.glow_depth : 0.0f, 0.0f, 0.0f);
   }
 }
 

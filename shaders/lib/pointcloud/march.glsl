@@ -164,7 +164,7 @@ bool march_cloud(CloudRef c, vec3 o, vec3 d, float tmin, float tmax, bool inside
   float t = t0, slope;
   float g = cloud_g(c, o, d, t, sgn, inside, slope);
   bool found = g <= 0.0;
-  float a = t, b = t;
+  float a = t, b = t, ga = 0.0, gb = 0.0;
   for (int i = 0; i < CLOUD_MAX_STEPS; ++i) {
     if (found) break;
     if (g == INF) {
@@ -181,23 +181,34 @@ bool march_cloud(CloudRef c, vec3 o, vec3 d, float tmin, float tmax, bool inside
       found = true;
       a = t;
       b = next;
+      ga = g == INF ? c.threshold : g;
+      gb = gv;
     } else if (slope < 0.0 && sn > 0.0) {
       float predicted;
       float u = cloud_hermite_min(g, slope * (next - t), gv, sn * (next - t), predicted);
       if (predicted < 0.1 * c.threshold) {
         float tm = t + u * (next - t), sm;
-        if (cloud_g(c, o, d, tm, sgn, inside, sm) <= 0.0) {
+        float gm = cloud_g(c, o, d, tm, sgn, inside, sm);
+        if (gm <= 0.0) {
           found = true;
           a = t;
           b = tm;
+          ga = g == INF ? c.threshold : g;
+          gb = gm;
         }
       }
     }
     if (found) {
       for (int k = 0; k < CLOUD_BISECTIONS; ++k) {
         float m = 0.5 * (a + b), sm;
-        if (cloud_g(c, o, d, m, sgn, inside, sm) <= 0.0) b = m;
-        else a = m;
+        float gm = cloud_g(c, o, d, m, sgn, inside, sm);
+        if (gm <= 0.0) {
+          b = m;
+          gb = gm;
+        } else {
+          a = m;
+          ga = gm;
+        }
       }
       break;
     }
@@ -207,7 +218,8 @@ bool march_cloud(CloudRef c, vec3 o, vec3 d, float tmin, float tmax, bool inside
     slope = sn;
   }
   if (!found) return false;
-  t_hit = 0.5 * (a + b);
+  // The line through the bracket's ends meets the level (twin: field.cpp says why).
+  t_hit = ga - gb > 0.0 ? clamp(a + (b - a) * (ga / (ga - gb)), a, b) : b;
   vec4 s = cloud_field_at(c, o + t_hit * d, true, attrs);
   n = length(s.xyz) > 0.0 ? -normalize(s.xyz) : vec3(0.0);
   return true;

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -29,12 +30,15 @@ const std::vector<PointCloudParamInfo>& point_cloud_param_table() {
       {"rate", 0.1, 240, "1/s", "file sequences: frames per second"},
       {"loop", 0, 1, "", "file sequences: true loops, false holds the last frame"},
       {"scale", 1e-6, 1e3, "m", "file source: metres per unit of the file's coordinates"},
-      {"blob_radius", 0.0002, 0.1, "m", "a lone point's radius (points without their own, the gob's particles)"},
+      {"blob_radius", 0, 0.1, "m", "a lone point's radius (points without their own, the gob's particles); 0: "
+                                   "automatic (files 2 mm, the gob 1.35 x its particles' spacing, which blends them smooth)"},
       {"threshold", 0.05, 0.95, "", "level of the summed field that is the surface"},
       {"material", 0, 1, "", "\"molten_glass\" (the default) or \"drink\""},
       {"temperature", 250, 2500, "K", "the gob's start temperature; file points without their own"},
       {"cooling", 0, 3600, "s", "time constant of the cooling towards the room (0: none)"},
       {"glow", 0, 100, "", "multiplies the blackbody emission of hot glass"},
+      {"glow_depth", 0.001, 1, "m", "hot glass's visible extinction is 1 / glow_depth at 1100 C and above (falling to 0 "
+                                    "at 700 K): how deep the glow builds, and how little is seen through"},
       {"ior", 1, 2.5, "", "index of refraction (glass 1.5, a drink 1.34)"},
       {"roughness", 0, 1, "", "GGX roughness of the surface"},
       {"absorption", 0, 1000, "1/m", "Beer-Lambert absorption per metre, [r, g, b]"},
@@ -125,6 +129,7 @@ PointCloudParams parse_point_cloud_params(const nlohmann::json& j, const std::st
       else if (key == "temperature") p.temperature = x;
       else if (key == "cooling") p.cooling = x;
       else if (key == "glow") p.glow = x;
+      else if (key == "glow_depth") p.glow_depth = x;
       else if (key == "ior") p.ior = x;
       else if (key == "roughness") p.roughness = x;
       else if (key == "gob_radius") p.gob_radius = x;
@@ -151,6 +156,7 @@ nlohmann::json point_cloud_params_json(const PointCloudParams& p) {
                       {"temperature", p.temperature},
                       {"cooling", p.cooling},
                       {"glow", p.glow},
+                      {"glow_depth", p.glow_depth},
                       {"ior", p.ior},
                       {"roughness", p.roughness},
                       {"absorption", {p.absorption.x, p.absorption.y, p.absorption.z}},
@@ -176,6 +182,8 @@ nlohmann::json point_cloud_params_json(const PointCloudParams& p) {
 struct CloudSource::State {
   std::optional<MoltenGob> gob;
   GobParams gob_params;
+  std::shared_ptr<const PointCloud> pipe;  // the gob's blowpipe, placed once
+  std::uint64_t pipe_version = 0;
   std::optional<PourStream> stream;
   std::optional<PointCloudSequence> sequence;  // a numbered run of files
   std::shared_ptr<const PointCloud> still;      // one file, placed once
@@ -196,24 +204,21 @@ bool numbered(const std::string& file) {
          (!stem.empty() && std::isdigit(static_cast<unsigned char>(stem.back())));
 }
 
-// The gob's blowpipe, drawn as points of the same cloud: a row along -x from inside the
+// The gob's blowpipe, a cloud of its own beside the gob (so that its field does not blend
+// into the gob's, nor its colour into the glass's): a row of points along -x up to the
 // gob, cold (no glow) and nearly black (their colour darkens the light that enters
-// them: a dark, glossy steel tube under the same reflections). The gob's own points are
-// white (colour leaves their light as it is).
-PointCloud with_pipe(PointCloud c, const GobParams& g) {
+// them): a dark, glossy steel tube under the same reflections.
+PointCloud blowpipe(const GobParams& g) {
   constexpr double kPipeLength = 0.3;  // m shown behind the gob
   const double r = g.pipe_radius, spacing = 0.5 * r;
-  const std::size_t gob = c.size();
-  if (c.radius.empty()) c.radius.assign(gob, c.default_radius);
-  if (c.temperature.empty()) c.temperature.assign(gob, float(g.start_kelvin));
-  c.color.assign(gob, glm::vec3(1.0f));
-  c.velocity.clear();
-  for (double x = g.pipe_depth; x > -kPipeLength; x -= spacing) {
+  PointCloud c;
+  for (double x = g.pipe_depth - r; x > -kPipeLength; x -= spacing) {
     c.position.push_back(glm::vec3(float(x), 0.0f, 0.0f));
     c.radius.push_back(float(r));
     c.temperature.push_back(float(g.ambient_kelvin));
     c.color.push_back(glm::vec3(0.04f));
   }
+  c.default_radius = float(r);
   return c;
 }
 
@@ -232,11 +237,12 @@ std::shared_ptr<const PointCloud> place_cloud(const PointCloud& in, const PointC
     const glm::vec3 v = q * p.scale;
     q = at + glm::vec3(c * v.x + s * v.z, v.y, -s * v.x + c * v.z);
   }
-  if (out->radius.empty()) out->radius.assign(out->size(), p.blob_radius);
+  const float blob = p.blob_radius > 0 ? p.blob_radius : 0.002f;  // (automatic for files: 2 mm)
+  if (out->radius.empty()) out->radius.assign(out->size(), blob);
   else
     for (float& r : out->radius) r *= p.scale;
   if (out->temperature.empty()) out->temperature.assign(out->size(), float(cooled_kelvin));
-  out->default_radius = p.blob_radius;
+  out->default_radius = blob;
   return out;
 }
 
@@ -249,13 +255,17 @@ CloudSource::CloudSource(const PointCloudParams& p, glm::vec3 position, float ya
       GobParams g;
       g.count = p.count;
       g.radius = p.gob_radius;
-      g.blob_radius = p.blob_radius;
+      g.blob_radius = p.blob_radius;  // (0: the gob's own choice, replaced below)
       g.pipe_radius = std::min(g.pipe_radius, 0.5 * g.radius);
       g.pipe_depth = std::min(g.pipe_depth, 0.5 * g.radius);
       g.turn_rate = p.turn;
       g.start_kelvin = std::clamp(double(p.temperature), 293.0, 2000.0);
       state_->gob_params = g;
       state_->gob.emplace(g);
+      PointCloudParams unit = p;
+      unit.scale = 1.0f;
+      state_->pipe = place_cloud(blowpipe(g), unit, position, yaw, g.ambient_kelvin);
+      state_->pipe_version = next_version();
       state_->gob->advance(p.age);
       break;
     }
@@ -293,7 +303,7 @@ void CloudSource::advance_to(double t) {
   time_ = t;
 }
 
-CloudFrame CloudSource::frame() const {
+std::vector<CloudFrame> CloudSource::frames() const {
   State& s = *state_;
   const double room = kZeroCelsius + 20.0;
   const double kelvin = params_.cooling > 0 ? cooled_temperature(params_.temperature, room, time_, params_.cooling)
@@ -302,7 +312,14 @@ CloudFrame CloudSource::frame() const {
     if (s.gob) {
       PointCloudParams unit = params_;
       unit.scale = 1.0f;
-      s.placed = place_cloud(with_pipe(s.gob->cloud(), s.gob_params), unit, position_, yaw_, kelvin);
+      PointCloud gob = s.gob->cloud();
+      // Automatic: blobs 1.35 spacings wide blend the particles into one glossy surface
+      // (0.8, the gob's own choice, leaves a crumpled skin of particle bumps; wider blobs
+      // are smoother but every sample then sums more points, and llvmpipe stops a pixel's
+      // loops after 65535 iterations in all: docs/POINT_CLOUDS.md).
+      if (params_.blob_radius == 0) gob.default_radius = float(1.35 * s.gob->spacing());
+      unit.blob_radius = gob.default_radius;
+      s.placed = place_cloud(gob, unit, position_, yaw_, kelvin);
     } else if (s.stream) {
       auto c = std::make_shared<PointCloud>(s.stream->cloud());  // already in the world
       if (c->temperature.empty()) c->temperature.assign(c->size(), float(kelvin));
@@ -321,12 +338,26 @@ CloudFrame CloudSource::frame() const {
   f.version = s.version;
   f.material = params_.material;
   f.threshold = params_.threshold;
-  f.glow = params_.material == int(CloudMaterial::MoltenGlass) ? params_.glow : 0.0f;
+  const bool glass = params_.material == int(CloudMaterial::MoltenGlass);
+  f.glow = glass ? params_.glow : 0.0f;
+  f.glow_depth = glass ? params_.glow_depth : 0.0f;
   f.ior = params_.ior;
   f.roughness = params_.roughness;
   f.absorption = params_.absorption;
   f.temperature = float(kelvin);
-  return f;
+  std::vector<CloudFrame> out{f};
+  if (s.pipe) {  // the blowpipe: steel, cold, glossy
+    CloudFrame pipe;
+    pipe.points = s.pipe;
+    pipe.version = s.pipe_version;
+    pipe.material = int(CloudMaterial::MoltenGlass);
+    pipe.threshold = params_.threshold;
+    pipe.ior = 1.5f;
+    pipe.roughness = 0.15f;
+    pipe.temperature = float(s.gob_params.ambient_kelvin);
+    out.push_back(pipe);
+  }
+  return out;
 }
 
 }  // namespace draught

@@ -34,12 +34,14 @@ struct PointCloudParams {
   float rate = 24.0f;              // File sequences: frames per second
   bool loop = true;                // File sequences: loop (or hold the last frame)
   float scale = 1.0f;              // File: metres per unit of the file's coordinates
-  float blob_radius = 0.003f;      // m: a lone point's radius (points without their own; the gob's)
+  float blob_radius = 0;           // m: a lone point's radius (points without their own; the gob's);
+                                   // 0: automatic (files 2 mm, the gob 1.35 x its particles' spacing)
   float threshold = 0.5f;          // the summed field's level that is the surface
   int material = 0;                // CloudMaterial
   float temperature = 1373.15f;    // K: the gob's start; file points without their own
   float cooling = 40.0f;           // s: time constant of the cooling towards the room (0: none)
   float glow = 1.0f;               // multiplies the blackbody emission (an exposure of its own)
+  float glow_depth = 0.02f;        // m: hot glass's visible extinction is 1 / glow_depth at 1100 K
   float ior = 1.5f;                // index of refraction (soda-lime glass; a drink's ~1.34)
   float roughness = 0.02f;         // GGX roughness of the surface
   glm::vec3 absorption{0.9f, 0.35f, 0.6f};  // 1/m: Beer-Lambert (glass: a little green)
@@ -77,6 +79,7 @@ struct CloudFrame {
   int material = 0;          // CloudMaterial
   float threshold = 0.5f;
   float glow = 0;            // 0: no emission (a drink)
+  float glow_depth = 0;      // m: 1 / the visible extinction of the hot body (0: none)
   float ior = 1.5f, roughness = 0.02f;
   glm::vec3 absorption{0.0f};
   glm::vec3 color{1.0f};     // the colour of points without their own (the drink's tint)
@@ -96,7 +99,9 @@ class CloudSource {
   // Steps the source to time t (seconds since the scene began; earlier times are ignored).
   void advance_to(double t);
   double time() const { return time_; }
-  CloudFrame frame() const;
+  // Its clouds in this frame: the source's, and for a gob its blowpipe (a cloud of its
+  // own, so that neither field nor colour blends into the glass).
+  std::vector<CloudFrame> frames() const;
   const PointCloudParams& params() const { return params_; }
 
  private:

@@ -193,7 +193,9 @@ FrameState SceneSimulation::frame() const {
       f.droplets.push_back({p, at.position, at.yaw, droplet_field_of(p, trails_[i]->spheres(at.position, at.yaw))});
     }
   for (const auto& c : clouds_)
-    if (c) f.clouds.push_back(c->frame());
+    if (c)
+      for (CloudFrame& k : c->frames())
+        if (int(f.clouds.size()) < contract::kMaxClouds) f.clouds.push_back(std::move(k));
   // The vessels' streams (a pour, a spill), as long as there is room for them.
   for (const auto& s : sims_)
     if (s)
