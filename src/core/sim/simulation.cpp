@@ -285,7 +285,7 @@ VesselFrame Simulation::frame() const {
   f.liquid_absorption = liquid_absorption(params_.liquid);
   f.foam = foam_.frame(surface_.waves.radius);
   f.big_bubbles = place_big_bubbles(f.foam, surface_.n, surface_.offset, surface_.waves.radius);
-  f.bubbles = bubbles_->bubbles();
+  if (f.has_liquid) f.bubbles = bubbles_->bubbles();  // (an empty glass holds none: no drink to rise in)
   double sum = 0;
   for (double r : vessel_.r_outer) sum += r;
   f.mean_outer_radius = sum / double(vessel_.r_outer.size());
