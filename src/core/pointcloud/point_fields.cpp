@@ -1,5 +1,7 @@
 #include "core/pointcloud/point_fields.hpp"
 
+#include "core/text/echo.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -136,6 +138,8 @@ int PointCloudBuilder::add(const std::array<double, kPointFieldCount>& v) {
 }
 
 double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
+
+std::string quote_token(std::string_view s) { return make_valid_utf8(quote_input(s)); }
 
 std::string number_text(double v) {
   char buf[32];

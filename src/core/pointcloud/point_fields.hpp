@@ -68,6 +68,10 @@ class PointCloudBuilder {
 // An sRGB-encoded channel (0..1) decoded to linear.
 double srgb_to_linear(double c);
 
+// A token of the file quoted for an error message: capped, escaped and valid UTF-8
+// whatever the bytes were ("abc", "\u001b[2J").
+std::string quote_token(std::string_view);
+
 // A number for an error message: the shortest text that reads back as `v` ("0.25", "nan").
 std::string number_text(double v);
 

@@ -106,7 +106,7 @@ PointCloud parse_point_text(std::string_view text, const std::string& name) {
           std::vector<std::string> known;
           for (const auto& spellings : point_field_names()) known.insert(known.end(), spellings.begin(), spellings.end());
           fail(at + ", column " + std::to_string(unknown + 1),
-               "unknown column " + quote_input(names[std::size_t(unknown)]) + did_you_mean(names[std::size_t(unknown)], known) +
+               "unknown column " + quote_token(names[std::size_t(unknown)]) + did_you_mean(names[std::size_t(unknown)], known) +
                    ": expected x, y, z, radius, temperature, r, g, b, vx, vy or vz (the first line names the columns "
                    "when it is not a point)");
         }
@@ -144,14 +144,14 @@ PointCloud parse_point_text(std::string_view text, const std::string& name) {
     for (std::size_t c = 0; c < width; ++c) {
       double v;
       if (!parse_number(cols[c], v))
-        fail(at + ", column " + std::to_string(c + 1) + " (" + shown[c] + ")", "expected a number, got " + quote_input(cols[c]));
+        fail(at + ", column " + std::to_string(c + 1) + " (" + shown[c] + ")", "expected a number, got " + quote_token(cols[c]));
       point[std::size_t(field_of[c])] = v;
     }
     if (const int bad = cloud->add(point); bad >= 0) {
       const std::size_t c = std::size_t(fields.column[std::size_t(bad)]);
       fail(at + ", column " + std::to_string(c + 1) + " (" + shown[c] + ")",
            std::string("expected ") + point_value_expected(PointField(bad), point[std::size_t(bad)]) + ", got " +
-               quote_input(cols[c]));
+               quote_token(cols[c]));
     }
   }
   if (!cloud)
