@@ -96,6 +96,15 @@ TEST(PointCloudText, HeaderErrors) {
   EXPECT_EQ(error_of("x y z vx vy\n"), "points.csv: line 1 (the header): a velocity is given in part: expected also 'vz'");
 }
 
+TEST(PointCloudText, AtMostTheLimitOfPoints) {
+  std::string rows;
+  rows.reserve((kMaxCloudPoints + 1) * 6);
+  for (std::size_t i = 0; i < kMaxCloudPoints; ++i) rows += "0 0 0\n";
+  rows += "1 1 1\n";  // the points before it were read: the error is at the one over
+  EXPECT_EQ(error_of(rows, "big.xyz"), "big.xyz: line " + std::to_string(kMaxCloudPoints + 1) +
+                                           ": more than 4194304 points: expected at most that many (the limit of a point cloud)");
+}
+
 TEST(PointCloudText, EmptyFiles) {
   const std::string expected =
       ": no points and no header: expected lines of x y z (and optional columns), or a first line naming the columns";
