@@ -114,15 +114,6 @@ std::vector<std::string_view> words(std::string_view s) {
   return out;
 }
 
-// A whole token as a number (a leading '+' allowed; "nan" and "inf" read, and are then
-// refused by the value checks).
-bool parse_number(std::string_view t, double& v) {
-  if (!t.empty() && t[0] == '+') t.remove_prefix(1);
-  if (t.empty() || t[0] == '+') return false;
-  const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-  return r.ec == std::errc() && r.ptr == t.data() + t.size();
-}
-
 bool parse_count(std::string_view t, std::uint64_t& v) {
   if (t.empty() || t.size() > 19) return false;  // 19 digits cannot overflow 64 bits
   for (char c : t)

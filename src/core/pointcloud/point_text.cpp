@@ -6,7 +6,6 @@
 #include "core/text/suggest.hpp"
 
 #include <array>
-#include <charconv>
 #include <optional>
 #include <vector>
 
@@ -43,13 +42,6 @@ void split(std::string_view line, std::size_t max, std::vector<std::string_view>
     while (i < line.size() && !space(line[i])) ++i;
     if (i > start) out.push_back(line.substr(start, i - start));
   }
-}
-
-bool parse_number(std::string_view t, double& v) {
-  if (!t.empty() && t[0] == '+') t.remove_prefix(1);
-  if (t.empty() || t[0] == '+') return false;
-  const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-  return r.ec == std::errc() && r.ptr == t.data() + t.size();
 }
 
 // The meaning of 3 to 7 columns without a header.
