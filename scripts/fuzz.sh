@@ -32,7 +32,7 @@ declare -A seeds=(
   [hdr_image]="fuzz/seeds/hdr_image fuzz/regressions/hdr_image"
   [decal_image]="fuzz/seeds/decal_image fuzz/regressions/decal_image"
   [video_source]="fuzz/seeds/video_source fuzz/regressions/video_source"
-  [point_cloud]="fuzz/seeds/point_cloud"
+  [point_cloud]="fuzz/seeds/point_cloud fuzz/regressions/point_cloud"
 )
 declare -A dicts=([preset]=fuzz/json.dict [timeline]=fuzz/json.dict [hdr_image]=fuzz/hdr.dict [decal_image]=fuzz/png.dict [video_source]=fuzz/video.dict [point_cloud]=fuzz/ply.dict)
 status=0

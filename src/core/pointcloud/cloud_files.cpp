@@ -2,6 +2,7 @@
 
 #include "core/io/files.hpp"
 #include "core/pointcloud/ply.hpp"
+#include "core/pointcloud/point_fields.hpp"
 #include "core/pointcloud/point_text.hpp"
 #include "core/text/echo.hpp"
 
@@ -31,7 +32,7 @@ bool is_digit(char c) { return c >= '0' && c <= '9'; }
 PointCloud load_point_cloud(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
   if (!accepted_extension(ext))
-    throw InputError(shown(path) + ": unknown point cloud extension " + quote_input(ext) +
+    throw InputError(shown(path) + ": unknown point cloud extension " + quote_token(ext) +
                      ": expected .ply, .xyz, .csv or .txt");
   const std::string bytes = read_whole_file(path, kMaxPointCloudFileBytes, "a point cloud");
   return ext == ".ply" ? parse_ply(bytes, shown(path)) : parse_point_text(bytes, shown(path));
@@ -41,7 +42,7 @@ PointCloudSequence::PointCloudSequence(const std::filesystem::path& given) {
   dir_ = given.parent_path();
   const std::string file = given.filename().string();
   if (!accepted_extension(lower_extension(given)))
-    throw InputError(shown(given) + ": unknown point cloud extension " + quote_input(lower_extension(given)) +
+    throw InputError(shown(given) + ": unknown point cloud extension " + quote_token(lower_extension(given)) +
                      ": expected .ply, .xyz, .csv or .txt");
   const std::string stem = given.stem().string(), ext = given.extension().string();
   if (const std::size_t pct = stem.find('%'); pct != std::string::npos) {

@@ -114,15 +114,6 @@ std::vector<std::string_view> words(std::string_view s) {
   return out;
 }
 
-// A whole token as a number (a leading '+' allowed; "nan" and "inf" read, and are then
-// refused by the value checks).
-bool parse_number(std::string_view t, double& v) {
-  if (!t.empty() && t[0] == '+') t.remove_prefix(1);
-  if (t.empty() || t[0] == '+') return false;
-  const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-  return r.ec == std::errc() && r.ptr == t.data() + t.size();
-}
-
 bool parse_count(std::string_view t, std::uint64_t& v) {
   if (t.empty() || t.size() > 19) return false;  // 19 digits cannot overflow 64 bits
   for (char c : t)
@@ -203,7 +194,7 @@ class Reader {
       const std::vector<std::string_view> w = words(text);
       if (line == 1) {
         if (trim(text) != "ply")
-          fail(at_line(1), "expected 'ply' (a PLY file starts with it), got " + quote_input(trim(text)));
+          fail(at_line(1), "expected 'ply' (a PLY file starts with it), got " + quote_token(trim(text)));
         continue;
       }
       if (w.empty()) fail(at_line(line), "an empty header line: expected comment, format, element, property or end_header");
@@ -215,8 +206,8 @@ class Reader {
         if (w[1] == "ascii") format_ = Format::Ascii;
         else if (w[1] == "binary_little_endian") format_ = Format::Little;
         else if (w[1] == "binary_big_endian") format_ = Format::Big;
-        else fail(at_line(line), "unknown format " + quote_input(w[1]) + ": expected ascii, binary_little_endian or binary_big_endian");
-        if (w[2] != "1.0") fail(at_line(line), "unknown PLY version " + quote_input(w[2]) + ": expected 1.0");
+        else fail(at_line(line), "unknown format " + quote_token(w[1]) + ": expected ascii, binary_little_endian or binary_big_endian");
+        if (w[2] != "1.0") fail(at_line(line), "unknown PLY version " + quote_token(w[2]) + ": expected 1.0");
         have_format = true;
       } else if (key == "element") {
         if (!have_format) fail(at_line(line), "an element before the 'format' line: expected format first");
@@ -225,9 +216,9 @@ class Reader {
         e.name = shown_name(w[1]);
         e.line = line;
         if (!parse_count(w[2], e.count))
-          fail(at_line(line), "element " + quote_input(w[1]) + ": expected a count (a whole number), got " + quote_input(w[2]));
+          fail(at_line(line), "element " + quote_token(w[1]) + ": expected a count (a whole number), got " + quote_token(w[2]));
         for (const auto& other : elements_)
-          if (other.name == e.name) fail(at_line(line), "element " + quote_input(w[1]) + " is declared twice: expected it once");
+          if (other.name == e.name) fail(at_line(line), "element " + quote_token(w[1]) + " is declared twice: expected it once");
         if (elements_.size() == kMaxPlyElements)
           fail(at_line(line), "more than " + std::to_string(kMaxPlyElements) + " elements: expected at most that many");
         elements_.push_back(std::move(e));
@@ -242,7 +233,7 @@ class Reader {
           p.count_type = type_of(w[2], line);
           p.type = type_of(w[3], line);
           if (!integral(p.count_type))
-            fail(at_line(line), "list " + quote_input(w[4]) + ": expected an integer count type, got " + quote_input(w[2]));
+            fail(at_line(line), "list " + quote_token(w[4]) + ": expected an integer count type, got " + quote_token(w[2]));
           pname = w[4];
         } else {
           if (w.size() != 3) fail(at_line(line), "expected 'property TYPE NAME' or 'property list COUNT_TYPE ITEM_TYPE NAME'");
@@ -259,7 +250,7 @@ class Reader {
         ended = true;
         break;
       } else {
-        fail(at_line(line), "expected comment, format, element, property or end_header, got " + quote_input(key));
+        fail(at_line(line), "expected comment, format, element, property or end_header, got " + quote_token(key));
       }
     }
     if (!ended) fail(at_line(line), "the file ends inside the header: expected 'end_header'");
@@ -281,7 +272,7 @@ class Reader {
   Type type_of(std::string_view t, std::size_t line) const {
     for (const auto& n : kTypeNames)
       if (t == n.name) return n.type;
-    fail(at_line(line), "unknown type " + quote_input(t) +
+    fail(at_line(line), "unknown type " + quote_token(t) +
                             ": expected char, uchar, short, ushort, int, uint, float, double (or int8 ... float64)");
   }
 
@@ -347,13 +338,13 @@ class Reader {
     const std::string where = at_line(line) + in(e, i, &p);
     if (tok.empty()) fail(where, std::string("the line ends: expected ") + (count ? "the list's count" : "a value"));
     double v;
-    if (!parse_number(tok, v)) fail(where, std::string("expected a number (") + type_name(t) + "), got " + quote_input(tok));
+    if (!parse_number(tok, v)) fail(where, std::string("expected a number (") + type_name(t) + "), got " + quote_token(tok));
     if (integral(t)) {
       const auto [lo, hi] = range_of(t);
       if (!(v == std::floor(v) && v >= lo && v <= hi))
         fail(where, std::string("expected ") + (count ? "a list count" : "an integer") + " in [" + number_text(lo) + ", " +
-                        number_text(hi) + "] (" + type_name(t) + "), got " + quote_input(tok));
-      if (count && v < 0) fail(where, "expected a list count of at least 0, got " + quote_input(tok));
+                        number_text(hi) + "] (" + type_name(t) + "), got " + quote_token(tok));
+      if (count && v < 0) fail(where, "expected a list count of at least 0, got " + quote_token(tok));
     }
     return v;
   }
@@ -383,7 +374,7 @@ class Reader {
     if (!extra.empty())
       fail(at_line(line) + in(e, i, nullptr), "more values than the " + std::to_string(e.props.size()) +
                                                    " properties of '" + e.name + "': expected the line to end, got " +
-                                                   quote_input(extra));
+                                                   quote_token(extra));
   }
 
   void skip_ascii(const Element& e, std::size_t& pos, std::size_t& line) const {

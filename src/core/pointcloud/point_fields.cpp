@@ -1,8 +1,12 @@
 #include "core/pointcloud/point_fields.hpp"
 
+#include "core/text/echo.hpp"
+
 #include <algorithm>
-#include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 
 namespace draught {
 
@@ -137,10 +141,42 @@ int PointCloudBuilder::add(const std::array<double, kPointFieldCount>& v) {
 
 double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 
+std::string quote_token(std::string_view s) { return make_valid_utf8(quote_input(s)); }
+
+bool parse_number(std::string_view t, double& v) {
+  if (t.empty() || t.size() > 400) return false;  // (longer is no float a file would write)
+  // Only the characters of a decimal number or of nan/inf reach strtod, so it cannot
+  // take hex or a locale's own forms.
+  for (char c : t) {
+    const bool number = (c >= '0' && c <= '9') || c == '.' || c == 'e' || c == 'E' || c == '+' || c == '-';
+    const char l = char(c | 0x20);
+    if (!number && l != 'n' && l != 'a' && l != 'i' && l != 'f' && l != 't' && l != 'y') return false;
+  }
+  char small[64];
+  std::string large;
+  const char* z;
+  if (t.size() < sizeof small) {
+    std::memcpy(small, t.data(), t.size());
+    small[t.size()] = 0;
+    z = small;
+  } else {
+    large.assign(t);
+    z = large.c_str();
+  }
+  char* end = nullptr;
+  v = std::strtod(z, &end);
+  return end == z + t.size();
+}
+
 std::string number_text(double v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[40];
+  for (int digits = 6; digits <= 17; ++digits) {  // the shortest that reads back as v
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
+  return buf;
 }
 
 }  // namespace draught

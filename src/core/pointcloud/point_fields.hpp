@@ -68,6 +68,16 @@ class PointCloudBuilder {
 // An sRGB-encoded channel (0..1) decoded to linear.
 double srgb_to_linear(double c);
 
+// A whole token as a number: decimal, with an optional sign (a leading '+' too) and
+// exponent; "nan" and "inf" read, for the value checks to refuse by name. Nothing else
+// (no hex, no spaces, no trailing text). Through strtod in the "C" locale, as everywhere
+// in core: Emscripten's libc++ has no floating-point from_chars.
+bool parse_number(std::string_view, double&);
+
+// A token of the file quoted for an error message: capped, escaped and valid UTF-8
+// whatever the bytes were ("abc", "\u001b[2J").
+std::string quote_token(std::string_view);
+
 // A number for an error message: the shortest text that reads back as `v` ("0.25", "nan").
 std::string number_text(double v);
 

@@ -6,7 +6,6 @@
 #include "core/text/suggest.hpp"
 
 #include <array>
-#include <charconv>
 #include <optional>
 #include <vector>
 
@@ -43,13 +42,6 @@ void split(std::string_view line, std::size_t max, std::vector<std::string_view>
     while (i < line.size() && !space(line[i])) ++i;
     if (i > start) out.push_back(line.substr(start, i - start));
   }
-}
-
-bool parse_number(std::string_view t, double& v) {
-  if (!t.empty() && t[0] == '+') t.remove_prefix(1);
-  if (t.empty() || t[0] == '+') return false;
-  const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-  return r.ec == std::errc() && r.ptr == t.data() + t.size();
 }
 
 // The meaning of 3 to 7 columns without a header.
@@ -89,7 +81,7 @@ PointCloud parse_point_text(std::string_view text, const std::string& name) {
     if (const std::size_t hash = raw.find('#'); hash != std::string_view::npos) raw = raw.substr(0, hash);
     const std::string_view content = trim(raw);
     if (content.empty()) continue;
-    const std::string at = "line " + std::to_string(line);
+    const auto at = [line] { return "line " + std::to_string(line); };  // only on an error
 
     if (!cloud) {  // the first line: a header, or the first point whose columns set the layout
       split(content, kPointFieldCount, cols);
@@ -98,19 +90,19 @@ PointCloud parse_point_text(std::string_view text, const std::string& name) {
         header = true;
         std::vector<std::string_view> names(cols.begin(), cols.end());
         if (names.size() > std::size_t(kPointFieldCount))
-          fail(at, "a header of more than " + std::to_string(kPointFieldCount) +
+          fail(at(), "a header of more than " + std::to_string(kPointFieldCount) +
                        " columns: expected names among x y z radius temperature r g b vx vy vz");
         int unknown = -1;
         const std::string problem = resolve_point_fields(names, false, fields, &unknown);
         if (problem == "unknown") {
           std::vector<std::string> known;
           for (const auto& spellings : point_field_names()) known.insert(known.end(), spellings.begin(), spellings.end());
-          fail(at + ", column " + std::to_string(unknown + 1),
-               "unknown column " + quote_input(names[std::size_t(unknown)]) + did_you_mean(names[std::size_t(unknown)], known) +
+          fail(at() + ", column " + std::to_string(unknown + 1),
+               "unknown column " + quote_token(names[std::size_t(unknown)]) + did_you_mean(names[std::size_t(unknown)], known) +
                    ": expected x, y, z, radius, temperature, r, g, b, vx, vy or vz (the first line names the columns "
                    "when it is not a point)");
         }
-        if (!problem.empty()) fail(at + " (the header)", problem);
+        if (!problem.empty()) fail(at() + " (the header)", problem);
         for (std::string_view n : names) shown.push_back(make_valid_utf8(shorten(n)));
         field_of.assign(names.size(), -1);
         for (int f = 0; f < kPointFieldCount; ++f)
@@ -121,7 +113,7 @@ PointCloud parse_point_text(std::string_view text, const std::string& name) {
         continue;
       }
       if (cols.size() < 3 || cols.size() > 7)
-        fail(at, std::to_string(cols.size()) + (cols.size() > 7 ? " or more" : "") +
+        fail(at(), std::to_string(cols.size()) + (cols.size() > 7 ? " or more" : "") +
                      " columns without a header: expected 3 (x y z), 4 (x y z radius), 5 (x y z radius temperature), "
                      "6 (x y z r g b) or 7 (x y z radius r g b), or a first line naming the columns");
       width = cols.size();
@@ -136,22 +128,22 @@ PointCloud parse_point_text(std::string_view text, const std::string& name) {
 
     split(content, width, cols);
     if (cols.size() != width)
-      fail(at, "expected " + std::to_string(width) + " columns (as " + (header ? "the header on line " : "line ") +
+      fail(at(), "expected " + std::to_string(width) + " columns (as " + (header ? "the header on line " : "line ") +
                    std::to_string(layout_line) + (header ? " names" : " has") + "), got " +
                    (cols.size() > width ? "more" : std::to_string(cols.size())));
     if (cloud->size() == kMaxCloudPoints)
-      fail(at, "more than " + std::to_string(kMaxCloudPoints) + " points: expected at most that many (the limit of a point cloud)");
+      fail(at(), "more than " + std::to_string(kMaxCloudPoints) + " points: expected at most that many (the limit of a point cloud)");
     for (std::size_t c = 0; c < width; ++c) {
       double v;
       if (!parse_number(cols[c], v))
-        fail(at + ", column " + std::to_string(c + 1) + " (" + shown[c] + ")", "expected a number, got " + quote_input(cols[c]));
+        fail(at() + ", column " + std::to_string(c + 1) + " (" + shown[c] + ")", "expected a number, got " + quote_token(cols[c]));
       point[std::size_t(field_of[c])] = v;
     }
     if (const int bad = cloud->add(point); bad >= 0) {
       const std::size_t c = std::size_t(fields.column[std::size_t(bad)]);
-      fail(at + ", column " + std::to_string(c + 1) + " (" + shown[c] + ")",
+      fail(at() + ", column " + std::to_string(c + 1) + " (" + shown[c] + ")",
            std::string("expected ") + point_value_expected(PointField(bad), point[std::size_t(bad)]) + ", got " +
-               quote_input(cols[c]));
+               quote_token(cols[c]));
     }
   }
   if (!cloud)

@@ -363,6 +363,9 @@ TEST(PointCloudPly, HeaderErrorsNameTheLine) {
             "gob.ply: line 3: element \"vertex\": expected a count (a whole number), got \"many\"");
   EXPECT_EQ(error_of("ply\nformat ascii 1.0\nvertices 3\n"),
             "gob.ply: line 3: expected comment, format, element, property or end_header, got \"vertices\"");
+  // Bytes of the file are echoed escaped and as valid UTF-8 (a fuzzer's finding).
+  EXPECT_EQ(error_of("ply\nformat ascii 1.0\n\xff\x1b\n"),
+            "gob.ply: line 3: expected comment, format, element, property or end_header, got \"\xef\xbf\xbd\\u001b\"");
   EXPECT_EQ(error_of("ply\nelement vertex 1\n"), "gob.ply: line 2: an element before the 'format' line: expected format first");
   EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement face 1\nproperty list float int i\nend_header\n"),
             "gob.ply: line 4: list \"i\": expected an integer count type, got \"float\"");

@@ -75,6 +75,11 @@ TEST(PointCloudText, ErrorsNameLineColumnAndField) {
   EXPECT_EQ(error_of("0 0 0 -0.01\n"), "points.csv: line 1, column 4 (radius): expected a radius in [1e-9, 1] m, got \"-0.01\"");
   EXPECT_EQ(error_of("0 0 0 0.01 -5\n"), "points.csv: line 1, column 5 (temperature): expected a temperature in [0, 10000] K, got \"-5\"");
   EXPECT_EQ(error_of("0 0 0 0.01 1 1.5 0\n"), "points.csv: line 1, column 6 (g): expected a linear colour channel in [0, 1], got \"1.5\"");
+  // Decimal numbers only: no hex, no trailing text; beyond double's range is infinite.
+  EXPECT_EQ(error_of("1 2 0x10\n"), "points.csv: line 1, column 3 (z): expected a number, got \"0x10\"");
+  EXPECT_EQ(error_of("1 2 3m\n"), "points.csv: line 1, column 3 (z): expected a number, got \"3m\"");
+  EXPECT_EQ(error_of("1 2 1e999\n"), "points.csv: line 1, column 3 (z): expected a finite coordinate in [-1e6, 1e6] m, got \"1e999\"");
+  EXPECT_EQ(parse_point_text("-1.5e-3 +2 .5\n", "a.xyz").position.at(0), glm::vec3(-1.5e-3f, 2, 0.5f));
   EXPECT_EQ(error_of("1,2,,3\n"), "points.csv: line 1, column 3 (z): expected a number, got \"\"");
   EXPECT_EQ(error_of("1 2\n"),
             "points.csv: line 1: 2 columns without a header: expected 3 (x y z), 4 (x y z radius), 5 (x y z radius "
@@ -94,6 +99,15 @@ TEST(PointCloudText, HeaderErrors) {
             "points.csv: line 1 (the header): the colour mixes spellings: expected one of r g b, red green blue or "
             "diffuse_red diffuse_green diffuse_blue");
   EXPECT_EQ(error_of("x y z vx vy\n"), "points.csv: line 1 (the header): a velocity is given in part: expected also 'vz'");
+}
+
+TEST(PointCloudText, AtMostTheLimitOfPoints) {
+  std::string rows;
+  rows.reserve((kMaxCloudPoints + 1) * 6);
+  for (std::size_t i = 0; i < kMaxCloudPoints; ++i) rows += "0 0 0\n";
+  rows += "1 1 1\n";  // the points before it were read: the error is at the one over
+  EXPECT_EQ(error_of(rows, "big.xyz"), "big.xyz: line " + std::to_string(kMaxCloudPoints + 1) +
+                                           ": more than 4194304 points: expected at most that many (the limit of a point cloud)");
 }
 
 TEST(PointCloudText, EmptyFiles) {
