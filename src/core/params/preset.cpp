@@ -201,8 +201,8 @@ Preset parse_preset(const std::string& text, const std::string& file) {
       if (p.objects[i].cloud) {
         int clouds = 0;
         for (size_t k = 0; k <= i; ++k) clouds += p.objects[k].cloud ? 1 : 0;
-        if (clouds > contract::kMaxClouds)
-          throw InputError(file + ": field '" + at + ".kind': a scene holds at most " + std::to_string(contract::kMaxClouds) +
+        if (clouds > kMaxCloudObjects)
+          throw InputError(file + ": field '" + at + ".kind': a scene holds at most " + std::to_string(kMaxCloudObjects) +
                            " point clouds");
       }
       if (p.objects[i].droplets)

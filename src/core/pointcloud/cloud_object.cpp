@@ -239,8 +239,8 @@ std::shared_ptr<const PointCloud> place_cloud(const PointCloud& in, const PointC
   }
   const float blob = p.blob_radius > 0 ? p.blob_radius : 0.002f;  // (automatic for files: 2 mm)
   if (out->radius.empty()) out->radius.assign(out->size(), blob);
-  else
-    for (float& r : out->radius) r *= p.scale;
+  else  // (scaled to metres and held to what a blob of a scene can be: 1 um to 1 m)
+    for (float& r : out->radius) r = std::clamp(r * p.scale, 1e-6f, 1.0f);
   if (out->temperature.empty()) out->temperature.assign(out->size(), float(cooled_kelvin));
   out->default_radius = blob;
   return out;

@@ -18,6 +18,10 @@
 
 namespace draught {
 
+// Point-cloud objects one scene may hold: each takes at most two of the frame's
+// contract::kMaxClouds clouds (a gob and its blowpipe).
+inline constexpr int kMaxCloudObjects = contract::kMaxClouds / 2;
+
 enum class CloudSourceKind : int { Gob = 0, Stream = 1, File = 2 };
 // What the blob is made of (src/interface/constants.def): hot glass, or a drink.
 using contract::CloudMaterial;

@@ -51,7 +51,7 @@ const char* point_value_expected(PointField f, double v) {
     case PointField::Z:
       return finite_within(v, kMaxPointCoordinate) ? nullptr : "a finite coordinate in [-1e6, 1e6] m";
     case PointField::Radius:
-      return std::isfinite(v) && v >= kMinPointRadius && v <= kMaxPointRadius ? nullptr : "a radius in [1e-9, 1] m";
+      return std::isfinite(v) && v >= kMinPointRadius && v <= kMaxPointRadius ? nullptr : "a radius in [1e-9, 1e6] (the file's units)";
     case PointField::Temperature:
       return std::isfinite(v) && v >= 0 && v <= kMaxPointTemperature ? nullptr : "a temperature in [0, 10000] K";
     case PointField::Red:

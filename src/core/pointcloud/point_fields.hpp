@@ -19,8 +19,8 @@ inline constexpr int kPointFieldCount = 11;
 
 // Limits of the values: coordinates and speeds are bounded so that they stay far inside
 // float's range and a BVH's arithmetic; the least radius keeps a radius positive as a float.
-inline constexpr double kMinPointRadius = 1.0e-9;         // m
-inline constexpr double kMaxPointRadius = 1.0;            // m
+inline constexpr double kMinPointRadius = 1.0e-9;         // in the file's units
+inline constexpr double kMaxPointRadius = 1.0e6;          // in the file's units (scaled to metres by the object)
 inline constexpr double kMaxPointTemperature = 10000.0;   // K
 inline constexpr double kMaxPointCoordinate = 1.0e6;      // m, |x|, |y|, |z|
 inline constexpr double kMaxPointSpeed = 1.0e6;           // m/s, |vx|, |vy|, |vz|
@@ -32,7 +32,7 @@ const char* point_field_name(PointField);
 // docs/pointcloud-files.md): {"x"}, ..., {"r", "red", "diffuse_red"}, {"vx", "velocity_x"}.
 const std::vector<std::vector<std::string>>& point_field_names();
 
-// What a value of the field must be ("a radius in [1e-9, 1] m"), or nullptr when `v` is one.
+// What a value of the field must be ("a radius in [1e-9, 1e6] (the file's units)"), or nullptr when `v` is one.
 const char* point_value_expected(PointField, double v);
 
 // Which field each of a file's names (PLY properties, text columns) gives: column[field]

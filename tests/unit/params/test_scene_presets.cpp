@@ -226,7 +226,7 @@ TEST(ScenePresetErrors, ObjectFields) {
   EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "d", "kind": "droplets", "glass": "pint" }])")),
                   {"objects[0].glass", "a droplets object has no glass"}));
   EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "d", "kind": "drops" }])")),
-                  {"objects[0].kind", "expected \"vessel\" (the default) or \"droplets\"", "\"drops\""}));
+                  {"objects[0].kind", "expected \"vessel\" (the default), \"droplets\" or \"pointcloud\"", "\"drops\""}));
   EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "d", "kind": "droplets", "droplets": { "blend": -1 } }])")),
                   {"objects[0].droplets.blend", "expected a number in [0, 0.2] (m)", "got -1"}));
   EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "d", "kind": "droplets" }, { "name": "e", "kind": "droplets" }])")),

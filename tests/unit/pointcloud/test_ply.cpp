@@ -313,7 +313,7 @@ TEST(PointCloudPly, AsciiBodyErrorsNameTheLine) {
   EXPECT_EQ(error_of(head + "inf 0 0 0.01 1 2 3\n"),
             "gob.ply: line 12 (vertex 0, property x): expected a finite coordinate in [-1e6, 1e6] m, got inf");
   EXPECT_EQ(error_of(head + "0 0 0 -0.5 1 2 3\n"),
-            "gob.ply: line 12 (vertex 0, property radius): expected a radius in [1e-9, 1] m, got -0.5");
+            "gob.ply: line 12 (vertex 0, property radius): expected a radius in [1e-9, 1e6] (the file's units), got -0.5");
   EXPECT_EQ(error_of(head + "0 0 0 0.01 1 300 3\n"),
             "gob.ply: line 12 (vertex 0, property green): expected an integer in [0, 255] (uchar), got \"300\"");
   EXPECT_EQ(error_of(head + "0 0 0 0.01 1 2 3 4\n"),

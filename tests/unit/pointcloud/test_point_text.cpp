@@ -72,7 +72,7 @@ TEST(PointCloudText, ErrorsNameLineColumnAndField) {
   EXPECT_EQ(error_of("1 2 nan\n"), "points.csv: line 1, column 3 (z): expected a finite coordinate in [-1e6, 1e6] m, got \"nan\"");
   EXPECT_EQ(error_of("1 2 3\n-inf 2 3\n"), "points.csv: line 2, column 1 (x): expected a finite coordinate in [-1e6, 1e6] m, got \"-inf\"");
   EXPECT_EQ(error_of("x,y,z,R,G,B\n0,0,0,-0.01,0,0\n"), "points.csv: line 2, column 4 (R): expected a linear colour channel in [0, 1], got \"-0.01\"");
-  EXPECT_EQ(error_of("0 0 0 -0.01\n"), "points.csv: line 1, column 4 (radius): expected a radius in [1e-9, 1] m, got \"-0.01\"");
+  EXPECT_EQ(error_of("0 0 0 -0.01\n"), "points.csv: line 1, column 4 (radius): expected a radius in [1e-9, 1e6] (the file's units), got \"-0.01\"");
   EXPECT_EQ(error_of("0 0 0 0.01 -5\n"), "points.csv: line 1, column 5 (temperature): expected a temperature in [0, 10000] K, got \"-5\"");
   EXPECT_EQ(error_of("0 0 0 0.01 1 1.5 0\n"), "points.csv: line 1, column 6 (g): expected a linear colour channel in [0, 1], got \"1.5\"");
   // Decimal numbers only: no hex, no trailing text; beyond double's range is infinite.
