@@ -97,7 +97,7 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kPaintedSky) frag = with_define(std::move(frag), "PAINTED_SKY");
   if (variant & kMatCapBackdrop) frag = with_define(std::move(frag), "MATCAP_BACKDROP");
   if (variant & kMatCapCached) frag = with_define(std::move(frag), "MATCAP_CACHED");
-  if (const int held = variant >> kHeldShift)
+  if (const int held = (variant >> kHeldShift) & kHeldMask)
     frag = with_define(std::move(frag), "HELD_OBJECTS", std::to_string(held));
   auto program = std::make_unique<Program>(vert, frag);
   bind_interface(*program, pass);

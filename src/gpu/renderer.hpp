@@ -107,7 +107,7 @@ class Renderer {
   enum Variant {
     kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kScreenCard = 32, kScreenBackground = 64,
     kSphereLights = 128, kPaintedSky = 256, kDroplets = 512, kMatCap = 1024, kMatCapBackdrop = 2048,
-    kMatCapCached = 4096, kHeldShift = 13, kClouds = 1 << 16  // (held objects: bits 13-15)
+    kMatCapCached = 4096, kHeldShift = 13, kHeldMask = 7, kClouds = 1 << 16  // (held objects: bits 13-15)
   };
   // The MatCap tier's background, drawn when it is not the one of this frame; false when
   // it cannot be kept (no float targets, a screen whose frames it does not follow).

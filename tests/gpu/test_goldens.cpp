@@ -39,6 +39,17 @@ FrameState droplets_trail() {
   req.preset = tl.preset;
   return draught::timeline_frame(tl, resolve_scene_objects(req), 1.0);
 }
+FrameState scene_preset(const char* name) {
+  SceneRequest req;
+  req.preset = name;
+  return make_frame(resolve_scene_objects(req));
+}
+FrameState molten_gob() { return scene_preset("molten-gob"); }  // the point clouds (docs/POINT_CLOUDS.md)
+FrameState gob_cooled() { return scene_preset("gob-cooled"); }
+FrameState wine_spill() {  // a spill's stream over the rim
+  const Timeline tl = load_timeline("tilt-until-spill");
+  return draught::timeline_frame(tl, resolve_scene(SceneRequest{tl.preset, tl.glass, {}, {}}), 3.4);
+}
 FrameState matcap_flight() {  // the MatCap tier (docs/MATCAP.md)
   FrameState f = make_frame(flight_scene(FlightView::StraightOn));
   f.params.render.tier = int(RenderTier::MatCap);
@@ -112,6 +123,9 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         GoldenCase{"pint_lager", {"lager", "pint", {}, {}}, 160, 160, 3, 0.002, 64},
         GoldenCase{"droplets_trail", {}, 200, 150, 3, 0.002, 64, nullptr, 0, droplets_trail},
+        GoldenCase{"molten_gob", {}, 200, 150, 3, 0.003, 64, nullptr, 0, molten_gob},
+        GoldenCase{"gob_cooled", {}, 200, 150, 3, 0.003, 64, nullptr, 0, gob_cooled},
+        GoldenCase{"red_wine_spill", {}, 160, 160, 3, 0.003, 64, nullptr, 0, wine_spill},
         GoldenCase{"nonic_stout", {"stout", "nonic", {}, {}}, 160, 160, 3, 0.002, 64},
         GoldenCase{"wine_red", {"red-wine", "wine", {}, {}}, 128, 192, 3, 0.002, 64},
         GoldenCase{"tulip_amber_constant_env",
