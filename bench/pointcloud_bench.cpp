@@ -1,7 +1,7 @@
 // Point-cloud benchmarks (CPU, one core): the BVH's build and refit at 10k / 100k / 1M
 // points, and the float march's cost per ray through the tree against the all-points
 // loop, and at 10k against 1M points filling the same blob (equal screen coverage).
-// docs/pointcloud-tree.md quotes the medians.
+// docs/POINT_CLOUDS.md quotes the medians.
 #include "core/pointcloud/bvh.hpp"
 #include "core/pointcloud/cloud_texels.hpp"
 #include "core/pointcloud/field.hpp"

@@ -2,7 +2,7 @@
 // whose support holds p, marched through the cloud's BVH in the data textures u_cloud_points,
 // u_cloud_attrs, u_cloud_nodes (src/interface/objects.def, gpu/cloud_textures). GLSL twin
 // of core/pointcloud/field.cpp's float march (the same function names and steps;
-// tests/gpu/test_cloud_march.cpp compares them). docs/pointcloud-tree.md.
+// tests/gpu/test_cloud_march.cpp compares them). docs/POINT_CLOUDS.md.
 #ifndef LIB_POINTCLOUD_MARCH_GLSL
 #define LIB_POINTCLOUD_MARCH_GLSL
 #include "generated/constants.glsl"

@@ -2,7 +2,7 @@
 // integrated against the CIE 1931 2-degree colour matching functions (as the analytic
 // multi-lobe fit of Wyman, Sloan and Shirley, JCGT 2(2), 2013) to absolute XYZ, then
 // to linear sRGB (Rec. 709 primaries, D65 white). A small table carries it to the GPU;
-// blackbody_table_lookup is exactly what the shader does with it. docs/pointcloud-glow.md.
+// blackbody_table_lookup is exactly what the shader does with it. docs/POINT_CLOUDS.md.
 #pragma once
 
 #include <glm/glm.hpp>

@@ -3,7 +3,7 @@
 // codes (each node splits its range where the highest differing bit of its codes flips;
 // by count where that would go deeper than kCloudMaxDepth), leaves of at most leaf_size
 // points that are contiguous in `order`. Nodes are depth-first: an inner node's left child
-// is the next node. docs/pointcloud-tree.md says why this builder and what it costs.
+// is the next node. docs/POINT_CLOUDS.md says why this builder and what it costs.
 #pragma once
 
 #include "core/pointcloud/cloud.hpp"

@@ -1,6 +1,6 @@
 // Point cloud files by path: one cloud by its extension (.ply, .xyz, .csv, .txt), and
 // numbered sequences of them (a simulation's frames), loaded on demand a few at a time.
-// docs/pointcloud-files.md.
+// docs/POINT_CLOUDS.md.
 #pragma once
 
 #include "core/pointcloud/cloud.hpp"

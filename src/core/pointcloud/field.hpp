@@ -2,7 +2,7 @@
 // k(s) = (1 - s)^3 for s = |p - c_i|^2 / R_i^2 < 1 (C2 where the support ends), F = sum k_i,
 // the surface is F = threshold, its normal normalize(-grad F), its temperature and colour
 // the k-weighted means of the points'. F sums exactly the points whose support holds p, so
-// no result depends on how a tree splits them (docs/pointcloud-tree.md).
+// no result depends on how a tree splits them (docs/POINT_CLOUDS.md).
 //
 // Two implementations: the reference (double, every point, no tree: for tests and
 // probes) and the float twin of shaders/lib/pointcloud/march.glsl, which reads the texel
@@ -87,7 +87,7 @@ struct CloudHit {
   int steps = 0;    // loop iterations used
   int queries = 0;  // point and entry queries made
 };
-// The march (docs/pointcloud-tree.md): clip to the root box; outside every support, jump
+// The march (docs/POINT_CLOUDS.md): clip to the root box; outside every support, jump
 // to the next support entry; inside, steps of kCloudStepFraction * min_support, each
 // sample a point query; a sign change of F - threshold, or a dip towards it that the
 // samples' values and slopes predict (the cubic Hermite minimum, sampled when predicted

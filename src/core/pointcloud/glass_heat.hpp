@@ -1,6 +1,6 @@
 // How hot glass is and how it cools: named temperatures for presets, Newton's law, and
 // Newton plus radiation (glass above ~800 K loses most of its heat by radiating).
-// docs/pointcloud-glow.md.
+// docs/POINT_CLOUDS.md.
 #pragma once
 
 #include <optional>

@@ -1,7 +1,7 @@
 // PLY point clouds: ascii, binary_little_endian and binary_big_endian, every scalar type
 // and list properties; the "vertex" element's x y z (and radius, temperature, colour,
 // velocity when given) become a PointCloud, every other element and property is skipped.
-// docs/pointcloud-files.md.
+// docs/POINT_CLOUDS.md.
 #pragma once
 
 #include "core/pointcloud/cloud.hpp"

@@ -1,7 +1,7 @@
 // The per-point fields the loaders fill (a PLY's vertex properties, a text file's
 // columns): which names give which field, what each value must be, and the one place a
 // point is checked and stored, so every format accepts exactly the same values.
-// docs/pointcloud-files.md.
+// docs/POINT_CLOUDS.md.
 #pragma once
 
 #include "core/pointcloud/cloud.hpp"
@@ -29,7 +29,7 @@ inline constexpr double kMaxPointSpeed = 1.0e6;           // m/s, |vx|, |vy|, |v
 const char* point_field_name(PointField);
 
 // The names every loader accepts, canonical first, with their aliases (a line each of
-// docs/pointcloud-files.md): {"x"}, ..., {"r", "red", "diffuse_red"}, {"vx", "velocity_x"}.
+// docs/POINT_CLOUDS.md): {"x"}, ..., {"r", "red", "diffuse_red"}, {"vx", "velocity_x"}.
 const std::vector<std::vector<std::string>>& point_field_names();
 
 // What a value of the field must be ("a radius in [1e-9, 1e6] (the file's units)"), or nullptr when `v` is one.

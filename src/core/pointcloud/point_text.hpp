@@ -4,7 +4,7 @@
 // without it the count of columns says what they are:
 //   3: x y z   4: x y z radius   5: x y z radius temperature   6: x y z r g b
 //   7: x y z radius r g b
-// Colours in text are linear, 0..1. docs/pointcloud-files.md.
+// Colours in text are linear, 0..1. docs/POINT_CLOUDS.md.
 #pragma once
 
 #include "core/pointcloud/cloud.hpp"
