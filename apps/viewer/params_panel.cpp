@@ -221,8 +221,16 @@ bool params_panel(Scene& s, ParamsPanelState& state) {
   object_combo(s);
   // The selected object's groups (glass, liquid, foam, bubbles, clip, decals), then the scene's
   // (env, light, camera, render); ids differ by path, so both sets can be open at once.
-  ImGui::TextDisabled("%s", s.objects.size() > 1 ? "the selected glass and its drink" : "the glass and its drink");
-  bool changed = groups(s, ParamScope::Vessel, state);
+  bool changed = false;
+  if (as_vessel(s.objects[size_t(s.selected)])) {
+    ImGui::TextDisabled("%s", s.objects.size() > 1 ? "the selected glass and its drink" : "the glass and its drink");
+    changed = groups(s, ParamScope::Vessel, state);
+  } else {
+    // A droplets trail or a point cloud: its parameters are its own (the scene file's
+    // "droplets" or "pointcloud" object), not the table's glass and drink.
+    ImGui::TextDisabled("%s: a %s; its parameters are in the scene file", s.objects[size_t(s.selected)].name.c_str(),
+                        as_cloud(s.objects[size_t(s.selected)]) ? "point cloud" : "droplets trail");
+  }
   ImGui::Spacing();
   ImGui::TextDisabled("the scene");
   changed |= groups(s, ParamScope::Scene, state);

@@ -51,7 +51,12 @@ vec4 cloud_field_at(CloudRef c, vec3 p, bool with_attrs, out vec4 attrs) {
     if (any(lessThan(p, a.xyz)) || any(greaterThan(p, b.xyz))) continue;
     int index = int(a.w), count = int(b.w);
     if (count > 0) {
-      for (int i = index; i < index + count; ++i) {
+      // A leaf's points in a loop of constant count, which the compiler unrolls: llvmpipe
+      // counts every iteration of every loop of a pixel against one budget of 65535.
+      // (The renderer's trees have leaves of at most CLOUD_LEAF_SIZE points.)
+      for (int j = 0; j < CLOUD_LEAF_SIZE; ++j) {
+        if (j >= count) continue;
+        int i = index + j;
         vec4 pt = cloud_point(i);
         vec3 q = p - pt.xyz;
         float inv_r2 = 1.0 / (pt.w * pt.w), u = dot(q, q) * inv_r2;
@@ -92,8 +97,9 @@ float cloud_next_entry(CloudRef c, vec3 o, vec3 d, float tmin, float limit) {
     cloud_node(n, a, b);
     int index = int(a.w), count = int(b.w);
     if (count > 0) {
-      for (int i = index; i < index + count; ++i) {
-        vec4 pt = cloud_point(i);
+      for (int j = 0; j < CLOUD_LEAF_SIZE; ++j) {  // (unrolled, as above)
+        if (j >= count) continue;
+        vec4 pt = cloud_point(index + j);
         vec3 q = o - pt.xyz;
         float bq = dot(q, d), disc = bq * bq - (dot(q, q) - pt.w * pt.w);
         if (!(disc > 0.0)) continue;
@@ -217,7 +223,13 @@ bool march_cloud(CloudRef c, vec3 o, vec3 d, float tmin, float tmax, bool inside
     g = gn;
     slope = sn;
   }
-  if (!found) return false;
+  if (!found && !inside) return false;
+  if (!found) {  // out of steps (or of llvmpipe's loop budget) inside: leave straight on (twin: field.cpp)
+    t_hit = t;
+    cloud_field_at(c, o + t * d, true, attrs);
+    n = -d;
+    return true;
+  }
   // The line through the bracket's ends meets the level (twin: field.cpp says why).
   t_hit = ga - gb > 0.0 ? clamp(a + (b - a) * (ga / (ga - gb)), a, b) : b;
   vec4 s = cloud_field_at(c, o + t_hit * d, true, attrs);

@@ -421,7 +421,17 @@ std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::v
     g = gn;
     slope = sn;
   }
-  if (!found) return std::nullopt;
+  if (!found && !inside) return std::nullopt;
+  if (!found) {
+    // Out of steps inside (a long chord through a dense blob; on llvmpipe, out of its loop
+    // budget): the path leaves where it is, straight on, rather than being lost inside.
+    hit.t = t;
+    glm::vec4 attrs;
+    q.field(o + hit.t * d, &attrs);
+    hit.n = -d;
+    hit.attrs = attrs;
+    return hit;
+  }
   // The crossing where the line through the bracket's ends meets the level (F is nearly
   // linear over a bracket of step / 2^kCloudBisections, a few micrometres: the error is
   // nanometres), held inside the bracket. A path crossing here marches on from 2 um
