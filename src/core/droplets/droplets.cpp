@@ -8,12 +8,11 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <sstream>
 
 namespace draught {
 
-const std::vector<DropletParamInfo>& droplet_param_table() {
-  static const std::vector<DropletParamInfo> table = {
+const std::vector<ObjectParamInfo>& droplet_param_table() {
+  static const std::vector<ObjectParamInfo> table = {
       {"count", 1, kMaxDroplets, "", "spheres in the trail"},
       {"radius", 0.001, 0.2, "m", "radius of the head sphere"},
       {"taper", 0, 0.95, "", "the tail's radius is radius x (1 - taper), linearly along the trail"},
@@ -30,36 +29,16 @@ const std::vector<DropletParamInfo>& droplet_param_table() {
   return table;
 }
 
-namespace {
-std::string range_text(const DropletParamInfo& p) {
-  std::ostringstream s;
-  s << "[" << p.min << ", " << p.max << "]";
-  if (*p.unit) s << " (" << p.unit << ")";
-  return s.str();
-}
-}  // namespace
 
 DropletParams parse_droplet_params(const nlohmann::json& j, const std::string& file, const std::string& at) {
   if (!j.is_object())
     throw InputError(file + ": field '" + at + "': expected an object of droplet parameters, got " + short_dump(j));
   DropletParams p;
-  std::vector<std::string> names;
-  for (const auto& info : droplet_param_table()) names.emplace_back(info.name);
   for (auto it = j.begin(); it != j.end(); ++it) {
     const std::string key = it.key(), field = file + ": field '" + at + "." + key + "': ";
-    const DropletParamInfo* info = nullptr;
-    for (const auto& i : droplet_param_table())
-      if (key == i.name) info = &i;
-    if (!info) {
-      const std::string near = nearest_choice(key, names);
-      throw InputError(field + "unknown droplet parameter" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
-    }
+    const ObjectParamInfo* info = &find_object_param(droplet_param_table(), key, file, at, "droplet");
     const nlohmann::json& v = it.value();
-    auto number = [&](const nlohmann::json& x) {
-      if (!x.is_number() || !(x.get<double>() >= info->min && x.get<double>() <= info->max))
-        throw InputError(field + "expected a number in " + range_text(*info) + ", got " + short_dump(v));
-      return x.get<double>();
-    };
+    auto number = [&](const nlohmann::json& x) { return object_param_number(x, *info, file, at + "." + key); };
     if (key == "kernel") {
       if (!v.is_string() || (v.get<std::string>() != "polynomial" && v.get<std::string>() != "exponential"))
         throw InputError(field + "expected \"polynomial\" or \"exponential\", got " + short_dump(v));
@@ -71,7 +50,7 @@ DropletParams parse_droplet_params(const nlohmann::json& j, const std::string& f
       p.count = int(v.get<std::int64_t>());
     } else if (key == "absorption") {
       if (!v.is_array() || v.size() != 3)
-        throw InputError(field + "expected [r, g, b], each in " + range_text(*info) + ", got " + short_dump(v));
+        throw InputError(field + "expected [r, g, b], each in " + object_param_range(*info) + ", got " + short_dump(v));
       for (int c = 0; c < 3; ++c) p.absorption[c] = float(number(v[size_t(c)]));
     } else {
       const float x = float(number(v));

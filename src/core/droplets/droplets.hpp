@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/droplets/field.hpp"
+#include "core/params/object_params.hpp"
 
 #include <glm/glm.hpp>
 #include <nlohmann/json_fwd.hpp>
@@ -37,14 +38,8 @@ struct DropletsFrame {
   DropletField field;
 };
 
-// One parameter of a droplets object, for parsing, errors and docs/DROPLETS.md.
-struct DropletParamInfo {
-  const char* name;
-  double min, max;
-  const char* unit;
-  const char* doc;
-};
-const std::vector<DropletParamInfo>& droplet_param_table();
+// The parameters of a droplets object, for parsing, errors and docs/DROPLETS.md.
+const std::vector<ObjectParamInfo>& droplet_param_table();
 
 // The "droplets" object of a scene preset's object ({"count": 16, "blend": 0.02, ...}),
 // every field checked: InputError "FILE: field 'AT.blend': expected a number in [0, 0.1]

@@ -17,12 +17,11 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
-#include <sstream>
 
 namespace draught {
 
-const std::vector<PointCloudParamInfo>& point_cloud_param_table() {
-  static const std::vector<PointCloudParamInfo> table = {
+const std::vector<ObjectParamInfo>& point_cloud_param_table() {
+  static const std::vector<ObjectParamInfo> table = {
       {"source", 0, 2, "", "\"gob\" (molten glass on a turning blowpipe, the default), \"stream\" (a falling stream) or "
                            "\"file\""},
       {"file", 0, 0, "", "file source: a .ply, .xyz or .csv cloud, or one frame of a numbered sequence "
@@ -55,13 +54,6 @@ const std::vector<PointCloudParamInfo>& point_cloud_param_table() {
 
 namespace {
 
-std::string range_text(const PointCloudParamInfo& p) {
-  std::ostringstream s;
-  s << "[" << p.min << ", " << p.max << "]";
-  if (*p.unit) s << " (" << p.unit << ")";
-  return s.str();
-}
-
 const char* source_name(int s) { return s == 1 ? "stream" : s == 2 ? "file" : "gob"; }
 const char* material_name(int m) { return m == 1 ? "drink" : "molten_glass"; }
 
@@ -72,23 +64,11 @@ PointCloudParams parse_point_cloud_params(const nlohmann::json& j, const std::st
   if (!j.is_object())
     throw InputError(file + ": field '" + at + "': expected an object of point-cloud parameters, got " + short_dump(j));
   PointCloudParams p;
-  std::vector<std::string> names;
-  for (const auto& info : point_cloud_param_table()) names.emplace_back(info.name);
   for (auto it = j.begin(); it != j.end(); ++it) {
     const std::string key = it.key(), field = file + ": field '" + at + "." + key + "': ";
-    const PointCloudParamInfo* info = nullptr;
-    for (const auto& i : point_cloud_param_table())
-      if (key == i.name) info = &i;
-    if (!info) {
-      const std::string near = nearest_choice(key, names);
-      throw InputError(field + "unknown point-cloud parameter" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
-    }
+    const ObjectParamInfo* info = &find_object_param(point_cloud_param_table(), key, file, at, "point-cloud");
     const nlohmann::json& v = it.value();
-    auto number = [&](const nlohmann::json& x) {
-      if (!x.is_number() || !(x.get<double>() >= info->min && x.get<double>() <= info->max))
-        throw InputError(field + "expected a number in " + range_text(*info) + ", got " + short_dump(v));
-      return x.get<double>();
-    };
+    auto number = [&](const nlohmann::json& x) { return object_param_number(x, *info, file, at + "." + key); };
     auto choice = [&](std::initializer_list<const char*> options) {
       int k = 0;
       std::string list;
@@ -114,11 +94,11 @@ PointCloudParams parse_point_cloud_params(const nlohmann::json& j, const std::st
       p.loop = v.get<bool>();
     } else if (key == "count") {
       if (!v.is_number_integer() || v.get<std::int64_t>() < info->min || v.get<std::int64_t>() > info->max)
-        throw InputError(field + "expected a whole number in " + range_text(*info) + ", got " + short_dump(v));
+        throw InputError(field + "expected a whole number in " + object_param_range(*info) + ", got " + short_dump(v));
       p.count = int(v.get<std::int64_t>());
     } else if (key == "absorption") {
       if (!v.is_array() || v.size() != 3)
-        throw InputError(field + "expected [r, g, b], each in " + range_text(*info) + ", got " + short_dump(v));
+        throw InputError(field + "expected [r, g, b], each in " + object_param_range(*info) + ", got " + short_dump(v));
       for (int c = 0; c < 3; ++c) p.absorption[c] = float(number(v[size_t(c)]));
     } else {
       const float x = float(number(v));

@@ -5,6 +5,7 @@
 // docs/POINT_CLOUDS.md.
 #pragma once
 
+#include "core/params/object_params.hpp"
 #include "core/pointcloud/cloud.hpp"
 #include "generated/constants.hpp"
 
@@ -58,13 +59,8 @@ struct PointCloudParams {
                                    // has turned and sagged, a stream that has landed)
 };
 
-struct PointCloudParamInfo {
-  const char* name;
-  double min, max;
-  const char* unit;
-  const char* doc;
-};
-const std::vector<PointCloudParamInfo>& point_cloud_param_table();
+// The parameters of a point-cloud object, for parsing, errors and docs/POINT_CLOUDS.md.
+const std::vector<ObjectParamInfo>& point_cloud_param_table();
 
 // The "pointcloud" object of a scene preset's object, every field checked (InputError
 // "FILE: field 'AT.glow': expected a number in [0, 100], got ..."). A relative `file` is
