@@ -136,14 +136,15 @@ TEST_F(Animate, MotionShowsAndTiltUntilSpillSpills) {
 }
 
 TEST_F(Animate, SpilledIsOfTheLastPourNotASumOverPours) {
-  // Five pours into a glass held at 120 degrees: each spills nearly all of it. The
+  // Five pours (instant fills) into a glass held at 120 degrees: each spills nearly all of it. The
   // readout is the spill since the last pour (at most what was poured), not a sum over
   // the pours, which read "spilled 538.8 % of the glass".
   write_file(in() / "pours.json",
              R"({"draught_timeline": 1, "name": "pours", "duration": 6, "actions": [
                  {"at": 0, "action": "tilt", "angle": 120, "duration": 0.5},
-                 {"at": 1, "action": "pour"}, {"at": 2, "action": "pour"}, {"at": 3, "action": "pour"},
-                 {"at": 4, "action": "pour"}, {"at": 5, "action": "pour"}]})");
+                 {"at": 1, "action": "pour", "duration": 0}, {"at": 2, "action": "pour", "duration": 0},
+                 {"at": 3, "action": "pour", "duration": 0}, {"at": 4, "action": "pour", "duration": 0},
+                 {"at": 5, "action": "pour", "duration": 0}]})");
   auto r = animate((in() / "pours.json").string(), {"--size", "16x16", "--fps", "1", "--full", "-o", frames_dir("f")});
   ASSERT_EQ(r.exit_code, 0) << r.describe();
   const double spilled = spilled_percent(r.out);
