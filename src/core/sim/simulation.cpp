@@ -102,7 +102,7 @@ void Simulation::pour_over(double seconds) {
   bubbles_->clear();
   update_surface();
   const double volume = params_.liquid.fill * vessel_.cavity_volume();
-  Stream s;
+  GlassStream s;
   const double rim = vessel_.rim_major;
   s.stream.set_origin(world(glm::dvec3(0, vessel_.height + kSpoutAboveRim, -kSpoutBehind * rim)),
                       motion_.pose.orientation * glm::dvec3(0, 0, kSpoutSpeed));
@@ -114,7 +114,7 @@ void Simulation::pour_over(double seconds) {
 
 std::vector<CloudFrame> Simulation::streams() const {
   std::vector<CloudFrame> out;
-  for (const std::optional<Stream>* s : {&pour_, &spill_}) {
+  for (const std::optional<GlassStream>* s : {&pour_, &spill_}) {
     if (!*s || (*s)->stream.in_flight_volume() <= 0) continue;
     CloudFrame f;
     f.points = std::make_shared<const PointCloud>((*s)->stream.cloud());
@@ -135,7 +135,7 @@ void Simulation::step_streams(double dt, double spilled_before) {
   // cavity's floor while the glass is empty).
   const double level = fraction_ > kEmpty ? axis_level() : vessel_.base;
   if (pour_) {
-    Stream& s = *pour_;
+    GlassStream& s = *pour_;
     s.stream.set_target_height(world(glm::dvec3(0, level, 0)).y);
     // The flow is a clock of its own (started at 0 by pour_over), in step with ours.
     const double t = s.stream.time() + dt;
@@ -156,7 +156,7 @@ void Simulation::step_streams(double dt, double spilled_before) {
     spill_->stream.set_target_height(0.0);
   }
   if (spill_) {
-    Stream& s = *spill_;
+    GlassStream& s = *spill_;
     // The rim is lowest against the surface's normal, opposite its lean (glass frame).
     const glm::dvec3 out(-std::cos(azimuth_), 0, -std::sin(azimuth_));
     const glm::dvec3 lip = world(glm::dvec3(0, vessel_.height, 0) + (vessel_.rim_major + vessel_.rim_minor) * out);

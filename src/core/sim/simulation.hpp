@@ -17,6 +17,17 @@
 
 namespace draught {
 
+// A pour's or a spill's stream of a glass: parcels in the air, their volume counted out
+// of the glass (spill) or into it (pour) so that stream and glass conserve it. (Outside
+// Simulation: a nested struct's member initialisers are not usable in its own class's
+// members under clang.)
+struct GlassStream {
+  PourStream stream;
+  double counted = 0;   // arrived volume already added to the glass (pour)
+  double end = 0;       // time the flow stops
+  std::uint64_t version = 0;
+};
+
 class Simulation {
  public:
   static constexpr double kStep = 1.0 / 240.0;  // seconds
@@ -91,15 +102,7 @@ class Simulation {
   LiquidPlane surface_;
   double tilt_ = 0, azimuth_ = 0;
   bool first_step_ = true;
-  // The pour's stream and the spill's: parcels in the air, their volume counted out of
-  // the glass (spill) or into it (pour) so that stream and glass conserve it.
-  struct Stream {
-    PourStream stream;
-    double counted = 0;   // arrived volume already added to the glass (pour)
-    double end = 0;       // time the flow stops
-    std::uint64_t version = 0;
-  };
-  std::optional<Stream> pour_, spill_;
+  std::optional<GlassStream> pour_, spill_;
   void step_streams(double dt, double spilled_before);
   glm::dvec3 world(const glm::dvec3& local) const;
 };

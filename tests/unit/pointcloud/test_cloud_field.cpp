@@ -136,8 +136,8 @@ TEST(PointCloudField, MarchMatchesReferenceFromOutside) {
 }
 
 TEST(PointCloudField, MarchMatchesReferenceFromInside) {
-  const Stats s = compare_rays(blob(1500, 0.004f, 2), 1500, true, 18);
-  EXPECT_GT(s.hits, 1000);
+  const Stats s = compare_rays(blob(1500, 0.004f, 2), 500, true, 18);
+  EXPECT_GT(s.hits, 490);  // every inside ray exits (500 rays: about a minute under AddressSanitizer)
 }
 
 TEST(PointCloudField, SparsePointsToo) {
