@@ -13,6 +13,8 @@ set(DRAUGHT_CORE_SOURCES
   src/core/droplets/field.cpp
   src/core/droplets/droplets.cpp
   src/core/droplets/trail.cpp
+  src/core/condensation/condensation.cpp
+  src/core/condensation/wall_grid.cpp
   src/core/pointcloud/cloud_object.cpp
   src/core/pointcloud/cloud_scene.cpp
   src/core/pointcloud/point_fields.cpp

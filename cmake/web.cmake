@@ -50,6 +50,7 @@ set(web_gpu
   "${DRAUGHT_ROOT}/src/gpu/decal_textures.cpp"
   "${DRAUGHT_ROOT}/src/gpu/matcap_texture.cpp"
   "${DRAUGHT_ROOT}/src/gpu/cloud_textures.cpp"
+  "${DRAUGHT_ROOT}/src/gpu/condensation_textures.cpp"
   "${DRAUGHT_ROOT}/src/gpu/renderer.cpp"
   "${DRAUGHT_ROOT}/src/gpu/screen_texture.cpp")
 include("${CMAKE_CURRENT_LIST_DIR}/shaders.cmake")

@@ -28,6 +28,12 @@
 #if DECALS
 #include "lib/vessel/decal.glsl"
 #endif
+#ifndef CONDENSATION
+#define CONDENSATION 0
+#endif
+#if CONDENSATION
+#include "lib/vessel/condensation.glsl"
+#endif
 
 out vec4 frag_color;
 
@@ -141,11 +147,23 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
   path.thr *= medium_transmittance(v, g, path.medium, h.t);
   vec3 pl = to_local_point(v, p);
   bool below = below_liquid(v, pl);
+  float fog = 0.0;
+#if CONDENSATION
+  // Condensation on the outer wall (lib/vessel/condensation.glsl): a bead is a water lens
+  // the path crosses instead of the bare wall (below); the fog between the beads frosts
+  // the wall as an etched decal does.
+  BeadSample bead = BeadSample(false, vec3(0.0), 1.0);
+  if (h.m == M_GLASS_OUTER) {
+    vec3 nl = to_local_dir(v, h.n);
+    bead = condensation_bead(v, pl, dot(nl.xz, pl.xz) < 0.0 ? -nl : nl);
+    fog = condensation_fog(v, pl) * bead.clear;
+  }
+#endif
 #if DECALS
   // A decal on the wall (lib/vessel/decal.glsl): from inside the glass or the drink its
   // ink, frost or metal meets the path first (no total internal reflection off it); from
   // the air it lies under the surface's gloss (after the reflection, below).
-  DecalEffect decal = decal_effect(v, h, path.medium, p, pl, path.d, below);
+  DecalEffect decal = decal_effect(v, h, path.medium, p, pl, path.d, below, fog);
   vec3 decal_look = vec3(0.0);  // what the decal's own look-up of the surroundings weighs
   if (path.medium != MEDIUM_AIR) {
     path.radiance += path.thr * decal.light;
@@ -154,6 +172,15 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
   }
 #endif
   Crossing c = crossing_at(path, h, v, g, below);
+#if CONDENSATION
+  BeadCrossing bx;
+  if (bead.found) {
+    bool from_air = path.medium == MEDIUM_AIR;
+    bx = bead_crossing(path.d, to_world_dir(v, bead.n), c.n, from_air ? c.n2 : c.n1, from_air);
+    c.n = bx.n;
+    c.F = bx.F;
+  }
+#endif
 #if DECALS
   if (path.medium == MEDIUM_AIR) decal_look = path.thr * (1.0 - c.F) * (decal.behind + decal.mirror);
   if (decal.metal) decal.look = reflect(path.d, c.n);  // from inside: where it leaves the glass (below)
@@ -195,6 +222,13 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
   path.radiance += decal_look * decal_surroundings(p, decal.look, decal.spread, decal.rough, max3(decal_look) > 0.0 ? decal.taps : 0);
 #endif
   go_on(path, h, c, p);
+#if CONDENSATION
+  if (bead.found && c.F < 1.0) {  // through the bead: its two faces bend the path (bead_crossing)
+    path.d = bx.onward;
+    path.medium = bx.leaves ? MEDIUM_AIR : MEDIUM_GLASS;
+    path.obj = bx.leaves ? -1 : h.obj;
+  }
+#endif
 }
 
 #if FOAM_HEAD
@@ -475,6 +509,20 @@ vec4 debug_decal(vec3 eye, vec3 dir) {
 }
 #endif
 
+#if CONDENSATION
+// The first surface's condensation: (the bead's cap normal, local; 0 off a bead; the fog's
+// cover times what the beads leave of it) on a condensed glass's outer wall, else
+// (0, 0, 0, -1). Compared with core's bead_at and fog_at by tests/gpu/test_condensation.
+vec4 debug_condensation(vec3 eye, vec3 dir) {
+  Vessel v;
+  Hit h = nearest_surface(eye, dir, MEDIUM_AIR, -1, 0.0, v);
+  if (h.m != M_GLASS_OUTER || fetch_object_condensation(v.row).condensation_band < 0) return vec4(0.0, 0.0, 0.0, -1.0);
+  vec3 pl = to_local_point(v, eye + h.t * dir), nl = to_local_dir(v, h.n);
+  BeadSample b = condensation_bead(v, pl, dot(nl.xz, pl.xz) < 0.0 ? -nl : nl);
+  return vec4(b.found ? b.n : vec3(0.0), condensation_fog(v, pl) * b.clear);
+}
+#endif
+
 // Pixel (x, y) evaluates the medium rule for material x, medium y mod 3 and below
 // (y >= 3): (medium beyond, 0, 0, 1). Compared with core's medium_across by tests/gpu.
 vec4 debug_medium_rule() {
@@ -547,6 +595,12 @@ void main() {
 #if DECALS
   if (view == VIEW_DECAL) {
     frag_color = debug_decal(frame.cam_eye, dir);
+    return;
+  }
+#endif
+#if CONDENSATION
+  if (view == VIEW_CONDENSATION) {
+    frag_color = debug_condensation(frame.cam_eye, dir);
     return;
   }
 #endif

@@ -4,6 +4,7 @@
 #include "gpu/decal_textures.hpp"
 #include "gpu/matcap_texture.hpp"
 #include "gpu/cloud_textures.hpp"
+#include "gpu/condensation_textures.hpp"
 #include "gpu/program.hpp"
 #include "gpu/scene_data.hpp"
 #include "gpu/screen_texture.hpp"
@@ -75,7 +76,8 @@ void bind_interface(const Program& program, const std::string& what) {
                                        contract::kDecalImagesSampler, contract::kDecalArcsSampler,
                                        contract::kScreenSampler, contract::kMatCapSampler,
                                        contract::kMatCapBackgroundSampler, contract::kCloudPointsSampler,
-                                       contract::kCloudAttrsSampler, contract::kCloudNodesSampler})
+                                       contract::kCloudAttrsSampler, contract::kCloudNodesSampler,
+                                       contract::kCondensationBeadsSampler, contract::kCondensationFogSampler})
     if (GLint at = glGetUniformLocation(program.id(), s.name); at >= 0) glUniform1i(at, s.unit);
 }
 }  // namespace
@@ -91,6 +93,7 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kDecals) frag = with_define(std::move(frag), "DECALS");
   if (variant & kDroplets) frag = with_define(std::move(frag), "DROPLETS");
   if (variant & kClouds) frag = with_define(std::move(frag), "CLOUDS");
+  if (variant & kCondensation) frag = with_define(std::move(frag), "CONDENSATION");
   if (variant & (kScreenCard | kScreenBackground))  // 1: a card in the scene, 2: the background
     frag = with_define(std::move(frag), "SCREEN", variant & kScreenCard ? "1" : "2");
   if (variant & kSphereLights) frag = with_define(std::move(frag), "SPHERE_LIGHTS");
@@ -113,6 +116,7 @@ Renderer::Renderer(const std::filesystem::path& shader_dir) : shader_dir_(shader
   matcap_ = std::make_unique<MatCapTexture>();
   matcap_background_ = std::make_unique<MatCapBackground>();
   clouds_ = std::make_unique<CloudTextures>();
+  condensation_ = std::make_unique<CondensationTextures>();
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &ubo_);
   glBindBuffer(GL_UNIFORM_BUFFER, ubo_);
@@ -138,10 +142,14 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   if (matcap) matcap_->update(f);  // a bake or a read only when its inputs change
   textures_->update(f);  // only rows that changed; the floor's light when its inputs did
   const bool decals = decals_->update(f);  // the images when they change, arc rows when a glass does
+  // Beads and fog: a band when its glass's condensation changed. Its fog is drawn as a
+  // frost decal is, so it brings the decals' code (their textures bound, if empty).
+  const bool condensation = condensation_->update(f) && !matcap;
   screen_->update(f.screen);  // only when another frame comes, into the texture not drawn from
   screen_->bind();
   textures_->bind();  // (after the updates, which bind what they upload to the active unit)
-  if (decals) decals_->bind();
+  if (decals || condensation) decals_->bind();
+  if (condensation) condensation_->bind();
   if (matcap) matcap_->bind();
   // The point clouds: trees kept, refit or rebuilt as their points change (core), the
   // textures uploaded only then.
@@ -180,7 +188,7 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
                       (f.screen.mode == ScreenMode::Background ? kScreenBackground : 0) |
                       (spheres ? kSphereLights : 0) | (painted ? kPaintedSky : 0) |
                       (!f.droplets.empty() && !f.droplets.front().field.spheres.empty() ? kDroplets : 0) |
-                      (clouds ? kClouds : 0);
+                      (clouds ? kClouds : 0) | (condensation ? kCondensation | kDecals : 0);
   // The MatCap pass marches nothing: waves (its surface is the plane) and heads (a layer)
   // need no variant of it; it draws no droplets and no point clouds.
   if (matcap) variant = (variant & ~(kWaves | kFoam | kDroplets | kClouds)) | kMatCap;

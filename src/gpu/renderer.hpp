@@ -20,6 +20,7 @@ namespace draught::gpu {
 
 class DecalTextures;
 class CloudTextures;
+class CondensationTextures;
 class MatCapTexture;
 class MatCapBackground;
 class Program;
@@ -107,7 +108,8 @@ class Renderer {
   enum Variant {
     kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kScreenCard = 32, kScreenBackground = 64,
     kSphereLights = 128, kPaintedSky = 256, kDroplets = 512, kMatCap = 1024, kMatCapBackdrop = 2048,
-    kMatCapCached = 4096, kHeldShift = 13, kHeldMask = 7, kClouds = 1 << 16  // (held objects: bits 13-15)
+    kMatCapCached = 4096, kHeldShift = 13, kHeldMask = 7, kClouds = 1 << 16,  // (held objects: bits 13-15)
+    kCondensation = 1 << 17
   };
   // The MatCap tier's background, drawn when it is not the one of this frame; false when
   // it cannot be kept (no float targets, a screen whose frames it does not follow).
@@ -124,6 +126,7 @@ class Renderer {
   std::unique_ptr<MatCapBackground> matcap_background_;  // u_matcap_background
   CloudScene cloud_scene_;                   // the point clouds' trees and texel arrays
   std::unique_ptr<CloudTextures> clouds_;    // u_cloud_points, u_cloud_attrs, u_cloud_nodes
+  std::unique_ptr<CondensationTextures> condensation_;  // u_condensation_beads, u_condensation_fog
   unsigned bubble_vao_ = 0, bubble_vbo_ = 0;
   unsigned vao_ = 0, ubo_ = 0;
   bool held_objects_ = true;

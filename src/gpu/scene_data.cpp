@@ -4,6 +4,7 @@
 
 #include "core/foam/head_volume.hpp"
 #include "core/scene/camera.hpp"
+#include "gpu/condensation_textures.hpp"
 #include "gpu/decal_textures.hpp"
 
 #include <GLES3/gl3.h>
@@ -222,7 +223,8 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.lacing_count = rings;
   r.lacing_strength = fp.lacing;
   for (int i = 0; i < rings; ++i) r.lacing[i] = float(fo.lacing[size_t(i)]);
-  pack_decals(f, row, r);  // gpu/decal_textures
+  pack_decals(f, row, r);        // gpu/decal_textures
+  pack_condensation(f, row, r);  // gpu/condensation_textures
   return r;
 }
 

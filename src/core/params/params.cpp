@@ -81,6 +81,36 @@ void add_decal_rows(std::vector<ParamDesc>& rows, const std::string& g, const st
       "Roughness of a metallic decal: how much it blurs the lights it mirrors (polished gold 0.05, satin gold 0.3)"));
 }
 
+// Condensation on a cold glass (core/condensation).
+void add_condensation_rows(std::vector<ParamDesc>& rows) {
+  const std::vector<ParamDesc> c = {
+      ROW(VesselParams, condensation, enabled, Bool, 0.0f, 1.0f, "",
+          "Water beads and a fog of micro-droplets on the outside of the glass, where the cold drink cools it"),
+      ROW(VesselParams, condensation, seed, Int, 0.0f, 1000000.0f, "", "Which random pattern of beads (the same seed, the same glass)"),
+      ROW(VesselParams, condensation, count, Int, 0.0f, 8000.0f, "", "Beads seeded on the cold part of the wall (fewer where they would overlap)"),
+      ROW(VesselParams, condensation, size, Float, 0.0002f, 0.004f, "m", "The beads' median base radius"),
+      ROW(VesselParams, condensation, spread, Float, 0.0f, 1.2f, "",
+          "How varied the beads' sizes are: the spread of their log-normal radii (0: all alike)"),
+      ROW(VesselParams, condensation, coverage, Float, 0.0f, 1.0f, "",
+          "How much of the wall between the beads the fog of micro-droplets covers (0: clear, 1: frosted)"),
+      ROW(VesselParams, condensation, contact_angle, Float, 20.0f, 90.0f, "deg",
+          "How domed a bead is: its contact angle with the glass (clean glass 30-70)"),
+      ROW(VesselParams, condensation, slide_radius, Float, 0.001f, 0.006f, "m",
+          "A bead this wide is too heavy to cling and runs down, taking the beads in its way and leaving a clear trail"),
+      ROW(VesselParams, condensation, growth, Float, 0.0f, 1e-4f, "m/s",
+          "How fast the beads' radii grow from the humid air (0: they do not)"),
+      ROW(VesselParams, condensation, age, Float, 0.0f, 600.0f, "s",
+          "How long the cold glass has been standing before the scene's time 0 (older: bigger beads, more trails)"),
+      ROW(VesselParams, condensation, margin, Float, -0.05f, 0.05f, "m",
+          "The top of the beaded band above the drink's level (the wall above the drink is warmer)"),
+      ROW(VesselParams, condensation, hand, Bool, 0.0f, 1.0f, "", "A clear print where a hand held the glass"),
+      ROW(VesselParams, condensation, hand_angle, Float, -180.0f, 180.0f, "deg",
+          "Where the hand's print faces, about the glass's axis from its front (+z), counter-clockwise seen from above"),
+      ROW(VesselParams, condensation, hand_height, Float, 0.0f, 0.6f, "m", "Height of the palm's centre above the foot"),
+  };
+  rows.insert(rows.end(), c.begin(), c.end());
+}
+
 // The screen (core/environment/screen.hpp): a moving picture behind and through the glass.
 void add_screen_rows(std::vector<ParamDesc>& rows) {
   const std::vector<ParamDesc> screen = {
@@ -118,6 +148,7 @@ std::vector<ParamDesc> make_table() {
   add_decal_rows<&VesselParams::decal_outer>(decals, "decal_outer", "the outer wall");
   add_decal_rows<&VesselParams::decal_inner>(decals, "decal_inner",
                                              "the inner wall (the cavity's side: seen through the glass)");
+  add_condensation_rows(decals);
   const auto env = std::find_if(rows.begin(), rows.end(), [](const ParamDesc& d) { return d.path.starts_with("env."); });
   rows.insert(env, decals.begin(), decals.end());
   add_light_rows<&SceneParams::light>(rows, "light", "the key light");

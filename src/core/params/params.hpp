@@ -205,6 +205,27 @@ struct DecalParams {
   float roughness = 0.3f;  // a metallic decal's: 0 a mirror, more a satin metal
 };
 
+// Condensation on a cold glass (core/condensation, docs/CONDENSATION.md): water beads of
+// varied size on the outer wall where the drink cools it, a fog of micro-droplets between
+// them, beads that grow, merge and run down leaving clear trails. Deterministic per seed.
+struct CondensationParams {
+  bool enabled = false;
+  int seed = 1;
+  int count = 4000;             // beads seeded on the cold part of the wall (fewer where they would overlap)
+  float size = 0.0011f;         // m: the beads' median base radius
+  float spread = 0.55f;         // the log-normal spread of their radii (sigma of ln r)
+  float coverage = 0.55f;       // how much of the wall between the beads the fog covers (0..1)
+  float contact_angle = 60.0f;  // deg: how domed a bead is (water on clean glass 30-70)
+  float slide_radius = 0.0024f; // m: a bead this wide runs down
+  float growth = 2.5e-6f;       // m/s: how fast the beads' radii grow (humid air grows them faster)
+  float age = 30.0f;            // s the glass has been standing before the scene's time 0
+  float margin = 0.004f;        // m: the cold band's top above the drink's level
+  bool hand = false;            // a clear print where a hand held the glass
+  float hand_angle = 150.0f;    // deg about the axis from the glass's front (+z), as decals
+  float hand_height = 0.07f;    // m: the palm's centre above the foot
+  bool operator==(const CondensationParams&) const = default;
+};
+
 // Which pass draws the picture: the full path pass, or the low-cost MatCap glass
 // (docs/MATCAP.md) for weak devices.
 enum class RenderTier { Full = 0, MatCap = 1 };
@@ -240,6 +261,7 @@ struct VesselParams {
   ClipParams clip;
   DecalParams decal_outer;  // printed on the outside of the glass
   DecalParams decal_inner;  // on the cavity's side: seen through the glass, and through the drink from behind
+  CondensationParams condensation;  // beads and fog on the outside of a cold glass
 };
 
 // The groups that belong to the scene as a whole: surroundings, light, camera, output.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/bubbles/bubbles.hpp"
+#include "core/condensation/condensation.hpp"
 #include "core/droplets/droplets.hpp"
 #include "core/environment/backdrop.hpp"
 #include "core/environment/lights.hpp"
@@ -39,6 +40,8 @@ struct VesselFrame {
   std::vector<Bubble> bubbles;  // rising in the liquid, glass frame
   glm::vec3 liquid_absorption{0};
   double mean_outer_radius = 0;
+  // Beads and fog on the outer wall (core/condensation); null when the glass is dry.
+  std::shared_ptr<const CondensationState> condensation;
 };
 
 struct FrameState {

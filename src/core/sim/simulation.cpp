@@ -36,6 +36,7 @@ Simulation::Simulation(const VesselParams& p) : params_(p), foam_(p.foam) {
   fraction_ = p.liquid.fill;  // in [0, 0.98]: the table checked it
   env_.radius = vessel_.inner_radius(vessel_.height);
   update_surface();
+  rebuild_condensation();
 }
 
 void Simulation::rebuild_glass() {
@@ -50,12 +51,22 @@ void Simulation::set_params(const VesselParams& p) {
   const bool glass_changed = !same_glass(p.glass, params_.glass);
   const bool refill = p.liquid.fill != params_.liquid.fill;
   const bool bubbles_changed = !same_bubbles(p.bubbles, params_.bubbles);
+  const bool condensation_changed = !(p.condensation == params_.condensation);
   params_ = p;
   foam_.set_params(p.foam);
   if (glass_changed) rebuild_glass();
   else if (bubbles_changed) rebuild_bubbles();
   if (refill || glass_changed) fraction_ = p.liquid.fill;
   update_surface();
+  if (refill || glass_changed || condensation_changed) rebuild_condensation();
+}
+
+void Simulation::rebuild_condensation() {
+  condensation_.reset();
+  condensation_frame_.reset();
+  if (!params_.condensation.enabled) return;
+  condensation_.emplace(params_.condensation, vessel_, table_->offset_at(0, fraction_));
+  condensation_->advance_to(time_);
 }
 
 void Simulation::set_fraction(double fraction) {
@@ -255,6 +266,7 @@ void Simulation::step(const MotionSample& raw, double drink_rate) {
   foam_.step(dt, level, vessel_.inner_radius(std::clamp(level, vessel_.base, vessel_.height)));
   // Bubbles rise against gravity: world up, seen from the glass.
   bubbles_->step(dt, surface_, glm::inverse(m.pose.orientation) * glm::dvec3(0, 1, 0));
+  if (condensation_) condensation_->advance_to(time_);
 }
 
 void Simulation::place(const Pose& pose) { motion_.pose = pose; }
@@ -289,6 +301,11 @@ VesselFrame Simulation::frame() const {
   double sum = 0;
   for (double r : vessel_.r_outer) sum += r;
   f.mean_outer_radius = sum / double(vessel_.r_outer.size());
+  if (condensation_) {
+    if (!condensation_frame_ || condensation_frame_->version != condensation_->state().version)
+      condensation_frame_ = std::make_shared<const CondensationState>(condensation_->state());
+    f.condensation = condensation_frame_;
+  }
   return f;
 }
 

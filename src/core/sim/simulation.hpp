@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/bubbles/bubbles.hpp"
+#include "core/condensation/condensation.hpp"
 #include "core/vessel/fill_table.hpp"
 #include "core/foam/foam.hpp"
 #include "core/scene/frame.hpp"
@@ -105,6 +106,11 @@ class Simulation {
   std::optional<GlassStream> pour_, spill_;
   void step_streams(double dt, double spilled_before);
   glm::dvec3 world(const glm::dvec3& local) const;
+  // Beads and fog on the outer wall (condensation.enabled): seeded when the glass, its
+  // fill or the condensation's settings change, stepped with the scene's time.
+  std::optional<Condensation> condensation_;
+  mutable std::shared_ptr<const CondensationState> condensation_frame_;  // the last frame's copy
+  void rebuild_condensation();
 };
 
 }  // namespace draught

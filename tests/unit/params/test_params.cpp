@@ -130,7 +130,7 @@ std::vector<ParamValue> out_of_range(const ParamDesc& d) {
 
 TEST(ParamTable, PathsAreUniqueAndGrouped) {
   std::set<std::string> seen;
-  const std::set<std::string> groups = {"glass", "liquid", "foam", "bubbles", "env", "light", "strips", "backlight", "screen", "camera", "clip", "decal_outer", "decal_inner", "render", "matcap"};
+  const std::set<std::string> groups = {"glass", "liquid", "foam", "bubbles", "env", "light", "strips", "backlight", "screen", "camera", "clip", "decal_outer", "decal_inner", "condensation", "render", "matcap"};
   for (const auto& d : param_table()) {
     EXPECT_TRUE(seen.insert(d.path).second) << "duplicate path " << d.path;
     const auto dot = d.path.find('.');
@@ -239,7 +239,7 @@ TEST(ParamTable, EveryDefaultIsWithinItsRange) {
 }
 
 TEST(ParamTable, ScopeComesFromTheStructThatHoldsTheRow) {
-  const std::set<std::string> vessel_groups = {"glass", "liquid", "foam", "bubbles", "clip", "decal_outer", "decal_inner"};
+  const std::set<std::string> vessel_groups = {"glass", "liquid", "foam", "bubbles", "clip", "decal_outer", "decal_inner", "condensation"};
   int vessel = 0, scene = 0;
   for (const auto& d : param_table()) {
     const bool is_vessel = vessel_groups.count(d.path.substr(0, d.path.find('.'))) > 0;
