@@ -122,6 +122,9 @@ TEST(MousePointer, OnlyPlainMotionOverThePictureOfDropletsDrivesIt) {
   MouseMotion no_window = m;
   no_window.window_width = 0;
   EXPECT_FALSE(mouse_pointer(f, no_window).has_value());
+  MouseMotion nowhere = m;
+  nowhere.x = std::nan("");
+  EXPECT_FALSE(mouse_pointer(f, nowhere).has_value());
   // A lager alone has no trail to drive.
   const SceneSimulation lager(Editor("lager", "").scene());
   EXPECT_FALSE(mouse_pointer(framed(lager), m).has_value());
