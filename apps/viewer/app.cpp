@@ -365,7 +365,8 @@ void Viewer::mouse(const SDL_Event& e) {
 }
 
 // A droplets trail follows the mouse moved over the picture (pointer.hpp): not over the
-// panel, not while a drag tilts a glass, not while a timeline plays. The frame's last motion
+// panel, not while a drag tilts a glass, not while a timeline plays or a screenshot is
+// rendered. The frame's last motion
 // is the one that counts (advance() maps it once per frame).
 void Viewer::follow_pointer(double x, double y, bool over_ui) {
   MouseMotion m;
@@ -374,7 +375,7 @@ void Viewer::follow_pointer(double x, double y, bool over_ui) {
   window_.window_size(m.window_width, m.window_height);
   m.over_ui = over_ui;
   m.dragging_glass = (held_[0] || held_[1]) && selected_sim();
-  m.timeline = timeline_.has_value();
+  m.scripted = timeline_.has_value() || !opt_.screenshot.empty();
   pointer_motion_ = m;
 }
 

@@ -18,14 +18,16 @@ struct MouseMotion {
   int window_width = 0, window_height = 0;
   bool over_ui = false;       // ImGui wants the mouse (over the panel, a widget held)
   bool dragging_glass = false;  // a button is held and its drag tilts or swirls a glass
-  bool timeline = false;      // a timeline plays: its pointer actions move the trail
+  // A timeline plays (its pointer actions move the trail), or --screenshot renders (its
+  // picture must not depend on where the system's pointer happens to be).
+  bool scripted = false;
 };
 
 // The pointer (plane coordinates, m) the trail of `framed`'s droplets object follows for
 // this motion, `framed` being the frame as drawn (its view the part of the window the scene
 // is framed in). Empty, the trail following the pointer it had, when the scene has no
-// droplets, the mouse is over the panel or the overlay, a drag is tilting a glass, a
-// timeline plays, or the ray misses the plane (above the horizon of a plane seen edge-on).
+// droplets, the mouse is over the panel or the overlay, a drag is tilting a glass, the
+// frames are scripted, or the ray does not meet the plane ahead of the eye.
 std::optional<glm::dvec2> mouse_pointer(const FrameState& framed, const MouseMotion&);
 
 }  // namespace draught::viewer

@@ -1,7 +1,8 @@
 // The mouse as the droplets' pointer: the mouse at the picture of a point of the trail's
 // plane gives that point back (the lens shifted beside the panel, the plane turned), and
-// the trail then gathers there; the panel, a glass being dragged, a timeline and a scene
-// without droplets leave the pointer alone.
+// the trail then gathers there; the panel, a glass being dragged, a timeline or a
+// screenshot, a position that is no number and a scene without droplets leave the pointer
+// alone.
 #include "pointer.hpp"
 
 #include "editor.hpp"
@@ -116,9 +117,9 @@ TEST(MousePointer, OnlyPlainMotionOverThePictureOfDropletsDrivesIt) {
   MouseMotion drag = m;
   drag.dragging_glass = true;
   EXPECT_FALSE(mouse_pointer(f, drag).has_value());
-  MouseMotion timeline = m;
-  timeline.timeline = true;
-  EXPECT_FALSE(mouse_pointer(f, timeline).has_value());
+  MouseMotion scripted = m;
+  scripted.scripted = true;
+  EXPECT_FALSE(mouse_pointer(f, scripted).has_value());
   MouseMotion no_window = m;
   no_window.window_width = 0;
   EXPECT_FALSE(mouse_pointer(f, no_window).has_value());
