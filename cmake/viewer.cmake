@@ -22,8 +22,9 @@ set(DRAUGHT_IMGUI_BACKENDS
 # Third-party code: not held to our warning flags.
 set_source_files_properties(${DRAUGHT_IMGUI_BACKENDS} PROPERTIES COMPILE_OPTIONS "-w")
 
-# The editor (parameters, undo history, presets) has no GL or ImGui, so tests link it alone.
-add_library(draught_viewer_editor STATIC apps/viewer/editor.cpp apps/viewer/layout.cpp)
+# The editor (parameters, undo history, presets), the layout and the droplets pointer have no
+# GL or ImGui, so tests link them alone.
+add_library(draught_viewer_editor STATIC apps/viewer/editor.cpp apps/viewer/layout.cpp apps/viewer/pointer.cpp)
 target_include_directories(draught_viewer_editor PUBLIC apps/viewer)
 target_link_libraries(draught_viewer_editor PUBLIC draught_core)
 
@@ -47,9 +48,10 @@ if(DRAUGHT_TESTS)
   find_package(GTest REQUIRED)
   include(GoogleTest)
 
-  # The editor without a window: undo, presets, load and save errors, selection.
+  # The editor without a window: undo, presets, load and save errors, selection, layout, the
+  # mouse as the droplets pointer.
   add_executable(viewer_editor_tests tests/viewer/test_editor.cpp tests/viewer/test_selection.cpp
-    tests/viewer/test_layout.cpp)
+    tests/viewer/test_layout.cpp tests/viewer/test_pointer.cpp)
   target_link_libraries(viewer_editor_tests PRIVATE draught_viewer_editor GTest::gtest_main)
   gtest_discover_tests(viewer_editor_tests DISCOVERY_TIMEOUT 30)
 

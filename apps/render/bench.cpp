@@ -284,6 +284,34 @@ void bench_clouds(gpu::Renderer& renderer, const std::vector<int>& sizes, int fr
   }
 }
 
+// The droplets (issue 13) at the issue's size, 400 x 300: the shipped preset (the trail in
+// front of a pint of lager) and droplets-seed (the trail alone: the seed demo's scene, 16
+// blended spheres with noise), each gathered at rest and stretched across the picture
+// (the droplets-trail timeline at 0.7 s, the pointer sweeping), and the same view without
+// the droplets (what the rest of the picture costs).
+void bench_droplets(gpu::Renderer& renderer, int frames) {
+  constexpr int kWidth = 400, kHeight = 300;
+  const Timeline trail = load_timeline("droplets-trail");
+  renderer.set_held_objects(true);
+  for (const char* preset : {"droplets", "droplets-seed"}) {
+    SceneRequest request;
+    request.preset = preset;
+    const Scene scene = resolve_scene_objects(request);
+    for (const char* state : {"gathered", "stretched", "without"}) {
+      const bool stretched = state == std::string("stretched");
+      FrameState f = stretched ? timeline_frame(trail, scene, 0.7) : make_frame(scene);
+      f.params.render.supersample = 1;
+      if (state == std::string("without")) f.droplets.clear();
+      std::vector<double> ms;
+      const double med = median_ms(renderer, f, kWidth, kHeight, frames, &ms);
+      const std::string name = std::string(preset) + " " + state;
+      std::printf("%-26s %-9s %10.2f %10.2f %10.2f %8.1f\n", name.c_str(), "400x300", med,
+                  *std::min_element(ms.begin(), ms.end()), *std::max_element(ms.begin(), ms.end()), 1000.0 / med);
+      std::fflush(stdout);
+    }
+  }
+}
+
 }  // namespace
 
 int bench(int frames, const std::vector<int>& sizes, const std::vector<std::string>& only, bool verbose) {
@@ -373,6 +401,7 @@ int bench(int frames, const std::vector<int>& sizes, const std::vector<std::stri
   auto wanted = [&](const char* name) { return only.empty() || std::find(only.begin(), only.end(), name) != only.end(); };
   if (wanted("pint-lager-tiers")) bench_tiers(renderer, sizes, frames);
   if (wanted("clouds")) bench_clouds(renderer, sizes, frames);
+  if (wanted("droplets")) bench_droplets(renderer, frames);
   if (wanted("screen-upload-720p")) bench_screen_upload(renderer, frames);
   if (wanted("screen-decode-720p")) bench_screen_decode(frames);
   return 0;

@@ -4,6 +4,7 @@
 #include "events.hpp"
 #include "layout.hpp"
 #include "params_panel.hpp"
+#include "pointer.hpp"
 #include "preset_panel.hpp"
 #include "selection.hpp"
 #include "window.hpp"
@@ -65,6 +66,7 @@ constexpr double kLayoutGap = 8;
 constexpr const char* kKeyHelp =
     "F1 panel  Esc quit\n"
     "drag tilt  right drag swirl  wheel zoom\n"
+    "move: droplets follow the mouse\n"
     "click/Tab select  Ctrl+Z undo\n"
     "R reset  P pour  S sip  C cut\n"
     "D debug view  Q quality";
@@ -172,6 +174,7 @@ class Viewer {
   void zoom(double clicks);
   void select(int object);
   void pick(double x, double y);
+  void follow_pointer(double x, double y, bool over_ui);
   Simulation* selected_sim() { return sim_->vessel(editor_.selected()); }
   void restart();
   void advance();
@@ -199,6 +202,7 @@ class Viewer {
   bool held_[2] = {false, false};  // mouse buttons whose press went to the rig
   FrameEvents events_;              // SDL's events, a frame at a time
   ClickTracker click_;              // the left button: a click selects, a drag tilts
+  std::optional<MouseMotion> pointer_motion_;  // the frame's last mouse motion, for the droplets
   int view_ = 0;                    // index into kViews
   int tier_ = 2;                    // quality: index into kTiers (high)
   double now_ = 0;                  // the app's clock, seconds: events, input samples, simulation
@@ -328,6 +332,7 @@ void Viewer::mouse(const SDL_Event& e) {
   if (e.type == SDL_MOUSEMOTION) click_.move(e.motion.x, e.motion.y);
   if (e.type == SDL_MOUSEBUTTONUP && e.button.button == SDL_BUTTON_LEFT && click_.release())
     pick(e.button.x, e.button.y);
+  if (e.type == SDL_MOUSEMOTION) follow_pointer(e.motion.x, e.motion.y, ui);
   if (timeline_) return;  // the timeline moves the glass
   int ww = 0, wh = 0;
   window_.window_size(ww, wh);
@@ -357,6 +362,21 @@ void Viewer::mouse(const SDL_Event& e) {
       if (!ui) zoom(e.wheel.direction == SDL_MOUSEWHEEL_FLIPPED ? -e.wheel.y : e.wheel.y);
       break;
   }
+}
+
+// A droplets trail follows the mouse moved over the picture (pointer.hpp): not over the
+// panel, not while a drag tilts a glass, not while a timeline plays or a screenshot is
+// rendered. The frame's last motion
+// is the one that counts (advance() maps it once per frame).
+void Viewer::follow_pointer(double x, double y, bool over_ui) {
+  MouseMotion m;
+  m.x = x;
+  m.y = y;
+  window_.window_size(m.window_width, m.window_height);
+  m.over_ui = over_ui;
+  m.dragging_glass = (held_[0] || held_[1]) && selected_sim();
+  m.scripted = timeline_.has_value() || !opt_.screenshot.empty();
+  pointer_motion_ = m;
 }
 
 // The object under window point (x, y) becomes the selected one; the floor or the sky
@@ -429,6 +449,10 @@ void Viewer::advance() {
   applied_revision_ = editor_.revision();
   // Other objects (a preset switch, an undo): start afresh, with settled bubbles.
   if (changed && editor_.scene().objects.size() != sim_->scene().objects.size()) restart();
+  if (pointer_motion_) {
+    if (const std::optional<glm::dvec2> p = mouse_pointer(framed(), *pointer_motion_)) sim_->set_pointer(*p);
+    pointer_motion_.reset();
+  }
   if (timeline_) {
     double t = now_ - timeline_start_;
     if (t > timeline_->duration) {  // loop

@@ -28,7 +28,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -98,6 +100,13 @@ struct Quality {
   }
 };
 
+// Where the mouse or a finger put the droplets' pointer since the last frame: CSS pixels of a
+// width x height canvas (draught_pointer).
+struct PendingPointer {
+  double x = 0, y = 0;
+  int width = 1, height = 1;
+};
+
 struct App {
   EMSCRIPTEN_WEBGL_CONTEXT_HANDLE gl = 0;
   std::string canvas;
@@ -122,6 +131,7 @@ struct App {
   // page.js uploaded from its <video> element or the camera, and how many it uploaded.
   int screen_w = 16, screen_h = 9;
   long screen_frames = 0;
+  std::optional<PendingPointer> pointer;  // mapped by the next frame
 };
 
 App* app = nullptr;
@@ -156,6 +166,10 @@ void use_scene(Scene s, Refill refill) {
     if (refill == Refill::none || (refill == Refill::selected && i != s.selected)) continue;
     if (Simulation* v = app->sim->vessel(i)) v->set_fraction(v->params().liquid.fill);
   }
+}
+
+bool has_droplets(const Scene& s) {
+  return std::any_of(s.objects.begin(), s.objects.end(), [](const SceneObject& o) { return as_droplets(o) != nullptr; });
 }
 
 void select_object(int object) {
@@ -224,6 +238,11 @@ void frame() {
     if (app->quality.events_cap)
       f.params.render.max_events = std::min(f.params.render.max_events, app->quality.events_cap);
     if (app->quality.matcap) f.params.render.tier = int(RenderTier::MatCap);
+    // The pointer through the camera of the picture it was moved over (this frame's), for
+    // the steps of the next frames.
+    if (const std::optional<PendingPointer> p = std::exchange(app->pointer, std::nullopt))
+      if (const std::optional<glm::dvec2> q = droplet_pointer_at(f, p->x, p->y, p->width, p->height))
+        app->sim->set_pointer(*q);
     emscripten_webgl_make_context_current(app->gl);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     app->renderer->draw(f, app->width, app->height);
@@ -529,11 +548,13 @@ EMSCRIPTEN_KEEPALIVE const char* draught_load_decal(const char* name, const char
   }
 }
 
-// The objects: {"selected": i, "objects": [{"name", "kind"}]}.
+// The objects: {"selected": i, "objects": [{"name", "kind"}]}; kind "vessel", "droplets" or
+// "other".
 EMSCRIPTEN_KEEPALIVE const char* draught_objects() {
   json list = json::array();
   if (app)
-    for (const SceneObject& o : app->scene.objects) list.push_back({{"name", o.name}, {"kind", as_vessel(o) ? "vessel" : "other"}});
+    for (const SceneObject& o : app->scene.objects)
+      list.push_back({{"name", o.name}, {"kind", as_vessel(o) ? "vessel" : as_droplets(o) ? "droplets" : "other"}});
   return answer_json(json{{"selected", app ? app->scene.selected : 0}, {"objects", list}});
 }
 
@@ -556,6 +577,44 @@ EMSCRIPTEN_KEEPALIVE int draught_select_at(double x, double y, double vw, double
   const int object = pick_at(x, y, vw, vh);
   if (object >= 0) select_object(object);
   return object;
+}
+
+// The droplets' pointer at (x, y) CSS pixels of a vw x vh canvas (the mouse moving over it, a
+// finger on it). The next frame maps it through the camera it draws with (droplet_pointer_at
+// in core/scene/frame.hpp, the desktop viewer's mapping too: where the ray there meets the
+// trail's plane), and the trail follows it from then on; the last call before a frame
+// counts. `dragging`: a mouse button is held, and its drag tilts the selected glass, so the
+// pointer stays where it was (where the selected object is no glass the drag moves it).
+// 1: taken; 0: ignored (no droplets in the scene, a glass being dragged, coordinates not
+// finite, a canvas of no size). A ray that misses the plane leaves the pointer as it was.
+EMSCRIPTEN_KEEPALIVE int draught_pointer(double x, double y, double vw, double vh, int dragging) {
+  if (!app || !app->sim || !has_droplets(app->scene)) return 0;
+  if (dragging && app->sim->vessel(app->scene.selected)) return 0;
+  if (!std::isfinite(x) || !std::isfinite(y) || !(vw >= 1 && vh >= 1 && vw <= 1e6 && vh <= 1e6)) return 0;
+  app->pointer = PendingPointer{x, y, int(std::lround(vw)), int(std::lround(vh))};
+  return 1;
+}
+
+// The droplets trail as it stands (tests, the console): {"droplets": false} without one, else
+// {"droplets": true, "pointer": [x, y] (the pointer its last step followed), "spheres":
+// [[x, y, r], ...] (centres in the trail's plane from the head to the tail, m), "position":
+// [x, y, z], "yaw": degrees (the plane)}.
+EMSCRIPTEN_KEEPALIVE const char* draught_droplets() {
+  if (!app || !app->sim) return answer_json(json{{"droplets", false}});
+  for (int i = 0; i < int(app->scene.objects.size()); ++i) {
+    const DropletTrail* t = app->sim->trail(i);
+    if (!t) continue;
+    json spheres = json::array();
+    for (size_t k = 0; k < t->positions().size(); ++k)
+      spheres.push_back({t->positions()[k].x, t->positions()[k].y, t->radius(int(k))});
+    const Placement& at = app->scene.objects[size_t(i)].placement;
+    return answer_json(json{{"droplets", true},
+                            {"pointer", {t->pointer().x, t->pointer().y}},
+                            {"spheres", spheres},
+                            {"position", {at.position.x, at.position.y, at.position.z}},
+                            {"yaw", at.yaw}});
+  }
+  return answer_json(json{{"droplets", false}});
 }
 
 // Tests and the console: the selected glass repeated `count` times side by side, a scene of

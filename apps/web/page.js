@@ -145,6 +145,8 @@
       setInput: fn('draught_set_input', 'string', ['string']),
       mouse: fn('draught_mouse', null, ['number', 'number', 'number', 'number', 'number', 'number', 'number']),
       touch: fn('draught_touch', null, ['number', 'number', 'number', 'number', 'number', 'number']),
+      pointer: fn('draught_pointer', 'number', ['number', 'number', 'number', 'number', 'number']),
+      droplets: fn('draught_droplets', 'json'),
       motion: fn('draught_device_motion', null, ['number', 'number', 'number', 'number', 'number', 'number', 'number']),
       screen: fn('draught_screen_orientation', null, ['number']),
       screenBegin: fn('draught_screen_begin', 'number', ['number', 'number']),
@@ -326,6 +328,7 @@
     const r = canvas.getBoundingClientRect();
     return api.pick(x, y, r.width, r.height);
   };
+  page.droplets = () => JSON.parse(api.droplets());  // for tests: the droplets trail, or {droplets: false}
   page.testRow = (n) => {  // for tests and the console: the selected glass n times side by side
     const err = api.testRow(n);
     if (!err) {
@@ -850,8 +853,13 @@
       if (e.button === 0) tapStart(e);
       api.mouse(0, e.button, ...local(e), e.shiftKey ? 1 : 0);
     });
+    // In a scene with droplets, the mouse moving over the picture moves their pointer; a drag
+    // tilts the selected glass as elsewhere (and moves the pointer where that is no glass).
+    const droplets = () => objects.some((o) => o.kind === 'droplets');
     canvas.addEventListener('pointermove', (e) => {
-      if (e.pointerType === 'touch' || !buttons) return;
+      if (e.pointerType === 'touch') return;
+      if (droplets()) api.pointer(...local(e), buttons ? 1 : 0);
+      if (!buttons) return;
       tapMove(e, slop.mouse);
       api.mouse(1, 0, ...local(e), 0);
     });
@@ -870,8 +878,10 @@
     });
     canvas.addEventListener('contextmenu', (e) => e.preventDefault());
 
+    // In a scene with droplets a finger moves their pointer (the first finger down) instead of
+    // the glass (the mouse and the motion sensors still move it there); a tap still selects.
     const touch = (kind) => (e) => {
-      e.preventDefault();
+      e.preventDefault();  // over the canvas only: no scrolling or zooming the page under a finger
       if (kind === 0) useGesture('touch');
       fingers = e.touches.length;
       if (kind === 3) {
@@ -879,7 +889,10 @@
         api.touch(3, 0, 0, 0, 1, 1);
         return;
       }
-      for (const t of e.changedTouches) api.touch(kind, t.identifier, ...local(t));
+      const pointing = droplets();
+      if (pointing && kind !== 2) api.pointer(...local(e.touches[0]), 0);
+      // (A finger lifted always reaches the driver: one put down before the scene changed.)
+      if (!pointing || kind === 2) for (const t of e.changedTouches) api.touch(kind, t.identifier, ...local(t));
       // A tap is one finger, down and up in place; a second finger makes it a gesture.
       if (kind === 0) e.touches.length === 1 ? tapStart(e.changedTouches[0]) : (tap = null);
       else if (kind === 1) for (const t of e.changedTouches) tapMove(t, slop.touch);

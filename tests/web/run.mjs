@@ -405,6 +405,113 @@ test('touch: one finger tilts, two fingers rotate and move the glass', async () 
   }
 });
 
+// ---- droplets following the pointer ----
+
+const droplets = (page) => page.evaluate(() => window.draught.droplets());
+// Waits until the trail's pointer has moved more than a centimetre away from `from` (when
+// given), its head is within `near` metres of it and the whole trail within `gathered` of
+// the head (the springs have settled), and returns the trail.
+async function settled(page, from = null, near = 0.002, gathered = 0.004) {
+  await page.waitForFunction(({ from, near, gathered }) => {
+    const d = window.draught.droplets();
+    const dist = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1]);
+    return d.droplets && (!from || dist(d.pointer, from) > 0.01) && dist(d.spheres[0], d.pointer) < near &&
+      d.spheres.every((s) => dist(s, d.spheres[0]) < gathered);
+  }, { from, near, gathered }, { timeout: 30000, polling: 50 });
+  return droplets(page);
+}
+// A CSS pixel of the canvas (fractions of its size from the top-left) in page coordinates, and
+// the canvas pixel under it (the test pages draw one pixel per CSS pixel).
+async function canvasPoint(page, fx, fy) {
+  const r = await page.evaluate(() => {
+    const b = document.getElementById('canvas').getBoundingClientRect();
+    return { left: b.left, top: b.top, w: b.width, h: b.height };
+  });
+  const px = Math.floor(fx * r.w), py = Math.floor(fy * r.h);
+  return { x: r.left + px + 0.5, y: r.top + py + 0.5, px, py };
+}
+const around = (p, r = 10) => ({ x0: p.px - r, y0: p.py - r, x1: p.px + r, y1: p.py + r });
+
+test('droplets follow the mouse over the picture; a drag tilts the glass, not the pointer', async () => {
+  const page = await openPage(env);
+  try {
+    assert.deepEqual(await droplets(page), { droplets: false });
+    await page.selectOption('#drink', 'droplets');
+    await page.waitForFunction(() => window.draught.droplets().droplets === true);
+    assert.equal(await page.evaluate(() => window.draught.objects().objects.map((o) => o.kind).join()), 'vessel,droplets');
+    const start = await settled(page);  // gathered at the plane's origin
+    assert.equal(start.spheres.length, 16);
+    const { noise: n } = await noise(page);
+
+    // Left of the picture's middle and a little below it: the trail's plane faces the camera
+    // (yaw 0), so the pointer lies left of (and below) the droplets' origin, which is near the
+    // middle of the picture.
+    const left = await canvasPoint(page, 0.2, 0.62);
+    await page.mouse.move(left.x, left.y);
+    const a = await settled(page, start.pointer);
+    assert.ok(a.pointer[0] < -0.04 && a.pointer[1] < 0, `pointer ${a.pointer} for the mouse left of and below the middle`);
+    const atLeft = await snapshot(page);
+    await page.screenshot({ path: path.join(artifacts, 'droplets-left.png') });
+
+    // To the right and a little higher: the trail follows, and the picture with it.
+    const right = await canvasPoint(page, 0.78, 0.42);
+    await page.mouse.move(right.x, right.y);
+    const b = await settled(page, a.pointer);
+    assert.ok(b.pointer[0] > 0.04 && b.pointer[0] - a.pointer[0] > 0.1, `pointer ${b.pointer} after ${a.pointer}`);
+    assert.ok(b.pointer[1] > a.pointer[1] + 0.02, `higher on the screen, higher in the plane: ${b.pointer[1]} vs ${a.pointer[1]}`);
+    const atRight = await snapshot(page);
+    await page.screenshot({ path: path.join(artifacts, 'droplets-right.png') });
+    // Where the droplets left and where they came the picture changed; a corner did not.
+    const dLeft = blockDifference(atLeft, atRight, around(left)), dRight = blockDifference(atLeft, atRight, around(right));
+    const dCorner = blockDifference(atLeft, atRight, { x0: 0, y0: 0, x1: 24, y1: 24 });
+    note(`pointer ${a.pointer.map((v) => v.toFixed(3))} -> ${b.pointer.map((v) => v.toFixed(3))} m; pictures differ ${dLeft.toFixed(1)} at the left, ${dRight.toFixed(1)} at the right, ${dCorner.toFixed(2)} in a corner (noise ${n.toFixed(2)})`);
+    assert.ok(dLeft > 8 && dLeft > changed(dLeft, n), `the droplets left the left: ${dLeft.toFixed(2)}`);
+    assert.ok(dRight > 8 && dRight > changed(dRight, n), `the droplets came to the right: ${dRight.toFixed(2)}`);
+    assert.ok(dCorner < Math.max(2, 4 * n), `a corner stays: ${dCorner.toFixed(2)}`);
+
+    // A drag tilts the selected glass (the lager) and leaves the pointer where it was.
+    await page.mouse.down();
+    for (let i = 1; i <= 5; ++i) await page.mouse.move(right.x - 8 * i, right.y);
+    await waitFrames(page, 4);
+    const dragged = await droplets(page);
+    assert.deepEqual(dragged.pointer, b.pointer, 'the pointer stays during a drag');
+    assert.ok((await status(page)).tilt > 2, `the glass tilts: ${(await status(page)).tilt} degrees`);
+    await page.mouse.up();
+  } finally {
+    await page.context().close();
+  }
+});
+
+test('droplets follow a finger on the picture; the glass stays upright', async () => {
+  const page = await openPage(env, { context: { hasTouch: true } });
+  try {
+    await page.selectOption('#drink', 'droplets');
+    await page.waitForFunction(() => window.draught.droplets().droplets === true);
+    const before = await settled(page);
+    const cdp = await page.context().newCDPSession(page);
+    const touch = (type, points) => cdp.send('Input.dispatchTouchEvent', { type, touchPoints: points.map(([x, y], id) => ({ x, y, id })) });
+    const from = await canvasPoint(page, 0.25, 0.5), to = await canvasPoint(page, 0.75, 0.5);
+    await touch('touchStart', [[from.x, from.y]]);
+    const a = await settled(page, before.pointer);
+    assert.ok(a.pointer[0] < before.pointer[0] - 0.04, `the finger at the left: pointer ${a.pointer}`);
+    for (let i = 1; i <= 6; ++i) await touch('touchMove', [[from.x + ((to.x - from.x) * i) / 6, from.y]]);
+    const b = await settled(page, a.pointer);
+    note(`pointer ${a.pointer.map((v) => v.toFixed(3))} -> ${b.pointer.map((v) => v.toFixed(3))} m`);
+    assert.ok(b.pointer[0] > a.pointer[0] + 0.1, `the finger moved right: pointer ${b.pointer} after ${a.pointer}`);
+    assert.ok(Math.abs(b.pointer[1] - a.pointer[1]) < 0.005, `along a row: ${b.pointer[1]} vs ${a.pointer[1]}`);
+    const st = await status(page);
+    assert.equal(st.input, 'touch');
+    assert.ok(st.tilt < 0.5, `the glass stays upright: ${st.tilt} degrees`);
+    await touch('touchEnd', []);
+    // Without droplets a finger tilts the glass again and there is no pointer to take.
+    await page.selectOption('#drink', 'lager');
+    await page.waitForFunction(() => window.draught.droplets().droplets === false);
+    assert.equal(await page.evaluate(() => window.draught.api.pointer(10, 10, 160, 120, 0)), 0);
+  } finally {
+    await page.context().close();
+  }
+});
+
 // ---- scenes of several glasses ----
 
 // Where each object lies on the canvas, as the module picks (the reference intersector):

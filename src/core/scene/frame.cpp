@@ -1,6 +1,7 @@
 #include "core/scene/frame.hpp"
 
 #include "core/scene/camera.hpp"
+#include "core/droplets/trail.hpp"
 #include "core/sim/scene_simulation.hpp"
 
 #include <algorithm>
@@ -232,6 +233,15 @@ SceneGeometry scene_geometry(const FrameState& f, bool with_decals) {
 int pick_object(const FrameState& f, double px, double py, int width, int height) {
   const CameraBasis cam = camera_basis(f, width, height);
   return first_hit(scene_geometry(f), camera_ray(cam, px, py, width, height)).object;
+}
+
+std::optional<glm::dvec2> droplet_pointer_at(const FrameState& f, double px, double py, int width, int height) {
+  if (f.droplets.empty() || width < 1 || height < 1 || !std::isfinite(px) || !std::isfinite(py)) return std::nullopt;
+  const Ray ray = camera_ray(camera_basis(f, width, height), px, py, width, height);
+  const DropletsFrame& d = f.droplets.front();  // at most one per scene
+  glm::dvec2 q;
+  if (!droplet_plane_hit(d.position, d.yaw, ray.o, ray.d, q)) return std::nullopt;
+  return q;
 }
 
 DepthRange depth_range(const FrameState& f, int width, int height) {

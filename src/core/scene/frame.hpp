@@ -20,6 +20,7 @@
 #include "core/vessel/vessel.hpp"
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace draught {
@@ -105,5 +106,13 @@ DepthRange depth_range(const FrameState&, int width, int height);
 // The object seen at pixel (px, py) of a width x height picture (the first surface along
 // the camera ray, reference intersector), or -1 for the floor and the sky.
 int pick_object(const FrameState&, double px, double py, int width, int height);
+
+// Where the camera ray through pixel (px, py) of a width x height picture of the frame
+// meets the plane of its droplets object's trail, in that plane's coordinates (metres
+// right and up from the object's position; core/droplets/trail.hpp droplet_plane_hit):
+// the pointer SceneSimulation::set_pointer takes. The one mapping of the viewer's mouse
+// and the web page's mouse and touch. Empty when the frame has no droplets, the pixel or
+// the size is not finite and positive, or the ray does not meet the plane ahead of the eye.
+std::optional<glm::dvec2> droplet_pointer_at(const FrameState&, double px, double py, int width, int height);
 
 }  // namespace draught
