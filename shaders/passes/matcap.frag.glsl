@@ -123,7 +123,7 @@ void drink_along(Vessel v, vec3 p, vec3 d, vec3 pw, inout vec3 radiance, inout v
 // A decal's colour at wall point pl (local) of surface m, lit cheaply: enamel by the rig
 // and the sky, frost by the surroundings' blur, metal mirroring the MatCap. a: its cover.
 vec3 decal_seen(Vessel v, int m, vec3 pl, vec3 pw, vec3 n, vec2 uv, float footprint, out float a) {
-  DecalSample s = decal_at(v, m, pl, footprint, 0.0);  // (no condensation in this tier)
+  DecalSample s = decal_at(v, m, pl, footprint);
   a = s.cover;
   if (a <= 0.0) return vec3(0.0);
   vec3 lit = (sky_irradiance(n) + rig_irradiance_far(pw, n, frame.light_count)) / PI;

@@ -48,6 +48,13 @@ struct Path {
 
 float max3(vec3 v) { return max(v.r, max(v.g, v.b)); }
 
+// A path through a condensation bead is bent every way by the lens: it is followed for
+// BEAD_EVENTS more interfaces, then looks out from where it is (what it would see is a
+// blur of the drink; following it to the end made a cold pint cost twice the dry one on
+// llvmpipe, where a SIMD group runs as long as its longest path).
+const int BEAD_EVENTS = 4;
+int g_bead_events = 1 << 20;
+
 // ---- stage: the surroundings ----
 
 // A ray that looks out at the surroundings past every object, and what reaches the eye
@@ -147,23 +154,29 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
   path.thr *= medium_transmittance(v, g, path.medium, h.t);
   vec3 pl = to_local_point(v, p);
   bool below = below_liquid(v, pl);
-  float fog = 0.0;
 #if CONDENSATION
   // Condensation on the outer wall (lib/vessel/condensation.glsl): a bead is a water lens
-  // the path crosses instead of the bare wall (below); the fog between the beads frosts
-  // the wall as an etched decal does.
+  // the path crosses instead of the bare wall (below); the fog between the beads veils
+  // it. (In a loop that a SIMD group leaves at once when none of its pixels meets an
+  // outer wall at this event: llvmpipe runs straight-line code for every pixel.)
   BeadSample bead = BeadSample(false, vec3(0.0), 1.0);
-  if (h.m == M_GLASS_OUTER) {
+  for (int k = 0; k < 1; ++k) {
+    if (h.m != M_GLASS_OUTER) break;
     vec3 nl = to_local_dir(v, h.n);
-    bead = condensation_bead(v, pl, dot(nl.xz, pl.xz) < 0.0 ? -nl : nl);
-    fog = condensation_fog(v, pl) * bead.clear;
+    nl = dot(nl.xz, pl.xz) < 0.0 ? -nl : nl;
+    bead = condensation_bead(v, pl, nl);
+    float fog = condensation_fog(v, pl) * bead.clear;
+    if (fog <= 0.0) break;
+    vec4 veil = fog_veil(v, to_world_dir(v, nl), fog);
+    path.radiance += path.thr * veil.rgb;
+    path.thr *= veil.a;
   }
 #endif
 #if DECALS
   // A decal on the wall (lib/vessel/decal.glsl): from inside the glass or the drink its
   // ink, frost or metal meets the path first (no total internal reflection off it); from
   // the air it lies under the surface's gloss (after the reflection, below).
-  DecalEffect decal = decal_effect(v, h, path.medium, p, pl, path.d, below, fog);
+  DecalEffect decal = decal_effect(v, h, path.medium, p, pl, path.d, below);
   vec3 decal_look = vec3(0.0);  // what the decal's own look-up of the surroundings weighs
   if (path.medium != MEDIUM_AIR) {
     path.radiance += path.thr * decal.light;
@@ -174,7 +187,8 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
   Crossing c = crossing_at(path, h, v, g, below);
 #if CONDENSATION
   BeadCrossing bx;
-  if (bead.found) {
+  for (int k = 0; k < 1; ++k) {
+    if (!bead.found) break;
     bool from_air = path.medium == MEDIUM_AIR;
     bx = bead_crossing(path.d, to_world_dir(v, bead.n), c.n, from_air ? c.n2 : c.n1, from_air);
     c.n = bx.n;
@@ -223,7 +237,9 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
 #endif
   go_on(path, h, c, p);
 #if CONDENSATION
-  if (bead.found && c.F < 1.0) {  // through the bead: its two faces bend the path (bead_crossing)
+  for (int k = 0; k < 1; ++k) {  // through the bead: its two faces bend the path (bead_crossing)
+    if (!bead.found || c.F >= 1.0) break;
+    g_bead_events = min(g_bead_events, BEAD_EVENTS);
     path.d = bx.onward;
     path.medium = bx.leaves ? MEDIUM_AIR : MEDIUM_GLASS;
     path.obj = bx.leaves ? -1 : h.obj;
@@ -377,7 +393,7 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
       Vessel v;
       Hit h = no_hit();
       // Out of events (or of iterations) the path looks out from where it is.
-      bool in_events = events < max_events && steps < max_steps;
+      bool in_events = events < max_events && steps < max_steps && g_bead_events > 0;
       if (in_events && !search_step(s, path.o, path.d, path.medium, path.obj, false, v)) continue;
       if (in_events) h = s.best;
 #if FOAM_HEAD
@@ -417,6 +433,7 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
       foam_done = lace_done = false;
       if (leaves || max3(path.thr) < 1e-3) break;
       ++events;
+      --g_bead_events;
       s = start_search(2e-6);
       tmin = 2e-6;
     }

@@ -142,13 +142,12 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   if (matcap) matcap_->update(f);  // a bake or a read only when its inputs change
   textures_->update(f);  // only rows that changed; the floor's light when its inputs did
   const bool decals = decals_->update(f);  // the images when they change, arc rows when a glass does
-  // Beads and fog: a band when its glass's condensation changed. Its fog is drawn as a
-  // frost decal is, so it brings the decals' code (their textures bound, if empty).
+  // Beads and fog: a band when its glass's condensation changed.
   const bool condensation = condensation_->update(f) && !matcap;
   screen_->update(f.screen);  // only when another frame comes, into the texture not drawn from
   screen_->bind();
   textures_->bind();  // (after the updates, which bind what they upload to the active unit)
-  if (decals || condensation) decals_->bind();
+  if (decals) decals_->bind();
   if (condensation) condensation_->bind();
   if (matcap) matcap_->bind();
   // The point clouds: trees kept, refit or rebuilt as their points change (core), the
@@ -188,7 +187,7 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
                       (f.screen.mode == ScreenMode::Background ? kScreenBackground : 0) |
                       (spheres ? kSphereLights : 0) | (painted ? kPaintedSky : 0) |
                       (!f.droplets.empty() && !f.droplets.front().field.spheres.empty() ? kDroplets : 0) |
-                      (clouds ? kClouds : 0) | (condensation ? kCondensation | kDecals : 0);
+                      (clouds ? kClouds : 0) | (condensation ? kCondensation : 0);
   // The MatCap pass marches nothing: waves (its surface is the plane) and heads (a layer)
   // need no variant of it; it draws no droplets and no point clouds.
   if (matcap) variant = (variant & ~(kWaves | kFoam | kDroplets | kClouds)) | kMatCap;

@@ -46,6 +46,7 @@ FrameState scene_preset(const char* name) {
 }
 FrameState molten_gob() { return scene_preset("molten-gob"); }  // the point clouds (docs/POINT_CLOUDS.md)
 FrameState gob_cooled() { return scene_preset("gob-cooled"); }
+FrameState cold_lager() { return scene_preset("cold-lager"); }  // condensation (docs/CONDENSATION.md)
 FrameState wine_spill() {  // a spill's stream over the rim
   const Timeline tl = load_timeline("tilt-until-spill");
   return draught::timeline_frame(tl, resolve_scene(SceneRequest{tl.preset, tl.glass, {}, {}}), 3.4);
@@ -126,6 +127,7 @@ INSTANTIATE_TEST_SUITE_P(
         GoldenCase{"molten_gob", {}, 200, 150, 3, 0.003, 64, nullptr, 0, molten_gob},
         GoldenCase{"gob_cooled", {}, 200, 150, 3, 0.003, 64, nullptr, 0, gob_cooled},
         GoldenCase{"red_wine_spill", {}, 160, 160, 3, 0.003, 64, nullptr, 0, wine_spill},
+        GoldenCase{"cold_lager", {}, 200, 200, 3, 0.003, 64, nullptr, 0, cold_lager},
         GoldenCase{"nonic_stout", {"stout", "nonic", {}, {}}, 160, 160, 3, 0.002, 64},
         GoldenCase{"wine_red", {"red-wine", "wine", {}, {}}, 128, 192, 3, 0.002, 64},
         GoldenCase{"tulip_amber_constant_env",

@@ -18,8 +18,6 @@
 // Of the light a frosted decal scatters, the part sent back to the side it came from; the
 // rest goes through. Twin of kFrostBackscatter (core/reference/path_tracer.cpp).
 const float FROST_BACKSCATTER = 0.2;
-// What a fog of micro-droplets scatters of the light it meets (water: nearly all).
-const float FOG_ALBEDO = 0.95;
 
 // The wall's arc length along its profile from the foot at height y (local): linear inside
 // a segment, one fetch. Twin of WallArcLengths::at.
@@ -59,23 +57,20 @@ struct DecalSample {
 };
 
 // The decal at wall point p (local) of surface m, seen by a pixel `footprint` metres wide
-// there (the image's mipmap level). `fog`: the cover of a cold glass's fog of
-// micro-droplets there (lib/vessel/condensation.glsl; 0 off the outer wall), a frost of
-// its own where it is denser than the decal.
-DecalSample decal_at(Vessel v, int m, vec3 p, float footprint, float fog) {
+// there (the image's mipmap level).
+DecalSample decal_at(Vessel v, int m, vec3 p, float footprint) {
   DecalSample s = DecalSample(0.0, vec3(0.0), DECAL_ENAMEL, 0.0);
+  if (m != M_GLASS_OUTER && m != M_GLASS_INNER) return s;
   int layer = m == M_GLASS_INNER ? 1 : 0;
   vec2 uv;
-  if ((m == M_GLASS_OUTER || m == M_GLASS_INNER) && decal_uv(v, layer, p, uv)) {
-    vec4 form = object_decal_form(v.row, layer), look = object_decal_look(v.row, layer);
-    float texels = float(textureSize(u_decal_images, 0).x);
-    vec4 texel = textureLod(u_decal_images, vec3(uv, form.x), log2(max(footprint * texels / form.w, 1.0)));
-    s.cover = texel.a * look.a;
-    s.tint = texel.a > 1e-4 ? texel.rgb / texel.a * look.rgb : vec3(0.0);
-    s.kind = int(form.y + 0.5);
-    s.rough = object_decal_finish(v.row, layer).x;
-  }
-  if (fog > s.cover) s = DecalSample(fog, vec3(FOG_ALBEDO), DECAL_ETCHED, 0.0);
+  if (!decal_uv(v, layer, p, uv)) return s;
+  vec4 form = object_decal_form(v.row, layer), look = object_decal_look(v.row, layer);
+  float texels = float(textureSize(u_decal_images, 0).x);
+  vec4 texel = textureLod(u_decal_images, vec3(uv, form.x), log2(max(footprint * texels / form.w, 1.0)));
+  s.cover = texel.a * look.a;
+  s.tint = texel.a > 1e-4 ? texel.rgb / texel.a * look.rgb : vec3(0.0);
+  s.kind = int(form.y + 0.5);
+  s.rough = object_decal_finish(v.row, layer).x;
   return s;
 }
 
@@ -108,14 +103,14 @@ struct DecalEffect {
 };
 
 // The decal at the surface h of vessel v (world point p, local pl) for a path in `medium`
-// going along d; below: p lies under the drink's surface; fog: a cold glass's fog there. Light on a face that looks into
+// going along d; below: p lies under the drink's surface. Light on a face that looks into
 // the drink has crossed it (the drink's mean chord, as the head's underside); so has what
 // shows through a frosted face from the drink's side. The rig's light is exact and
 // unshadowed (a decal is lit as the glass is: through clear glass). Frost scatters light from the
 // other side only through the escape cone of the medium there, (1 / n)^2 of it: the rest
 // is guided round the glass and leaves anywhere, so it sees the surroundings' mean over
 // the sphere (what a rising bubble mirrors, core/environment/reflection).
-DecalEffect decal_effect(Vessel v, Hit h, int medium, vec3 p, vec3 pl, vec3 d, bool below, float fog) {
+DecalEffect decal_effect(Vessel v, Hit h, int medium, vec3 p, vec3 pl, vec3 d, bool below) {
   DecalEffect e = DecalEffect(vec3(0.0), 1.0, vec3(0.0), false, vec3(0.0), 0, d, 0.0, vec2(0.0));
   // (Counts, not branches, pick what runs: llvmpipe runs both sides of a branch for every
   // pixel, but leaves a loop as soon as all its pixels have.)
@@ -125,7 +120,7 @@ DecalEffect decal_effect(Vessel v, Hit h, int medium, vec3 p, vec3 pl, vec3 d, b
   for (int once = 0; once < 1; ++once) {
     if (!wall) break;
     float footprint = 2.0 * frame.cam_tan_half_vfov * frame.viewport_inv.y * length(p - frame.cam_eye);
-    DecalSample s = decal_at(v, h.m, pl, footprint, fog);
+    DecalSample s = decal_at(v, h.m, pl, footprint);
     bool frost = s.kind == DECAL_ETCHED, lit = s.cover > 0.0 && s.kind != DECAL_METALLIC;
     e.metal = s.cover > 0.0 && s.kind == DECAL_METALLIC;
     e.pass = 1.0 - s.cover;
