@@ -15,6 +15,20 @@ constexpr int kFogWidth = contract::kCondensationFogAngles, kFogRows = contract:
 
 bool condensed(const VesselFrame& v) { return v.condensation && !v.condensation->band.empty(); }
 
+// A texture of immutable storage on `unit`; s repeats (round the axis), t is clamped.
+unsigned storage(int unit, GLenum internal, int width, int height, GLint filter) {
+  unsigned tex = 0;
+  glActiveTexture(GL_TEXTURE0 + GLenum(unit));
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  glTexStorage2D(GL_TEXTURE_2D, 1, internal, width, height);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return tex;
+}
+
 }  // namespace
 
 int condensation_band(const FrameState& f, int row) {
@@ -51,20 +65,8 @@ bool CondensationTextures::update(const FrameState& f) {
     capacity_ = std::min(contract::kMaxCondensed, std::max(int(bands.size()), 2 * capacity_));
     if (beads_tex_) glDeleteTextures(1, &beads_tex_);
     if (fog_tex_) glDeleteTextures(1, &fog_tex_);
-    glActiveTexture(GL_TEXTURE0 + GLenum(contract::kCondensationBeadsSampler.unit));
-    glGenTextures(1, &beads_tex_);
-    glBindTexture(GL_TEXTURE_2D, beads_tex_);
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, kBeadWidth, kBeadRows * capacity_);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glActiveTexture(GL_TEXTURE0 + GLenum(contract::kCondensationFogSampler.unit));
-    glGenTextures(1, &fog_tex_);
-    glBindTexture(GL_TEXTURE_2D, fog_tex_);
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_R8, kFogWidth, kFogRows * capacity_);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    beads_tex_ = storage(contract::kCondensationBeadsSampler.unit, GL_RGBA32F, kBeadWidth, kBeadRows * capacity_, GL_NEAREST);
+    fog_tex_ = storage(contract::kCondensationFogSampler.unit, GL_R8, kFogWidth, kFogRows * capacity_, GL_LINEAR);
     held_.assign(size_t(capacity_), nullptr);
     versions_.assign(size_t(capacity_), 0);
   }

@@ -78,6 +78,7 @@ class Renderer {
   // The scene's data textures (tests check what a frame uploads).
   const SceneTextures& scene_textures() const { return *textures_; }
   const DecalTextures& decal_textures() const { return *decals_; }
+  const CondensationTextures& condensation_textures() const { return *condensation_; }
   // The screen's picture (gpu/screen_texture): uploaded from the frame's screen, or
   // streamed into by the app (the web page's video and camera).
   ScreenTexture& screen_texture() { return *screen_; }

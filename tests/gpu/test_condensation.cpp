@@ -10,11 +10,13 @@
 //   frame uploads nothing.
 #include "core/condensation/wall_grid.hpp"
 #include "core/scene/camera.hpp"
+#include "core/sim/scene_simulation.hpp"
 #include "gpu/condensation_textures.hpp"
 #include "gpu_fixture.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -140,6 +142,59 @@ INSTANTIATE_TEST_SUITE_P(Scenes, CondensationProbe,
                                            CondensationProbeCase{"pint_tilted", cold_pint_tilted, 128},
                                            CondensationProbeCase{"flight", cold_flight, 160}),
                          [](const auto& info) { return std::string(info.param.name); });
+
+
+// The cold pint differs from the dry one where the glass is (beads, fog), not around it;
+// and with no beads and no fog (count 0, coverage 0) it is the dry pint.
+TEST(CondensationPicture, ChangesTheGlassOnly) {
+  Gpu& g = gpu_instance();
+  const int n = 96;
+  const FrameState dry = scene_frame({"lager", "pint", {}, {}});
+  const FrameState cold = scene_frame({"lager", "pint", {"condensation.enabled=true"}, {}});
+  const FrameState bare = scene_frame({"lager", "pint", {"condensation.enabled=true", "condensation.count=0",
+                                                          "condensation.coverage=0"}, {}});
+  const Image a = g.renderer->render(dry, n, n), b = g.renderer->render(cold, n, n), c = g.renderer->render(bare, n, n);
+  const gpu::DebugImage m = g.renderer->render_debug(dry, n, n, gpu::DebugView::Material);
+  auto glass_near = [&](int x, int y) {  // a glass surface within two pixels
+    for (int dy = -2; dy <= 2; ++dy)
+      for (int dx = -2; dx <= 2; ++dx) {
+        const int mat = int(std::lround(m.px(std::clamp(x + dx, 0, n - 1), std::clamp(y + dy, 0, n - 1))[1]));
+        if (mat != int(Material::None) && mat != int(Material::Floor)) return true;
+      }
+    return false;
+  };
+  int on_glass = 0, elsewhere = 0, bare_worst = 0;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      int d = 0;
+      for (int k = 0; k < 3; ++k) {
+        const size_t i = (size_t(y) * size_t(n) + size_t(x)) * 4 + size_t(k);
+        d = std::max(d, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
+        bare_worst = std::max(bare_worst, std::abs(int(a.rgba[i]) - int(c.rgba[i])));
+      }
+      if (d > 2) ++(glass_near(x, y) ? on_glass : elsewhere);
+    }
+  std::printf("cold vs dry: %d pixels changed on the glass, %d elsewhere; bare vs dry worst %d\n", on_glass, elsewhere, bare_worst);
+  EXPECT_GT(on_glass, n * n / 20);
+  EXPECT_EQ(elsewhere, 0);
+  EXPECT_LE(bare_worst, 1);
+}
+
+TEST(CondensationTextures, AStillFrameUploadsNothing) {
+  Gpu& g = gpu_instance();
+  const FrameState f = cold_pint();
+  g.renderer->render(f, 32, 32);
+  g.renderer->render(f, 32, 32);
+  EXPECT_EQ(g.renderer->condensation_textures().bands_uploaded(), 0);
+  // The beads moving on: the band again.
+  SceneSimulation sim(resolve_scene_objects({"lager", "pint", kCold, {}}));
+  sim.step(MotionSample{});
+  sim.step(MotionSample{});
+  g.renderer->render(sim.frame(), 32, 32);
+  EXPECT_EQ(g.renderer->condensation_textures().bands_uploaded(), 1);
+  g.renderer->render(sim.frame(), 32, 32);  // (the same state: the frame's snapshot is shared)
+  EXPECT_EQ(g.renderer->condensation_textures().bands_uploaded(), 0);
+}
 
 }  // namespace
 }  // namespace draught::test
