@@ -3,9 +3,8 @@
 // as in the drinks. The cause was float round-off in the wall's intersection solved from
 // the camera (lib/vessel/intersect.glsl hit_wall): a hit up to 4e-5 m off the wall, more
 // than the next search's tmin (2e-6 m), made the path meet the same wall again or start
-// beyond it. These tests pin the cause (every
-// path's events against the double-precision CPU trace) and the symptom (dark pixels among
-// their neighbours inside the glasses).
+// beyond it. These tests pin the cause (every path's events against the double-precision
+// CPU trace) and the symptom (dark pixels among their neighbours inside the glasses).
 #include "core/scene/camera.hpp"
 #include "gpu_fixture.hpp"
 #include "reference_path.hpp"
