@@ -28,6 +28,11 @@ void main() {
   float glint = exp(-dot(v_q - glint_at, v_q - glint_at) * 40.0);
   vec3 c = v_tint * (reflected + frame.glint * 0.8 * glint) * frame.exposure;
   c = frame.tonemap == 1 ? aces_filmic(c) : c;
-  float alpha = edge * clamp(max(F, glint) * 0.85 + 0.08 * cos_i, 0.0, 1.0);
+  // A bubble under the impostor's least radius (0.75 px, bubbles.vert.glsl: so that it
+  // still covers a sample) covers only its own area of that disc: drawn whole, a bubble a
+  // fifth of a pixel across was a pixel-sized dot of what it mirrors, which reads as a
+  // dark speck over a lit drink (the flight's weizen). So tiny bubbles fade out.
+  float area = min(v_radius * v_radius / (0.75 * 0.75), 1.0);
+  float alpha = area * edge * clamp(max(F, glint) * 0.85 + 0.08 * cos_i, 0.0, 1.0);
   frag_color = vec4(linear_to_srgb(c) * alpha, alpha);
 }

@@ -73,13 +73,21 @@ Hit hit_wall(Vessel v, vec3 o, vec3 d, bool inner, float tmin) {
   int k1 = clamp(int(floor((o.y + tr.y * d.y) * v.shape.inv_dy)), 0, SEGMENTS - 1);
   int stp = k1 >= k0 ? 1 : -1;
   int count = abs(k1 - k0) + 1;
-  float A0 = dot(d.xz, d.xz), B0 = dot(o.xz, d.xz), C0 = dot(o.xz, o.xz);
+  // Solved from where the ray enters the vessel's bounds, t = tr.x + u (as hit_rim is),
+  // not from its origin: from the camera a metre away the coefficients are ~1 m^2 and
+  // cancel down to the glass's ~1e-3 m^2, which left the hit up to 4e-5 m off the wall
+  // (measured), more than the next search's tmin (2e-6 m): the path met the same wall
+  // again or went on from beyond it, and the flight was speckled with dark pixels
+  // (tests/gpu/test_speckle.cpp). From the bounds the round-off is the glass's size's,
+  // wherever the camera stands.
+  vec3 ob = o + tr.x * d;
+  float A0 = dot(d.xz, d.xz), B0 = dot(ob.xz, d.xz), C0 = dot(ob.xz, ob.xz);
   // A hit on the boundary between two segments must not slip through the crack that
   // float round-off opens there: each segment reaches a hair (1e-4 of its height) into
   // its neighbours; adjacent cones meet at the shared knot, so the surface is the same.
   float crack = 1e-4 * v.shape.dy;
   int k = k0, hit_k = -1;
-  float hit_t = INF;
+  float hit_u = INF;
   for (int i = 0; i < count && hit_k < 0; ++i, k += stp) {
     ++g_cost;
     vec4 kn = segment_knots(v, k);
@@ -87,29 +95,29 @@ Hit hit_wall(Vessel v, vec3 o, vec3 d, bool inner, float tmin) {
     float r1 = inner ? kn.w : kn.z;
     float y0 = float(k) * v.shape.dy, y1 = y0 + v.shape.dy;
     float s = (r1 - r0) * v.shape.inv_dy;
-    float c0 = r0 + s * (o.y - y0), c1 = s * d.y;
+    float c0 = r0 + s * (ob.y - y0), c1 = s * d.y;
     vec2 ts;
     int n = solve_quadratic(A0 - c1 * c1, 2.0 * (B0 - c0 * c1), C0 - c0 * c0, ts);
     for (int j = 0; j < 2; ++j) {
       if (j >= n) break;
-      float t = ts[j];
-      vec3 p = o + t * d;
-      if (t <= tmin || p.y < y0 - crack || p.y > y1 + crack || c0 + c1 * t < 0.0) continue;
+      float u = ts[j];
+      vec3 p = ob + u * d;
+      if (tr.x + u <= tmin || p.y < y0 - crack || p.y > y1 + crack || c0 + c1 * u < 0.0) continue;
       if (p.y < ylo || p.y > yhi) continue;
       float r = length(p.xz);
       if (inside_torus(v, r, p.y) || clipped(v, p)) continue;
-      hit_t = t;
+      hit_u = u;
       hit_k = k;
       break;
     }
   }
   if (hit_k < 0) return no_hit();
   // The normal once, after the walk (llvmpipe pays for all of a loop's body each trip).
-  vec3 p = o + hit_t * d;
+  vec3 p = ob + hit_u * d;
   float r = length(p.xz);
   float slope = wall_slope(v, hit_k, p.y * v.shape.inv_dy - float(hit_k), inner);
   vec3 nrm = r > 0.0 ? normalize(vec3(p.x / r, -slope, p.z / r)) : vec3(0.0, -1.0, 0.0);
-  return Hit(hit_t, inner ? -nrm : nrm, inner ? M_GLASS_INNER : M_GLASS_OUTER, v.row);
+  return Hit(tr.x + hit_u, inner ? -nrm : nrm, inner ? M_GLASS_INNER : M_GLASS_OUTER, v.row);
 }
 
 // The rim bead: a torus around the axis at the wall top; only where it is outside the body.
