@@ -4,7 +4,7 @@
 //   bead_at, fog_at) at the reference intersector's hit for the same camera ray: a cold
 //   pint straight on, the same closer (beads several pixels wide, grazing rays at its
 //   sides), a tilted glass and a flight. Tolerances: whether a pixel is on a bead agrees
-//   but next to a bead's edge; normals within 0.5 degrees on 99 % of bead pixels and 3
+//   but next to a bead's edge; normals within 0.5 degrees on 99 % of bead pixels and 1
 //   everywhere; fog within 3 / 255.
 // - the picture: a cold pint differs from the dry one only on its glass, and a still
 //   frame uploads nothing.
@@ -131,7 +131,7 @@ TEST_P(CondensationProbe, MatchesTheReference) {
   // Near a cap's edge its normal turns fast (the cap meets the wall at the contact angle),
   // so float rounding of the hit point shows there.
   EXPECT_LE(bent, beads / 100) << "normals over 0.5 degrees apart";
-  EXPECT_LT(worst_angle, 3.0);
+  EXPECT_LT(worst_angle, 1.0);
   EXPECT_LE(fog_far, walls / 200);
   EXPECT_LE(presence, walls / 200) << "the GPU and core disagree on where the beads are";
 }
