@@ -12,7 +12,9 @@
 
 const float DROPLET_SKIM = 4.0 * DROPLET_HIT_EPS;  // core: kDropletSkim
 const float DROPLET_RELAX = 1.6;                   // core: kDropletRelax
-const int DROPLET_BISECTIONS = 16;                 // core: kDropletBisections
+const int DROPLET_BISECTIONS = 10;                 // core: kDropletBisections
+// Samples of one march at most: the start, two a step, the bisections.
+const int DROPLET_MAX_SAMPLES = 2 * DROPLET_MAX_STEPS + DROPLET_BISECTIONS + 1;
 
 // Twin of droplet_smin: the quadratic smooth minimum and the weight of a in its gradient.
 float droplet_smin(float a, float b, float k, out float wa) {
@@ -53,8 +55,9 @@ float droplet_sphere(int i, vec3 p, out vec3 g) {
   return len - s.w;
 }
 
-// Twin of droplet_field: (value, gradient) at p.
-vec4 droplet_field(vec3 p) {
+// Twin of droplet_field_parts: (value, gradient) at p, and in blend the spheres' blend
+// before the noise (1-Lipschitz: where it exceeds A no surface lies within blend - A).
+vec4 droplet_field_parts(vec3 p, out float blend) {
   float d;
   vec3 grad;
   if (frame.droplet_kernel == 1) {
@@ -83,6 +86,7 @@ vec4 droplet_field(vec3 p) {
       grad = wa * grad + (1.0 - wa) * g;
     }
   }
+  blend = d;
   if (frame.droplet_noise_amplitude > 0.0) {
     vec4 nz = droplet_noise(p * frame.droplet_noise_frequency);
     d += frame.droplet_noise_amplitude * (2.0 * nz.x - 1.0);
@@ -91,11 +95,23 @@ vec4 droplet_field(vec3 p) {
   return vec4(d, grad);
 }
 
+// Twin of droplet_field: (value, gradient) at p.
+vec4 droplet_field(vec3 p) {
+  float blend;
+  return droplet_field_parts(p, blend);
+}
+
 float droplet_value(vec3 p) { return droplet_field(p).x; }
 
 // Twin of march_droplets: the first crossing along o + t d in [tmin, tmax], from outside
-// (inside false) or from within a droplet; the box clip, over-relaxed Lipschitz steps,
-// skim steps near the surface and the bisection are the reference's, step for step.
+// (inside false) or from within a droplet; the same samples as the reference, in the
+// same order. One field sample per iteration of a single loop (the start, a relaxed step,
+// its fallback, a skim, each bisection): llvmpipe and SwiftShader run a loop's body under
+// a mask for every pixel of a SIMD group while any of them needs it, and code behind an
+// untaken branch too, so a march whose step sampled twice and held its sixteen
+// bisections in a loop of their own cost a SIMD group about eighteen samples for every
+// step any of its pixels took (docs/PERFORMANCE.md, "Droplets").
+const int DROPLET_MODE_START = 0, DROPLET_MODE_RELAXED = 1, DROPLET_MODE_STEP = 2, DROPLET_MODE_BISECT = 3;
 bool march_droplets(vec3 o, vec3 d, float tmin, float tmax, bool inside, out float t_hit, out vec3 n) {
   t_hit = INF;
   n = vec3(0.0);
@@ -103,39 +119,71 @@ bool march_droplets(vec3 o, vec3 d, float tmin, float tmax, bool inside, out flo
   vec3 ta = (frame.droplet_bound_lo - o) * inv, tb = (frame.droplet_bound_hi - o) * inv;
   vec3 lo = min(ta, tb), hi = max(ta, tb);
   float t0 = max(max(lo.x, lo.y), max(lo.z, tmin)), t1 = min(min(hi.x, hi.y), min(hi.z, tmax));
-  if (!(t0 <= t1)) return false;
-  float L = frame.droplet_lipschitz, sgn = inside ? -1.0 : 1.0;
-  float t = t0, v = sgn * droplet_value(o + t * d);
-  bool found = v < 0.0;
-  float a = t, b = t;
-  for (int i = 0; i < DROPLET_MAX_STEPS; ++i) {
-    if (found) break;
-    float r = v / L;
-    bool skim = v < DROPLET_HIT_EPS;
-    float next = skim ? t + DROPLET_SKIM : t + DROPLET_RELAX * r;
-    float vn = sgn * droplet_value(o + next * d);
-    if (!skim && (vn < 0.0 || r + abs(vn) / L < next - t)) {
-      next = t + r;
-      vn = sgn * droplet_value(o + next * d);
-    }
-    if (next > t1) return false;
-    if (vn < 0.0) {
-      found = true;
-      a = t;
-      b = next;
-      for (int k = 0; k < DROPLET_BISECTIONS; ++k) {
-        float m = 0.5 * (a + b);
-        if (sgn * droplet_value(o + m * d) < 0.0) b = m;
-        else a = m;
+  float L = frame.droplet_lipschitz, A = frame.droplet_noise_amplitude, sgn = inside ? -1.0 : 1.0;
+  // t: the march's point (value >= 0 there), r: the radius free of the surface around it;
+  // x: the next sample; e: the far end of a bracket being bisected.
+  float t = t0, r = 0.0, x = t0, e = t0, vt = 0.0, ve = 0.0;
+  int mode = DROPLET_MODE_START, count = 0;
+  bool going = t0 <= t1, hit = false;
+  for (int i = 0; i < DROPLET_MAX_SAMPLES; ++i) {
+    if (!going) break;
+    float blend;
+    vec4 f = droplet_field_parts(o + x * d, blend);
+    float v = sgn * f.x, rx = max(v / L, sgn * blend - A);
+    if (mode == DROPLET_MODE_BISECT) {
+      ++count;
+      if (v < 0.0) {
+        e = x;
+        ve = v;
+      } else {
+        t = x;
+        vt = v;
+      }
+      if (count == DROPLET_BISECTIONS) {
+        hit = true;
+        going = false;
+        t_hit = t + (e - t) * vt / (vt - ve);
+        n = f.yzw;
+      } else {
+        x = 0.5 * (t + e);
+      }
+    } else {
+      bool crossed = v < 0.0;
+      // A relaxed step is kept where it did not land inside and the free spheres at
+      // both ends overlap; else the safe step from t is sampled next.
+      if (mode == DROPLET_MODE_RELAXED && (crossed || r + rx < x - t)) {
+        x = t + r;
+        mode = DROPLET_MODE_STEP;
+      } else if (mode == DROPLET_MODE_START && crossed) {
+        hit = true;  // starts on the surface (within rounding)
+        going = false;
+        t_hit = x;
+        n = f.yzw;
+      } else if (x > t1) {
+        going = false;
+      } else if (crossed) {
+        e = x;
+        ve = v;
+        x = 0.5 * (t + e);
+        mode = DROPLET_MODE_BISECT;
+        count = 0;
+      } else if (count == DROPLET_MAX_STEPS) {
+        going = false;
+      } else {
+        // Advance to x and plan the next step: a skim where the value is below eps, else
+        // the relaxed step.
+        t = x;
+        vt = v;
+        r = rx;
+        bool skim = v < DROPLET_HIT_EPS;
+        x = skim ? t + DROPLET_SKIM : t + DROPLET_RELAX * r;
+        mode = skim ? DROPLET_MODE_STEP : DROPLET_MODE_RELAXED;
+        ++count;
       }
     }
-    t = next;
-    v = vn;
   }
-  if (!found) return false;
-  t_hit = 0.5 * (a + b);
-  n = normalize(droplet_field(o + t_hit * d).yzw);
-  return true;
+  if (hit) n = normalize(n);
+  return hit;
 }
 
 #endif  // LIB_DROPLETS_FIELD_GLSL

@@ -83,6 +83,7 @@ FieldSample droplet_field(const DropletField& f, glm::dvec3 p) {
       s.grad = wa * s.grad + (1.0 - wa) * g;
     }
   }
+  s.blend = s.d;
   if (f.noise_amplitude > 0) {
     const glm::dvec4 nz = droplet_noise(p * f.noise_frequency);
     s.d += f.noise_amplitude * (2.0 * nz.x - 1.0);
@@ -146,43 +147,62 @@ std::optional<DropletHit> march_droplets(const DropletField& f, glm::dvec3 o, gl
   box.lo -= 2.0 * kDropletSkim;  // a crossing on the box's face is found from inside it
   box.hi += 2.0 * kDropletSkim;
   if (!droplet_box_span(box, o, d, tmin, tmax, t0, t1)) return std::nullopt;
-  const double L = droplet_lipschitz(f), sign = inside ? -1.0 : 1.0;
-  auto value = [&](double t) { return sign * droplet_value(f, o + t * d); };
-  auto hit_at = [&](double t, int steps) {
+  const double L = droplet_lipschitz(f), A = std::max(f.noise_amplitude, 0.0), sign = inside ? -1.0 : 1.0;
+  // One sample: the value (signed for the side the ray starts on), the radius around
+  // the point free of the surface, the gradient.
+  struct Sample {
+    double v, r;
+    glm::dvec3 grad;
+  };
+  auto sample = [&](double t) {
+    const FieldSample s = droplet_field(f, o + t * d);
+    const double v = sign * s.d;
+    return Sample{v, std::max(v / L, sign * s.blend - A), s.grad};
+  };
+  auto hit_at = [&](double t, const Sample& s, int steps) {
     DropletHit h;
     h.t = t;
-    h.n = glm::normalize(droplet_field(f, o + t * d).grad);
+    h.n = glm::normalize(s.grad);
     h.steps = steps;
     return h;
   };
-  // The crossing between a (value >= 0) and b (value < 0), by bisection.
-  auto refine = [&](double a, double b, int steps) {
+  // The crossing between a (value va >= 0) and b (value vb < 0): bisected, then placed by
+  // the line through the bracket's ends; the normal is the last sample's gradient (a
+  // fraction of a micrometre away).
+  auto refine = [&](double a, double va, double b, double vb, int steps) {
+    Sample s{};
     for (int i = 0; i < kDropletBisections; ++i) {
       const double m = 0.5 * (a + b);
-      (value(m) < 0 ? b : a) = m;
+      s = sample(m);
+      if (s.v < 0) {
+        b = m;
+        vb = s.v;
+      } else {
+        a = m;
+        va = s.v;
+      }
     }
-    return hit_at(0.5 * (a + b), steps);
+    return hit_at(a + (b - a) * va / (va - vb), s, steps);
   };
   double t = t0;
-  double v = value(t);
-  if (v < 0) return hit_at(t, 1);  // starts on the surface (within rounding)
-  for (int i = 0; i < kDropletMaxSteps; ++i) {
+  Sample at = sample(t);
+  if (at.v < 0) return hit_at(t, at, 0);  // starts on the surface (within rounding)
+  for (int step = 1; step <= kDropletMaxSteps; ++step) {
     // Over-relaxed (Keinert et al. 2014): try kDropletRelax x the safe step; it is kept
-    // only if the unbounding spheres at both ends overlap (no gap where the surface
-    // could hide) and it did not land inside; else the safe step is taken. Near the
-    // surface a skim step instead, whose sign change is a crossing.
-    const double r = v / L;
-    const bool skim = v < kDropletHitEps;
-    double next = skim ? t + kDropletSkim : t + kDropletRelax * r;
-    double vn = value(next);
-    if (!skim && (vn < 0 || r + std::abs(vn) / L < next - t)) {
-      next = t + r;
-      vn = value(next);
+    // only if the spheres free of the surface at both ends overlap (no gap where the
+    // surface could hide) and it did not land inside; else the safe step is taken. Near
+    // the surface a skim step instead, whose sign change is a crossing.
+    const bool skim = at.v < kDropletHitEps;
+    double next = skim ? t + kDropletSkim : t + kDropletRelax * at.r;
+    Sample s = sample(next);
+    if (!skim && (s.v < 0 || at.r + s.r < next - t)) {
+      next = t + at.r;
+      s = sample(next);
     }
     if (next > t1) return std::nullopt;
-    if (vn < 0) return refine(t, next, i + 1);
+    if (s.v < 0) return refine(t, at.v, next, s.v, step);
     t = next;
-    v = vn;
+    at = s;
   }
   return std::nullopt;
 }

@@ -40,6 +40,7 @@ struct DropletField {
 struct FieldSample {
   double d = 0;
   glm::dvec3 grad{0.0};
+  double blend = 0;  // the spheres' blend before the noise: d - blend is within [-A, A]
 };
 
 // The quadratic smooth minimum of a and b with blend width k (> 0), and the weight of a
@@ -88,16 +89,23 @@ struct DropletHit {
 
 // The first crossing of the field's surface along o + t d (d unit) for t in [tmin, tmax]:
 // from outside (inside = false: the field goes from + to -) or from inside a droplet
-// (inside = true). The ray is clipped to droplet_bounds; a step is value / L (it never
-// passes the surface; over-relaxed by kDropletRelax where that is certified), and where the value is below kDropletHitEps a skim step of
-// kDropletSkim; every step's end is evaluated, and a sign change there is refined by
-// kDropletBisections bisections (the hit lies on the surface to within nanometres, not
-// within eps of it). What a skim step can miss: a dip through the surface shorter than
-// the skim, i.e. less than skim^2 kappa / 8 deep for curvature kappa (under a micrometre
-// for droplets of millimetres; tests/unit/droplets). At most kDropletMaxSteps steps.
-// Twin: march_droplets in lib/droplets/field.glsl (float, the same steps).
+// (inside = true). The ray is clipped to droplet_bounds. Around each point the march
+// knows a radius free of the surface: value / L (Lipschitz), or where the spheres' blend
+// b (before the noise, 1-Lipschitz) exceeds the noise amplitude A, b - A if larger (the
+// surface needs b <= A), so far from the droplets the steps are the blend's distance, not
+// a fraction of it. A step is that radius (it never passes the surface), over-relaxed by
+// kDropletRelax where the free spheres at both ends overlap, and where the value is below
+// kDropletHitEps a skim step of kDropletSkim; every step's end is sampled, and a sign
+// change there is refined by kDropletBisections bisections and placed by the line through
+// the bracket's ends (the hit lies on the surface to within nanometres, not within eps of
+// it; its normal is the last bisection's gradient, a fraction of a micrometre away). What
+// a skim step can miss: a dip through the surface shorter than the skim, i.e. less than
+// skim^2 kappa / 8 deep for curvature kappa (under a micrometre for droplets of
+// millimetres; tests/unit/droplets). At most kDropletMaxSteps steps.
+// Twin: march_droplets in lib/droplets/field.glsl (float, the same samples in the same
+// order, one per iteration of a single loop).
 inline constexpr double kDropletSkim = 4.0 * kDropletHitEps;
-inline constexpr int kDropletBisections = 16;
+inline constexpr int kDropletBisections = 10;
 inline constexpr double kDropletRelax = 1.6;
 std::optional<DropletHit> march_droplets(const DropletField&, glm::dvec3 o, glm::dvec3 d, double tmin,
                                          double tmax, bool inside);
