@@ -162,6 +162,11 @@ TEST_F(Render, CameraChangesTheImage) {
   ASSERT_EQ(r1.exit_code, 0) << r1.describe();
   EXPECT_EQ(png_info(cam).error, "");
   EXPECT_TRUE(differ(base, cam)) << "--camera made no difference";
+  // Quoted as one word, as the help writes it: the same camera.
+  const fs::path quoted = out() / "quoted.png";
+  auto r2 = render({"--camera", "eye=0,0.1,0.4 target=0,0.07,0  vfov=30", "-o", quoted.string()});
+  ASSERT_EQ(r2.exit_code, 0) << r2.describe();
+  EXPECT_FALSE(differ(cam, quoted)) << "--camera quoted as one word is another camera";
 }
 
 TEST_F(Render, DebugViewsAreDistinctImages) {

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 
 namespace draught {
@@ -574,7 +575,13 @@ Scene resolve_scene_objects(const SceneRequest& req, std::string* log) {
   }
   // Every override is checked against the scene before any is applied.
   std::vector<std::pair<ParamRef, ParamValue>> overrides;
-  for (const auto& c : req.camera) {
+  // `--camera eye=.. target=..` as separate words, or quoted as one as the help shows it.
+  std::vector<std::string> camera_words;
+  for (const auto& given : req.camera) {
+    std::istringstream words(given);
+    for (std::string w; words >> w;) camera_words.push_back(w);
+  }
+  for (const auto& c : camera_words) {
     auto eq = c.find('=');
     const std::string key = c.substr(0, eq);
     if (eq == std::string::npos || (key != "eye" && key != "target" && key != "vfov"))
