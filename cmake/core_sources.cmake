@@ -6,6 +6,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/params/preset.cpp
   src/core/params/timeline.cpp
   src/core/params/object_params.cpp
+  src/core/params/shipped_files.cpp
   src/core/scene/scene.cpp
   src/core/scene/camera.cpp
   src/core/scene/motion.cpp

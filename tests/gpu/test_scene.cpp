@@ -83,11 +83,7 @@ TEST(Flight, RefractedPathsThroughTwoGlassesMatchTheCpuTrace) {
   const FrameState f = on_checker_floor(make_frame(flight_scene(FlightView::AlongTheRow)));
   const int w = 96, h = 72, events = 6;
   const SceneGeometry geo = scene_geometry(f);
-  const CameraBasis cam = camera_basis(f, w, h);
-  std::vector<std::vector<PathEvent>> cpu(size_t(w * h));
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      cpu[size_t(y * w + x)] = reference_path(f, geo, camera_ray(cam, x + 0.5, y + 0.5, w, h), f.params.render.max_events);
+  const std::vector<std::vector<PathEvent>> cpu = reference_paths(f, geo, w, h);
   std::vector<bool> alive(size_t(w * h), true);  // all earlier events agree
   int through_two = 0;  // pixels whose agreeing path met two glasses
   std::vector<std::set<int>> met(size_t(w * h));

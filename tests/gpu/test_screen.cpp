@@ -7,11 +7,10 @@
 #include "core/io/image.hpp"
 #include "core/output/tonemap.hpp"
 #include "core/reference/intersect.hpp"
-#include "core/reference/media.hpp"
-#include "core/reference/optics.hpp"
 #include "core/scene/camera.hpp"
 #include "gpu/screen_texture.hpp"
 #include "gpu_fixture.hpp"
+#include "reference_path.hpp"
 
 #include <gtest/gtest.h>
 
@@ -147,13 +146,7 @@ bool through_the_glass(const FrameState& f, const SceneGeometry& geo, Ray r, int
   glm::dvec3 thr(1.0);
   in_liquid = false;
   for (int e = 0; e < f.params.render.max_events; ++e) {
-    Hit h;
-    if (medium == MediumKind::Air) {
-      h = first_hit(geo, r, e == 0 ? 0.0 : 2e-6);
-    } else {
-      h = hit_vessel(geo.vessels[size_t(object)], r, 2e-6);
-      h.object = h.valid() ? object : -1;
-    }
+    const Hit h = next_surface(geo, r, medium, object, e == 0 ? 0.0 : 2e-6);
     if (!h.valid()) {
       if (medium != MediumKind::Air) return false;
       double t;
@@ -170,26 +163,14 @@ bool through_the_glass(const FrameState& f, const SceneGeometry& geo, Ray r, int
     const VesselFrame& v = f.vessels[size_t(h.object)];
     if (medium == MediumKind::Glass) thr *= glm::exp(-glm::dvec3(v.params.glass.absorption) * h.t);
     if (medium == MediumKind::Liquid) thr *= glm::exp(-glm::dvec3(v.liquid_absorption) * h.t);
-    const glm::dvec3 p = r.at(h.t);
-    const glm::dvec3 local = glm::inverse(v.pose.orientation) * (p - v.pose.position);
-    const bool below = v.has_liquid && v.liquid.below(local);
-    const MediumKind next = medium_across(h.m, medium, below);
-    auto ior = [&](MediumKind k) {
-      return k == MediumKind::Glass ? double(v.params.glass.ior) : k == MediumKind::Liquid ? double(v.params.liquid.ior) : 1.0;
-    };
-    const glm::dvec3 n = glm::dot(h.n, r.d) < 0 ? h.n : -h.n;
-    const double n1 = ior(medium), n2 = ior(next);
-    const double F = fresnel_dielectric(-glm::dot(n, r.d), n1, n2);
-    const auto refracted = refract_dir(r.d, n, n1 / n2);
-    if (F >= 1.0 || !refracted) {
-      r = Ray{p, reflect_dir(r.d, n)};
-    } else {
-      thr *= 1.0 - F;
-      r = Ray{p, glm::normalize(*refracted)};
-      medium = next;
-      in_liquid = in_liquid || next == MediumKind::Liquid;
-      object = next == MediumKind::Air ? -1 : h.object;
+    const PathTurn turn = turn_at(f, h, r, medium, object);
+    if (turn.crossed) {
+      thr *= 1.0 - turn.fresnel;
+      in_liquid = in_liquid || turn.medium == MediumKind::Liquid;
     }
+    r = turn.ray;
+    medium = turn.medium;
+    object = turn.object;
   }
   return false;
 }

@@ -35,11 +35,7 @@ TEST(Flight, PathsFromTheShippedCameraMatchTheCpuTrace) {
   const FrameState f = on_checker_floor(shipped_flight());
   const int w = 256, h = 128, events = 4;
   const SceneGeometry geo = scene_geometry(f);
-  const CameraBasis cam = camera_basis(f, w, h);
-  std::vector<std::vector<PathEvent>> cpu(size_t(w * h));
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      cpu[size_t(y * w + x)] = reference_path(f, geo, camera_ray(cam, x + 0.5, y + 0.5, w, h), f.params.render.max_events);
+  const std::vector<std::vector<PathEvent>> cpu = reference_paths(f, geo, w, h);
   std::vector<bool> alive(size_t(w * h), true);
   int glass_paths = 0, differ = 0;
   double worst_first = 0;  // the first wall hit's distance, GPU against CPU

@@ -150,12 +150,7 @@ std::vector<double> backdrop_light_inputs(const FrameState& f) {
   put3(scene_aim(f.vessels));
   put(f.lights.lights.size());
   for (const AreaLight& l : f.lights.lights) {
-    put(int(l.shape), l.radius);
-    put3(l.center);
-    put3(l.normal);
-    put3(l.half_u);
-    put3(l.half_v);
-    put3(l.radiance);
+    for (double x : l.numbers()) put(x);
   }
   return k;
 }

@@ -1,6 +1,7 @@
 #include "core/environment/floor_light.hpp"
 
 #include "core/environment/studio.hpp"
+#include "core/math/basis.hpp"
 
 #include "core/foam/head_volume.hpp"
 #include "core/math/random.hpp"
@@ -28,19 +29,6 @@ constexpr double kKernelScale = 2.0;  // texels per unit of the cubic B-spline (
 
 double mean3(const glm::dvec3& v) { return (v.x + v.y + v.z) / 3.0; }
 double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
-
-void basis(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
-  const double s = std::copysign(1.0, n.z), a = -1.0 / (s + n.z), c = n.x * n.y * a;
-  t = {1 + s * n.x * n.x * a, s * c, -s * n.x};
-  b = {c, s + n.y * n.y * a, -n.y};
-}
-
-glm::dvec3 around(const glm::dvec3& n, double cos_t, double phi) {
-  glm::dvec3 t, b;
-  basis(n, t, b);
-  const double sin_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t));
-  return glm::normalize(sin_t * std::cos(phi) * t + sin_t * std::sin(phi) * b + cos_t * n);
-}
 
 // The cubic B-spline (support [-2, 2], a partition of unity over integer shifts).
 double bspline3(double t) {
@@ -535,12 +523,7 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
   const glm::dvec3 sky = f.environment.image ? f.environment.sky.at({0, 1, 0}) : glm::dvec3(0.0);
   put3(sky);
   for (const AreaLight& l : emitters.lights) {
-    put(int(l.shape), l.radius);
-    put3(l.center);
-    put3(l.normal);
-    put3(l.half_u);
-    put3(l.half_v);
-    put3(l.radiance);
+    for (double x : l.numbers()) put(x);
   }
   const SceneGeometry geo = scene_geometry(f);
   for (size_t i = 0; i < f.vessels.size(); ++i) {

@@ -1,5 +1,7 @@
 #include "core/environment/lights.hpp"
 
+#include "core/math/basis.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -9,13 +11,6 @@ namespace draught {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// An orthonormal basis around unit n (Duff et al. 2017).
-void basis(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
-  const double s = std::copysign(1.0, n.z), a = -1.0 / (s + n.z), c = n.x * n.y * a;
-  t = {1 + s * n.x * n.x * a, s * c, -s * n.x};
-  b = {c, s + n.y * n.y * a, -n.y};
-}
 
 // 1 - cos of the half-angle a sphere of radius r subtends from distance^2 d2 (> r^2),
 // without the cancellation of 1 - sqrt(1 - r^2/d2) for small, far lights.
@@ -36,6 +31,11 @@ bool hit_sphere(const glm::dvec3& c, double r, const glm::dvec3& o, const glm::d
 }
 
 }  // namespace
+
+std::array<double, 17> AreaLight::numbers() const {
+  return {double(int(shape)), radius,   center.x, center.y, center.z,   normal.x,   normal.y,   normal.z, half_u.x,
+          half_u.y,           half_u.z, half_v.x, half_v.y, half_v.z, radiance.x, radiance.y, radiance.z};
+}
 
 double AreaLight::area() const {
   if (shape == LightShape::Sphere) return 4 * kPi * radius * radius;

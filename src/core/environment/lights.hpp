@@ -12,6 +12,8 @@
 #include "core/params/params.hpp"
 
 #include <glm/glm.hpp>
+
+#include <array>
 #include <vector>
 
 namespace draught {
@@ -29,6 +31,9 @@ struct AreaLight {
 
   double area() const;
   bool emits() const;  // some radiance over some area
+  // Every number of the light (shape, place, size, radiance), for the keys of what is
+  // computed from the lights (backdrop_light_inputs, floor_light_inputs).
+  std::array<double, 17> numbers() const;
   // The nearest t > tmin where the ray o + t d (d unit) meets the light's emitting side.
   bool intersect(const glm::dvec3& o, const glm::dvec3& d, double tmin, double& t) const;
   // The irradiance the whole light gives point x of a surface of unit normal n, per unit

@@ -1,17 +1,18 @@
 #include "core/environment/screen.hpp"
 
 #include "core/environment/lights.hpp"
+#include "core/io/file_cache.hpp"
 #include "core/io/files.hpp"
 #include "core/io/process.hpp"
 #include "core/output/tonemap.hpp"
 #include "core/params/preset.hpp"
+#include "core/params/shipped_files.hpp"
 #include "core/text/echo.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
-#include <list>
 #include <mutex>
 #include <system_error>
 
@@ -51,22 +52,10 @@ double fold(double s) {
   return std::clamp(s, -1.0, 1.0);
 }
 
-bool is_shipped_name(const std::string& name) {
-  return !name.empty() && name.find_first_of("/\\.%") == std::string::npos;
-}
-
-struct Entry {
-  fs::path file;
-  fs::file_time_type written;
-  std::uintmax_t bytes = 0;
-  std::shared_ptr<VideoSource> source;
-};
-
 // The few sources last used: a viewer flipping between clips does not reopen them (each
 // video holds an ffmpeg process and a few decoded frames).
-constexpr size_t kKeptSources = 3;
-std::recursive_mutex g_mutex;  // the cache, and every source's decoding (one frame at a time)
-std::list<Entry> g_kept;       // most recently used first
+FileCache<VideoSource> g_sources(3);
+std::recursive_mutex g_decoding;  // every source's decoding, one frame at a time
 
 }  // namespace
 
@@ -134,37 +123,16 @@ int screen_frame_index(double position, double fps, int frames, bool loop) {
 }
 
 fs::path resolve_screen_source(const std::string& name) {
-  if (is_shipped_name(name)) {
+  if (is_shipped_name(name, "%")) {
     std::string tried;
-    for (const auto& dir : preset_dirs()) {
-      for (const char* ext : {".mp4", ".webm", ".mkv", ""}) {
-        const fs::path p = dir / "videos" / (name + ext);
-        std::error_code ec;
-        if (*ext ? fs::is_regular_file(p, ec) : fs::is_directory(p, ec)) return p;
-        tried += (tried.empty() ? "" : ", ") + p.string() + (*ext ? "" : "/");
-      }
-    }
+    if (auto p = find_shipped("videos", name, {".mp4", ".webm", ".mkv", ""}, tried)) return *p;
     throw InputError("no shipped video named '" + shorten(name) + "' (looked for " + tried + ")");
   }
   return name;
 }
 
 std::shared_ptr<VideoSource> screen_source(const std::string& name) {
-  const fs::path file = resolve_screen_source(name);
-  std::error_code ec;
-  const auto written = fs::last_write_time(file, ec);
-  const auto bytes = fs::is_regular_file(file, ec) ? fs::file_size(file, ec) : 0;
-  std::lock_guard lock(g_mutex);
-  for (auto it = g_kept.begin(); it != g_kept.end(); ++it) {
-    if (it->file == file && it->written == written && it->bytes == bytes) {
-      g_kept.splice(g_kept.begin(), g_kept, it);
-      return g_kept.front().source;
-    }
-  }
-  std::shared_ptr<VideoSource> source = open_video_source(file);
-  g_kept.push_front({file, written, bytes, source});
-  if (g_kept.size() > kKeptSources) g_kept.pop_back();
-  return source;
+  return g_sources.get(name, resolve_screen_source(name), [](const fs::path& f) { return open_video_source(f); });
 }
 
 bool screen_source_played_by_app(const std::string& name) {
@@ -203,7 +171,7 @@ ScreenFrame screen_frame(const SceneParams& p, const glm::dvec3& aim, double tim
     s.external = true;
     s.app_file = resolve_screen_source(sp.source).string();
   } else {
-    std::lock_guard lock(g_mutex);
+    std::lock_guard lock(g_decoding);
     const std::shared_ptr<VideoSource> src = screen_source(sp.source);
     const VideoInfo& info = src->info();
     const double fps = sp.fps > 0 ? double(sp.fps) : (info.fps > 0 ? info.fps : kSequenceFps);

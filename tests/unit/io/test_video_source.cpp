@@ -159,6 +159,20 @@ TEST_F(VideoSourceTest, HugeFramesAreRefusedFromTheHeader) {
   EXPECT_TRUE(has(error_of(dir_ / "empty.png"), {"empty.png", "no pixels"}));
 }
 
+// A chunk that claims a gigabyte the file does not hold is refused from the chunk list,
+// before the decoder allocates what it claims (fuzz_video_source's out-of-memory finding).
+TEST_F(VideoSourceTest, AChunkClaimingMoreThanTheFileIsRefusedNotAllocated) {
+  const std::string png = encode_png(test_frame(0));
+  const size_t iend = png.size() - 12;
+  std::string bad = png.substr(0, iend) + std::string("\x3F\xFF\xFF\xF0IDAT", 8) + std::string(40, 'x') + png.substr(iend);
+  try {
+    decode_png_frame(bad, "claims.png");
+    ADD_FAILURE() << "a PNG whose chunk runs past the file was decoded";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(has(e.what(), {"claims.png", "undecodable PNG", "past the end of the file"})) << e.what();
+  }
+}
+
 TEST_F(VideoSourceTest, AVideoIsDecodedFrameByIndex) {
   if (find_executable("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not installed";
   const auto src = open_video_source(lossless_video(30));
