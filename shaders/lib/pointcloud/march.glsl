@@ -53,7 +53,7 @@ vec4 cloud_field_at(CloudRef c, vec3 p, bool with_attrs, out vec4 attrs) {
     if (count > 0) {
       // A leaf's points in a loop of constant count, which the compiler unrolls: llvmpipe
       // counts every iteration of every loop of a pixel against one budget of 65535.
-      // (The renderer's trees have leaves of at most CLOUD_LEAF_SIZE points.)
+      // (CloudTexels::append refuses a tree with larger leaves.)
       for (int j = 0; j < CLOUD_LEAF_SIZE; ++j) {
         if (j >= count) continue;
         int i = index + j;

@@ -30,9 +30,10 @@ struct Prepared {
   CloudTexels tx;
   CloudRange range;
 };
+// Leaves of up to `leaf` points: the CPU twin reads any size (the shader only kCloudLeafSize).
 Prepared prepare(const PointCloud& c, int leaf = kCloudLeafSize) {
   Prepared p;
-  p.range = p.tx.append(c, build_cloud_bvh(c, float(cloud_support_scale(kCloudThreshold)), leaf));
+  p.range = p.tx.append(c, build_cloud_bvh(c, float(cloud_support_scale(kCloudThreshold)), leaf), leaf);
   return p;
 }
 
