@@ -55,7 +55,7 @@ template <bool kTree>
 void march_rays(benchmark::State& st, std::size_t n, int leaf) {
   const PointCloud c = ball(n);
   CloudTexels tx;
-  const CloudRange r = tx.append(c, build_cloud_bvh(c, kScale, leaf));
+  const CloudRange r = tx.append(c, build_cloud_bvh(c, kScale, leaf), leaf);  // (the CPU twin reads any leaf size)
   const CloudRef ref = cloud_ref(r);
   const glm::vec3 eye(0.0f, 0.0f, 0.15f);
   int hits = 0, rays = 0;

@@ -13,13 +13,13 @@
 #include "gpu/cloud_textures.hpp"
 #include "gpu/program.hpp"
 #include "gpu_fixture.hpp"
+#include "../support/cloud_blob.hpp"
 
 #include <gtest/gtest.h>
 
 #include <GLES3/gl3.h>
 
 #include <cstdio>
-#include <random>
 
 namespace draught::test {
 namespace {
@@ -43,21 +43,6 @@ void main() {
   o_color = !hit ? vec4(-1.0) : u_mode == 1 ? attrs : vec4(t, n);
 }
 )";
-
-PointCloud blob(std::size_t n, float r, glm::vec3 centre, std::uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-  PointCloud c;
-  c.default_radius = r;
-  while (c.size() < n) {
-    const glm::vec3 p(u(rng), u(rng), u(rng));
-    if (glm::dot(p, p) > 1.0f) continue;
-    c.position.push_back(centre + 0.03f * p);
-    c.temperature.push_back(1400.0f - 400.0f * glm::length(p));
-    c.color.push_back({0.5f + 0.5f * p.x, 0.5f, 0.5f - 0.4f * p.z});
-  }
-  return c;
-}
 
 struct Camera {
   glm::vec3 eye, fwd, right, up;

@@ -1,6 +1,7 @@
 // Helpers shared by the unit tests (header only; tests/CMakeLists.txt globs *.cpp).
 #pragma once
 
+#include "core/io/files.hpp"
 #include "core/params/params.hpp"
 #include "core/params/preset.hpp"
 #include "core/vessel/vessel.hpp"
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <initializer_list>
 #include <string>
 #include <unistd.h>
@@ -41,6 +43,16 @@ inline ::testing::AssertionResult has(const std::string& message, std::initializ
     if (message.find(p) == std::string::npos)
       return ::testing::AssertionFailure() << "message \"" << message << "\" lacks \"" << p << "\"";
   return ::testing::AssertionSuccess();
+}
+
+// The message of the InputError that `f` throws; "no error" where it throws none.
+inline std::string input_error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
 }
 
 // A fresh, empty folder per test (dir_), named after the suite's prefix, the process and

@@ -53,7 +53,7 @@ vec4 cloud_field_at(CloudRef c, vec3 p, bool with_attrs, out vec4 attrs) {
     if (count > 0) {
       // A leaf's points in a loop of constant count, which the compiler unrolls: llvmpipe
       // counts every iteration of every loop of a pixel against one budget of 65535.
-      // (The renderer's trees have leaves of at most CLOUD_LEAF_SIZE points.)
+      // (CloudTexels::append refuses a tree with larger leaves.)
       for (int j = 0; j < CLOUD_LEAF_SIZE; ++j) {
         if (j >= count) continue;
         int i = index + j;
@@ -151,6 +151,17 @@ float cloud_g(CloudRef c, vec3 o, vec3 d, float t, float sgn, bool inside, out f
   return s.w == 0.0 && !inside ? INF : sgn * (c.threshold - s.w);
 }
 
+// Twin of field.cpp's cloud_bracket_crossing: the crossing lies between t (g > 0 there;
+// INF, in no support, is F = 0) and end (g_end <= 0), the bracket the bisection narrows.
+void cloud_bracket_crossing(float threshold, float t, float g, float end, float g_end, out bool found, out float a,
+                            out float b, out float ga, out float gb) {
+  found = true;
+  a = t;
+  b = end;
+  ga = g == INF ? threshold : g;
+  gb = g_end;
+}
+
 // Twin of march_cloud: the first crossing of F = threshold along o + t d (d unit), t in
 // [tmin, tmax], from outside or (inside) the exit; its normal normalize(-grad F) and the
 // k-weighted (temperature, r, g, b).
@@ -184,24 +195,14 @@ bool march_cloud(CloudRef c, vec3 o, vec3 d, float tmin, float tmax, bool inside
     float gn = cloud_g(c, o, d, next, sgn, inside, sn);
     float gv = gn == INF ? c.threshold : gn;
     if (gv <= 0.0) {
-      found = true;
-      a = t;
-      b = next;
-      ga = g == INF ? c.threshold : g;
-      gb = gv;
+      cloud_bracket_crossing(c.threshold, t, g, next, gv, found, a, b, ga, gb);
     } else if (slope < 0.0 && sn > 0.0) {
       float predicted;
       float u = cloud_hermite_min(g, slope * (next - t), gv, sn * (next - t), predicted);
       if (predicted < 0.1 * c.threshold) {
         float tm = t + u * (next - t), sm;
         float gm = cloud_g(c, o, d, tm, sgn, inside, sm);
-        if (gm <= 0.0) {
-          found = true;
-          a = t;
-          b = tm;
-          ga = g == INF ? c.threshold : g;
-          gb = gm;
-        }
+        if (gm <= 0.0) cloud_bracket_crossing(c.threshold, t, g, tm, gm, found, a, b, ga, gb);
       }
     }
     if (found) {

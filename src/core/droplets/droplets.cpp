@@ -35,25 +35,19 @@ DropletParams parse_droplet_params(const nlohmann::json& j, const std::string& f
     throw InputError(file + ": field '" + at + "': expected an object of droplet parameters, got " + short_dump(j));
   DropletParams p;
   for (auto it = j.begin(); it != j.end(); ++it) {
-    const std::string key = it.key(), field = file + ": field '" + at + "." + key + "': ";
+    const std::string key = it.key(), name = at + "." + key, field = file + ": field '" + name + "': ";
     const ObjectParamInfo* info = &find_object_param(droplet_param_table(), key, file, at, "droplet");
     const nlohmann::json& v = it.value();
-    auto number = [&](const nlohmann::json& x) { return object_param_number(x, *info, file, at + "." + key); };
     if (key == "kernel") {
       if (!v.is_string() || (v.get<std::string>() != "polynomial" && v.get<std::string>() != "exponential"))
         throw InputError(field + "expected \"polynomial\" or \"exponential\", got " + short_dump(v));
       p.kernel = v.get<std::string>() == "exponential" ? 1 : 0;
     } else if (key == "count") {
-      if (!v.is_number_integer() || v.get<std::int64_t>() < 1 || v.get<std::int64_t>() > kMaxDroplets)
-        throw InputError(field + "expected a whole number in [1, " + std::to_string(kMaxDroplets) + "], got " +
-                         short_dump(v));
-      p.count = int(v.get<std::int64_t>());
+      p.count = object_param_int(v, *info, file, name);
     } else if (key == "absorption") {
-      if (!v.is_array() || v.size() != 3)
-        throw InputError(field + "expected [r, g, b], each in " + object_param_range(*info) + ", got " + short_dump(v));
-      for (int c = 0; c < 3; ++c) p.absorption[c] = float(number(v[size_t(c)]));
+      p.absorption = object_param_rgb(v, *info, file, name);
     } else {
-      const float x = float(number(v));
+      const float x = float(object_param_number(v, *info, file, name));
       if (key == "radius") p.radius = x;
       else if (key == "taper") p.taper = x;
       else if (key == "blend") p.blend = x;

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <sstream>
 
 namespace draught {
@@ -35,6 +36,24 @@ double object_param_number(const nlohmann::json& x, const ObjectParamInfo& info,
     throw InputError(file + ": field '" + field + "': expected a number in " + object_param_range(info) + ", got " +
                      short_dump(x));
   return x.get<double>();
+}
+
+int object_param_int(const nlohmann::json& x, const ObjectParamInfo& info, const std::string& file,
+                     const std::string& field) {
+  if (!x.is_number_integer() || x.get<std::int64_t>() < info.min || x.get<std::int64_t>() > info.max)
+    throw InputError(file + ": field '" + field + "': expected a whole number in " + object_param_range(info) +
+                     ", got " + short_dump(x));
+  return int(x.get<std::int64_t>());
+}
+
+glm::vec3 object_param_rgb(const nlohmann::json& x, const ObjectParamInfo& info, const std::string& file,
+                           const std::string& field) {
+  if (!x.is_array() || x.size() != 3)
+    throw InputError(file + ": field '" + field + "': expected [r, g, b], each in " + object_param_range(info) +
+                     ", got " + short_dump(x));
+  glm::vec3 rgb;
+  for (int c = 0; c < 3; ++c) rgb[c] = float(object_param_number(x[std::size_t(c)], info, file, field));
+  return rgb;
 }
 
 }  // namespace draught

@@ -4,6 +4,7 @@
 // reading for every such kind (the vessels' own parameters are the table of params.hpp).
 #pragma once
 
+#include <glm/glm.hpp>
 #include <nlohmann/json_fwd.hpp>
 
 #include <string>
@@ -29,6 +30,17 @@ const ObjectParamInfo& find_object_param(const std::vector<ObjectParamInfo>& tab
 // A number of `info`'s range; InputError "FILE: field 'FIELD': expected a number in
 // [min, max] (unit), got ..." (FIELD names where it is, e.g. "objects[1].droplets.blend").
 double object_param_number(const nlohmann::json&, const ObjectParamInfo& info, const std::string& file,
+                           const std::string& field);
+
+// A whole number of `info`'s range (a count); InputError "FILE: field 'FIELD': expected a
+// whole number in [min, max], got ...".
+int object_param_int(const nlohmann::json&, const ObjectParamInfo& info, const std::string& file,
+                     const std::string& field);
+
+// Three numbers [r, g, b], each of `info`'s range; InputError "FILE: field 'FIELD':
+// expected [r, g, b], each in [min, max] (unit), got ..." for anything but three, and
+// object_param_number's error for a component out of range.
+glm::vec3 object_param_rgb(const nlohmann::json&, const ObjectParamInfo& info, const std::string& file,
                            const std::string& field);
 
 }  // namespace draught

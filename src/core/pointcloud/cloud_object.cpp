@@ -65,10 +65,9 @@ PointCloudParams parse_point_cloud_params(const nlohmann::json& j, const std::st
     throw InputError(file + ": field '" + at + "': expected an object of point-cloud parameters, got " + short_dump(j));
   PointCloudParams p;
   for (auto it = j.begin(); it != j.end(); ++it) {
-    const std::string key = it.key(), field = file + ": field '" + at + "." + key + "': ";
+    const std::string key = it.key(), name = at + "." + key, field = file + ": field '" + name + "': ";
     const ObjectParamInfo* info = &find_object_param(point_cloud_param_table(), key, file, at, "point-cloud");
     const nlohmann::json& v = it.value();
-    auto number = [&](const nlohmann::json& x) { return object_param_number(x, *info, file, at + "." + key); };
     auto choice = [&](std::initializer_list<const char*> options) {
       int k = 0;
       std::string list;
@@ -93,15 +92,11 @@ PointCloudParams parse_point_cloud_params(const nlohmann::json& j, const std::st
       if (!v.is_boolean()) throw InputError(field + "expected true or false, got " + short_dump(v));
       p.loop = v.get<bool>();
     } else if (key == "count") {
-      if (!v.is_number_integer() || v.get<std::int64_t>() < info->min || v.get<std::int64_t>() > info->max)
-        throw InputError(field + "expected a whole number in " + object_param_range(*info) + ", got " + short_dump(v));
-      p.count = int(v.get<std::int64_t>());
+      p.count = object_param_int(v, *info, file, name);
     } else if (key == "absorption") {
-      if (!v.is_array() || v.size() != 3)
-        throw InputError(field + "expected [r, g, b], each in " + object_param_range(*info) + ", got " + short_dump(v));
-      for (int c = 0; c < 3; ++c) p.absorption[c] = float(number(v[size_t(c)]));
+      p.absorption = object_param_rgb(v, *info, file, name);
     } else {
-      const float x = float(number(v));
+      const float x = float(object_param_number(v, *info, file, name));
       if (key == "rate") p.rate = x;
       else if (key == "scale") p.scale = x;
       else if (key == "blob_radius") p.blob_radius = x;

@@ -12,12 +12,21 @@ int cloud_texture_rows(std::size_t texels) {
   return std::max(1, int((texels + std::size_t(kCloudTextureWidth) - 1) / std::size_t(kCloudTextureWidth)));
 }
 
-CloudRange CloudTexels::append(const PointCloud& cloud, const CloudBvh& bvh) {
+CloudRange CloudTexels::append(const PointCloud& cloud, const CloudBvh& bvh, int max_leaf) {
   if (int(clouds.size()) >= kMaxClouds)
     throw std::invalid_argument("cloud textures: a cloud beyond the " + std::to_string(kMaxClouds) + " a scene may hold");
   if (bvh.order.size() != cloud.size())
     throw std::invalid_argument("cloud textures: the tree holds " + std::to_string(bvh.order.size()) +
                                 " points, the cloud " + std::to_string(cloud.size()));
+  // Checked here, before anything is appended, rather than trusted to whoever built the
+  // tree: the shader would render a larger leaf with points silently missing.
+  const auto big =
+      std::find_if(bvh.nodes.begin(), bvh.nodes.end(), [&](const BvhNode& n) { return n.count > max_leaf; });
+  if (big != bvh.nodes.end())
+    throw std::invalid_argument("cloud textures: a leaf of " + std::to_string(big->count) +
+                                " points passes the limit of " + std::to_string(max_leaf) +
+                                " (the shader's leaf loop reads CLOUD_LEAF_SIZE = " + std::to_string(kCloudLeafSize) +
+                                ")");
   // The GPU reads indices as floats and textures of at most width^2 texels (rows up to
   // the width WebGL2 guarantees): the nodes' two texels a node bound the count.
   const std::size_t limit = std::size_t(kCloudTextureWidth) * std::size_t(kCloudTextureWidth);

@@ -37,9 +37,12 @@ struct CloudTexels {
   std::vector<CloudRange> clouds;
 
   // Appends a cloud whose tree was built (or refit) for it; throws std::invalid_argument
-  // when the tree is not the cloud's (another count), for a kMaxClouds + 1st cloud, or
-  // when the arrays would pass what a texture of kCloudTextureWidth^2 texels holds.
-  CloudRange append(const PointCloud&, const CloudBvh&);
+  // when the tree is not the cloud's (another count), for a kMaxClouds + 1st cloud, when
+  // the arrays would pass what a texture of kCloudTextureWidth^2 texels holds, or for a
+  // leaf of more than max_leaf points. The shader reads at most kCloudLeafSize points a
+  // leaf (CLOUD_LEAF_SIZE) and skips the rest; only arrays for the CPU twin alone (tests,
+  // benchmarks of other leaf sizes) may allow more.
+  CloudRange append(const PointCloud&, const CloudBvh&, int max_leaf = kCloudLeafSize);
   void clear();
   int point_count() const { return int(points.size() / 4); }
   int node_count() const { return int(nodes.size() / 8); }

@@ -342,6 +342,18 @@ float hermite_min(float g0, float m0, float g1, float m1, float& value) {
   return u;
 }
 
+// The crossing lies between t (g > 0 there; INFINITY, in no support, is F = 0) and end
+// (g_end <= 0): the bracket the bisection narrows. One helper for a step's and a dip's
+// crossing, as in the GLSL twin.
+void cloud_bracket_crossing(float threshold, float t, float g, float end, float g_end, bool& found, float& a, float& b,
+                            float& ga, float& gb) {
+  found = true;
+  a = t;
+  b = end;
+  ga = g == INFINITY ? threshold : g;
+  gb = g_end;
+}
+
 template <class Q>
 std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::vec3 d, float tmin, float tmax,
                               bool inside) {
@@ -383,11 +395,7 @@ std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::v
     float gn = sample(next, sn);
     const float gv = gn == INFINITY ? c.threshold : gn;
     if (gv <= 0.0f) {
-      found = true;
-      a = t;
-      b = next;
-      ga = g == INFINITY ? c.threshold : g;
-      gb = gv;
+      cloud_bracket_crossing(c.threshold, t, g, next, gv, found, a, b, ga, gb);
     } else if (slope < 0.0f && sn > 0.0f) {
       // A dip between the samples: where the Hermite cubic says it comes within a tenth of
       // the threshold, look at its bottom.
@@ -397,13 +405,7 @@ std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::v
         const float tm = t + u * (next - t);
         float sm;
         const float gm = sample(tm, sm);
-        if (gm <= 0.0f) {
-          found = true;
-          a = t;
-          b = tm;
-          ga = g == INFINITY ? c.threshold : g;
-          gb = gm;
-        }
+        if (gm <= 0.0f) cloud_bracket_crossing(c.threshold, t, g, tm, gm, found, a, b, ga, gb);
       }
     }
     if (found) {

@@ -17,6 +17,7 @@ namespace draught {
 namespace {
 
 namespace fs = std::filesystem;
+using test::input_error_of;
 
 class Files : public test::TempDirTest {
  protected:
@@ -26,14 +27,6 @@ class Files : public test::TempDirTest {
     for (auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
-  }
-  static std::string error_of(const std::function<void()>& f) {
-    try {
-      f();
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
   }
 };
 
@@ -47,11 +40,11 @@ TEST_F(Files, ReadsARegularFile) {
 }
 
 TEST_F(Files, RefusesWhatIsNotARegularFile) {
-  const std::string d = error_of([&] { read_text_file(dir_); });
+  const std::string d = input_error_of([&] { read_text_file(dir_); });
   EXPECT_TRUE(has(d, dir_.string() + ": is a directory, expected a regular file")) << d;
-  const std::string z = error_of([] { read_text_file("/dev/zero"); });
+  const std::string z = input_error_of([] { read_text_file("/dev/zero"); });
   EXPECT_TRUE(has(z, "/dev/zero: is a character device, expected a regular file")) << z;
-  const std::string m = error_of([&] { read_text_file(dir_ / "missing.json"); });
+  const std::string m = input_error_of([&] { read_text_file(dir_ / "missing.json"); });
   EXPECT_TRUE(has(m, "missing.json: cannot open file")) << m;
 }
 
@@ -60,7 +53,7 @@ TEST_F(Files, RefusesAFifoWithoutWaitingForAWriter) {
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   // If the read blocked, the future would not be ready; the test then fails (and the
   // stuck reader is released by opening the FIFO for writing).
-  auto f = std::async(std::launch::async, [&] { return error_of([&] { read_text_file(fifo); }); });
+  auto f = std::async(std::launch::async, [&] { return input_error_of([&] { read_text_file(fifo); }); });
   if (f.wait_for(std::chrono::seconds(5)) != std::future_status::ready) {
     std::ofstream(fifo) << "x";
     FAIL() << "reading a FIFO blocked";
@@ -73,7 +66,7 @@ TEST_F(Files, RefusesFilesOverTheSizeLimit) {
   const fs::path big = dir_ / "big.json";
   { std::ofstream(big) << "{}"; }
   fs::resize_file(big, kMaxTextFileBytes + 1);  // sparse: costs no disk
-  const std::string e = error_of([&] { read_text_file(big); });
+  const std::string e = input_error_of([&] { read_text_file(big); });
   EXPECT_TRUE(has(e, big.string() + ": 16.0 MiB, larger than the limit of 16 MiB")) << e;
   fs::resize_file(big, kMaxTextFileBytes);  // exactly the limit is fine
   EXPECT_EQ(read_text_file(big).size(), kMaxTextFileBytes);
@@ -122,7 +115,8 @@ TEST_F(Files, AtomicWriteFollowsSymbolicLinks) {
   // A loop of links is an error, not a hang.
   fs::create_symlink("loop-b", dir_ / "loop-a");
   fs::create_symlink("loop-a", dir_ / "loop-b");
-  EXPECT_TRUE(has(error_of([&] { write_file_atomic(dir_ / "loop-a", "x"); }), "too many levels of symbolic links"));
+  EXPECT_TRUE(
+      has(input_error_of([&] { write_file_atomic(dir_ / "loop-a", "x"); }), "too many levels of symbolic links"));
 }
 
 TEST_F(Files, FailedWriteLeavesNothingAndTellsTheObserver) {
@@ -132,7 +126,7 @@ TEST_F(Files, FailedWriteLeavesNothingAndTellsTheObserver) {
   set_temporary_observer({[](const fs::path& p, bool) { created.push_back(p.string()); },
                           [](const fs::path& p) { gone.push_back(p.string()); }});
   fs::create_directories(dir_ / "taken.png");  // a folder where the file should go
-  const std::string e = error_of([&] { write_file_atomic(dir_ / "taken.png", "x"); });
+  const std::string e = input_error_of([&] { write_file_atomic(dir_ / "taken.png", "x"); });
   write_file_atomic(dir_ / "ok.png", "y");
   set_temporary_observer({});
   EXPECT_TRUE(has(e, "taken.png: cannot write")) << e;

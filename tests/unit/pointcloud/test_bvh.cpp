@@ -1,7 +1,8 @@
 // The cloud BVH (core/pointcloud/bvh, cloud_texels): every point in exactly one leaf,
 // every box holding its children's boxes and its points' support spheres (after a refit
 // too), on random and degenerate clouds; traversal through the flattened texels equals
-// brute force on thousands of random rays.
+// brute force on thousands of random rays; the texels refuse leaves larger than the
+// shader reads.
 #include "core/pointcloud/bvh.hpp"
 #include "core/pointcloud/cloud_texels.hpp"
 #include "core/pointcloud/field.hpp"
@@ -10,6 +11,8 @@
 
 #include <algorithm>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 namespace draught {
 namespace {
@@ -93,6 +96,30 @@ TEST(PointCloudBvh, RejectsBadArguments) {
   EXPECT_THROW(tx.append(random_cloud(11, 1), bvh), std::invalid_argument);
 }
 
+// The shader's leaf loop reads kCloudLeafSize points: the texels refuse a tree with larger
+// leaves, naming the leaf and the limit, and append nothing.
+TEST(PointCloudBvh, TexelsRefuseLeavesLargerThanTheShaderReads) {
+  const PointCloud c = random_cloud(500, 4);
+  const CloudBvh wide = build_cloud_bvh(c, 2.2f, 2 * kCloudLeafSize);
+  const auto big = std::find_if(wide.nodes.begin(), wide.nodes.end(),
+                                [](const BvhNode& n) { return n.count > kCloudLeafSize; });
+  ASSERT_NE(big, wide.nodes.end());
+  CloudTexels tx;
+  try {
+    tx.append(c, wide);
+    ADD_FAILURE() << "a leaf of " << big->count << " points was taken";
+  } catch (const std::invalid_argument& e) {
+    const std::string limit = std::to_string(kCloudLeafSize);
+    EXPECT_EQ(std::string(e.what()), "cloud textures: a leaf of " + std::to_string(big->count) +
+                                         " points passes the limit of " + limit +
+                                         " (the shader's leaf loop reads CLOUD_LEAF_SIZE = " + limit + ")");
+  }
+  EXPECT_TRUE(tx.clouds.empty() && tx.points.empty() && tx.attrs.empty() && tx.nodes.empty());
+  // The renderer's trees pass; the CPU twin alone may take larger leaves when asked.
+  EXPECT_NO_THROW(tx.append(c, build_cloud_bvh(c, 2.2f)));
+  EXPECT_NO_THROW(tx.append(c, wide, 2 * kCloudLeafSize));
+}
+
 TEST(PointCloudBvh, RefitKeepsInvariantsAndTheRuleRebuilds) {
   const float scale = float(cloud_support_scale(0.5));
   PointCloud c = random_cloud(4000, 3);
@@ -124,7 +151,7 @@ TEST(PointCloudBvh, GpuBytesPerPointWithinBudget) {
   for (int leaf : {2, 4, 8}) {
     const CloudBvh bvh = build_cloud_bvh(c, float(cloud_support_scale(0.5)), leaf);
     CloudTexels tx;
-    tx.append(c, bvh);
+    tx.append(c, bvh, leaf);  // (bytes only: the shader would not take leaves of 8)
     const double per_point = double(tx.gpu_bytes()) / double(c.size());
     std::printf("leaf %d: %zu nodes (%.2f per point), %.1f bytes per point\n", leaf, bvh.nodes.size(),
                 double(bvh.nodes.size()) / double(c.size()), per_point);

@@ -11,6 +11,7 @@
 #include "core/pointcloud/bvh.hpp"
 #include "core/pointcloud/cloud_texels.hpp"
 #include "core/pointcloud/field.hpp"
+#include "../../support/cloud_blob.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,29 +21,19 @@
 namespace draught {
 namespace {
 
-// A blob of n points in a ball of radius 0.03 m, blob radius r, hot in the middle.
-PointCloud blob(std::size_t n, float r, std::uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-  PointCloud c;
-  c.default_radius = r;
-  while (c.size() < n) {
-    const glm::vec3 p(u(rng), u(rng), u(rng));
-    if (glm::dot(p, p) > 1.0f) continue;
-    c.position.push_back(0.03f * p + glm::vec3(0.0f, 0.1f, 0.0f));
-    c.temperature.push_back(1400.0f - 400.0f * glm::length(p));
-    c.color.push_back({0.5f + 0.5f * p.x, 0.5f, 0.5f - 0.4f * p.z});
-  }
-  return c;
-}
+using test::blob;
+
+// Where the tests' blobs lie.
+const glm::vec3 kCentre(0.0f, 0.1f, 0.0f);
 
 struct Prepared {
   CloudTexels tx;
   CloudRange range;
 };
+// Leaves of up to `leaf` points: the CPU twin reads any size (the shader only kCloudLeafSize).
 Prepared prepare(const PointCloud& c, int leaf = kCloudLeafSize) {
   Prepared p;
-  p.range = p.tx.append(c, build_cloud_bvh(c, float(cloud_support_scale(kCloudThreshold)), leaf));
+  p.range = p.tx.append(c, build_cloud_bvh(c, float(cloud_support_scale(kCloudThreshold)), leaf), leaf);
   return p;
 }
 
@@ -69,7 +60,7 @@ TEST(PointCloudField, LonePointIsASphereOfItsBlobRadius) {
 }
 
 TEST(PointCloudField, GradientIsTheFieldsDerivative) {
-  const PointCloud c = blob(300, 0.004f, 4);
+  const PointCloud c = blob(300, 0.004f, kCentre, 4);
   const glm::dvec3 p(0.004, 0.103, -0.002), h(1e-7, 0.0, 0.0);
   const double fd = (cloud_field_reference(c, 0.5, p + h) - cloud_field_reference(c, 0.5, p - h)) / 2e-7;
   EXPECT_NEAR(cloud_gradient_reference(c, 0.5, p).x, fd, 1e-4 * std::abs(fd) + 1e-3);
@@ -91,9 +82,8 @@ Stats compare_rays(const PointCloud& c, int n, bool inside, std::uint32_t seed) 
   Stats s;
   for (int k = 0; k < n; ++k) {
     const glm::vec3 d = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)));
-    const glm::vec3 aim = glm::vec3(0.0f, 0.1f, 0.0f) + 0.036f * glm::vec3(u(rng), u(rng), u(rng));
-    const glm::vec3 o = inside ? glm::vec3(0.0f, 0.1f, 0.0f) + 0.01f * glm::vec3(u(rng), u(rng), u(rng))
-                               : aim - 0.2f * d;
+    const glm::vec3 aim = kCentre + 0.036f * glm::vec3(u(rng), u(rng), u(rng));
+    const glm::vec3 o = inside ? kCentre + 0.01f * glm::vec3(u(rng), u(rng), u(rng)) : aim - 0.2f * d;
     if (inside && cloud_field_reference(c, 0.5, glm::dvec3(o)) < 0.5) continue;
     ++s.rays;
     const auto r = march_cloud_reference(c, 0.5, glm::dvec3(o), glm::dvec3(d), 0.0, 1.0, inside);
@@ -131,24 +121,24 @@ Stats compare_rays(const PointCloud& c, int n, bool inside, std::uint32_t seed) 
 }
 
 TEST(PointCloudField, MarchMatchesReferenceFromOutside) {
-  const Stats s = compare_rays(blob(1500, 0.004f, 1), 3000, false, 17);
+  const Stats s = compare_rays(blob(1500, 0.004f, kCentre, 1), 3000, false, 17);
   EXPECT_GT(s.hits, 1000);
 }
 
 TEST(PointCloudField, MarchMatchesReferenceFromInside) {
-  const Stats s = compare_rays(blob(1500, 0.004f, 2), 500, true, 18);
+  const Stats s = compare_rays(blob(1500, 0.004f, kCentre, 2), 500, true, 18);
   EXPECT_GT(s.hits, 490);  // every inside ray exits (500 rays: about a minute under AddressSanitizer)
 }
 
 TEST(PointCloudField, SparsePointsToo) {
   // Separate blobs and narrow necks: most surface is a lone point's sphere.
-  const Stats s = compare_rays(blob(150, 0.004f, 3), 3000, false, 19);
+  const Stats s = compare_rays(blob(150, 0.004f, kCentre, 3), 3000, false, 19);
   EXPECT_GT(s.hits, 300);
 }
 
 // The same points built with other leaf sizes and in shuffled order: the same hits.
 TEST(PointCloudField, IndependentOfTheTree) {
-  const PointCloud c = blob(1500, 0.004f, 5);
+  const PointCloud c = blob(1500, 0.004f, kCentre, 5);
   PointCloud shuffled = c;
   std::vector<std::size_t> perm(c.size());
   for (std::size_t i = 0; i < perm.size(); ++i) perm[i] = i;
@@ -165,7 +155,7 @@ TEST(PointCloudField, IndependentOfTheTree) {
   double worst = 0;
   for (int k = 0; k < 2000; ++k) {
     const glm::vec3 d = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)));
-    const glm::vec3 o = glm::vec3(0.0f, 0.1f, 0.0f) + 0.03f * glm::vec3(u(rng), u(rng), u(rng)) - 0.2f * d;
+    const glm::vec3 o = kCentre + 0.03f * glm::vec3(u(rng), u(rng), u(rng)) - 0.2f * d;
     const auto a = march_cloud(base.tx, cloud_ref(base.range), o, d, 0.0f, 1.0f, false);
     for (const Prepared& p : other) {
       const auto b = march_cloud(p.tx, cloud_ref(p.range), o, d, 0.0f, 1.0f, false);
