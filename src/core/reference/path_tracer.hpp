@@ -16,7 +16,15 @@
 // - the screen (core/environment/screen): a card is an emitter with its frame's texel
 //   radiance, found by the paths alone (not light-sampled, so it lights the backdrop only
 //   through paths that happen to meet it); as the background it is what a path that
-//   leaves the scene sees.
+//   leaves the scene sees;
+// - droplets (core/droplets) and point clouds (core/pointcloud) are found by the
+//   project's own marches (march_droplets; march_cloud, the picture's float march through
+//   the cloud's tree); in the air the nearest of every vessel, droplet and cloud surface
+//   is taken, so a path goes from a droplet into a glass and back. Their surfaces are
+//   smooth dielectrics (roughness not simulated), their bodies absorb by Beer-Lambert, a
+//   cloud point's colour tints the light crossing there, and molten glass glows along
+//   each chord by Kirchhoff's law with the picture's model (cloud_chord; the glow is
+//   found by the paths alone).
 // Left out: the drink's rising bubbles and the lacing on the wall (the picture draws both).
 // docs/REFERENCE.md says how to use it and what it is for.
 #pragma once

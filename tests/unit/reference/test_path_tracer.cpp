@@ -5,6 +5,7 @@
 
 #include "core/environment/studio.hpp"
 #include "core/foam/head_volume.hpp"
+#include "core/pointcloud/blackbody.hpp"
 
 #include "test_common.hpp"
 
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace draught {
 namespace {
@@ -33,13 +35,14 @@ Params furnace_params() {
   return p;
 }
 
-RadianceImage render(const Params& p, int size, int spp) {
+RadianceImage render(const FrameState& f, int size, int spp) {
   ReferenceSettings s;
   s.samples = spp;
   s.threads = 2;
   s.max_surfaces = 1024;  // a path may be piped along a wall by total internal reflection for hundreds of bounces (one of 1600 here takes 300); the furnace counts every one
-  return render_reference(make_frame(p), size, size, s);
+  return render_reference(f, size, size, s);
 }
+RadianceImage render(const Params& p, int size, int spp) { return render(make_frame(p), size, spp); }
 
 // The largest relative difference of any pixel channel from the environment.
 double worst_error(const RadianceImage& img) {
@@ -233,6 +236,143 @@ TEST(ReferencePathTracer, ALightSeenDirectlyHasItsRadiance) {
   p.camera.target = {0.0f, 0.5f, 1.0f};
   p.backlight.direction = {0, 0, -1};
   for (const glm::dvec3& c : render(p, 4, 4).pixels) EXPECT_NEAR(c.g, 0.1, 1e-6);  // its back: the studio
+}
+
+// ---- droplets and point clouds (core/droplets, core/pointcloud) among the vessels ----
+
+// The furnace's empty pint seen from 0.3 m, with what a test puts 7 cm in front of it
+// (centred on (0, 0.1, 0.07)): paths go from the body into the glass and back.
+FrameState furnace_before_the_glass() {
+  Params p = furnace_params();
+  p.liquid.fill = 0;
+  p.camera.auto_frame = false;
+  p.camera.eye = {0.0f, 0.1f, 0.3f};
+  p.camera.target = {0.0f, 0.1f, 0.0f};
+  p.camera.vfov = 12;
+  return make_frame(p);
+}
+
+// Three droplets of water blended into one, their surface noisy.
+DropletsFrame water(glm::vec3 absorption) {
+  DropletsFrame d;
+  d.params.ior = 1.33f;
+  d.params.absorption = absorption;
+  d.field.spheres = {{{-0.012, 0.1, 0.07}, 0.008}, {{0.0, 0.103, 0.07}, 0.01}, {{0.013, 0.097, 0.072}, 0.007}};
+  d.field.blend = 0.01;
+  d.field.noise_amplitude = 0.0008;
+  d.field.noise_frequency = 90;
+  return d;
+}
+
+// A cloud of these points (blob radius `radius`), cold, clear and colourless.
+CloudFrame clear_cloud(std::vector<glm::vec3> at, float radius) {
+  auto points = std::make_shared<PointCloud>();
+  points->position = std::move(at);
+  points->default_radius = radius;
+  CloudFrame c;
+  c.points = points;
+  c.version = 1;
+  c.ior = 1.5f;
+  return c;
+}
+
+TEST(ReferenceFurnace, ANonAbsorbingDropletFieldIsInvisible) {
+  FrameState f = furnace_before_the_glass();
+  f.droplets.push_back(water(glm::vec3(0)));
+  EXPECT_LT(worst_error(render(f, 16, 4)), 0.02);
+  f.droplets[0].params.absorption = glm::vec3(50);  // the test can fail: the droplets are in view
+  EXPECT_GT(worst_error(render(f, 16, 2)), 0.3);
+}
+
+TEST(ReferenceFurnace, AClearColdPointCloudIsInvisible) {
+  std::vector<glm::vec3> ball;  // points 4 mm apart in a ball of 1.4 cm, blended into one blob
+  for (int i = -3; i <= 3; ++i)
+    for (int j = -3; j <= 3; ++j)
+      for (int k = -3; k <= 3; ++k)
+        if (i * i + j * j + k * k <= 12) ball.push_back(glm::vec3(0.0f, 0.1f, 0.07f) + 0.004f * glm::vec3(i, j, k));
+  FrameState f = furnace_before_the_glass();
+  f.clouds.push_back(clear_cloud(ball, 0.003f));
+  EXPECT_LT(worst_error(render(f, 16, 4)), 0.02);
+  f.clouds[0].absorption = glm::vec3(50);  // the test can fail: the blob is in view
+  EXPECT_GT(worst_error(render(f, 16, 2)), 0.3);
+}
+
+// A sphere of radius 1 cm at (0, 0.1, 0), nothing else, seen head-on from 0.5 m over
+// 0.05 degrees (off the axis by at most 0.22 mm: the chord is 2 cm within 0.03 %).
+FrameState head_on(glm::vec3 env) {
+  Params p = furnace_params();
+  p.env.color = env;
+  p.camera.auto_frame = false;
+  p.camera.eye = {0.0f, 0.1f, 0.5f};
+  p.camera.target = {0.0f, 0.1f, 0.0f};
+  p.camera.vfov = 0.05f;
+  FrameState f = make_frame(p);
+  f.vessels.clear();
+  return f;
+}
+constexpr double kChord = 0.02;
+
+// The mean pixel over the environment, and what a sphere of index n whose body transmits
+// T = exp(-absorption x chord) along its diameter shows head-on in a uniform environment:
+// T, adjusted by the F (2 % for water, 4 % for glass) reflected at each face: F of the
+// environment, and what leaves after 0, 1, 2 ... internal reflections (by either face: the
+// environment is the same all round), (1 - F)^2 T / (1 - F T).
+glm::dvec3 seen_head_on(const FrameState& f) {
+  glm::dvec3 mean(0.0);
+  const RadianceImage img = render(f, 2, 256);
+  for (const glm::dvec3& c : img.pixels) mean += c / (double(img.pixels.size()) * glm::dvec3(kEnv));
+  return mean;
+}
+double through_sphere(double n, double T) {
+  const double F = std::pow((n - 1) / (n + 1), 2);
+  return F + (1 - F) * (1 - F) * T / (1 - F * T);
+}
+
+TEST(ReferencePathTracer, AnAbsorbingDropletDimsWhatIsBehindItByBeerLambert) {
+  FrameState f = head_on(kEnv);
+  const glm::vec3 absorption{20, 40, 80};  // 1/m: 0.4, 0.8 and 1.6 optical depths across
+  DropletsFrame d;
+  d.params.ior = 1.33f;
+  d.params.absorption = absorption;
+  d.field.spheres = {{{0.0, 0.1, 0.0}, 0.01}};
+  d.field.noise_amplitude = 0;
+  f.droplets.push_back(d);
+  const glm::dvec3 seen = seen_head_on(f);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(seen[c], through_sphere(1.33, std::exp(-absorption[c] * kChord)), 0.01) << "channel " << c;
+}
+
+TEST(ReferencePathTracer, AnAbsorbingBlobDimsWhatIsBehindItByBeerLambert) {
+  FrameState f = head_on(kEnv);
+  CloudFrame c = clear_cloud({{0.0f, 0.1f, 0.0f}}, 0.01f);  // a lone point: a sphere of its blob radius
+  c.absorption = {20, 40, 80};
+  f.clouds.push_back(c);
+  const glm::dvec3 seen = seen_head_on(f);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(seen[i], through_sphere(1.5, std::exp(-c.absorption[i] * kChord)), 0.01) << "channel " << i;
+}
+
+TEST(ReferencePathTracer, AThickHotBlobGlowsAsABlackbodySeenThroughItsSurface) {
+  // In the dark, glass at 1100 C opaque to the visible (its extinction 1000 / m: 20 optical
+  // depths across) shows the blackbody's radiance times the surface's transmittance head-on,
+  // 1 - F (Kirchhoff: an opaque dielectric's emissivity), at the points' temperature.
+  FrameState f = head_on(glm::vec3(0));
+  const float kelvin = 1373;  // (exact in the half floats of the points' attributes)
+  auto hot = std::make_shared<PointCloud>(*clear_cloud({{0.0f, 0.1f, 0.0f}}, 0.01f).points);
+  hot->temperature = {kelvin};
+  CloudFrame c = clear_cloud({}, 0);
+  c.points = hot;
+  c.temperature = 800;  // the cloud's, for points without their own: not this one
+  c.glow = 1;
+  c.glow_depth = 0.001f;
+  f.clouds.push_back(c);
+  const RadianceImage img = render(f, 2, 256);  // a path is reflected (into the dark) or sees the glow
+  glm::dvec3 mean(0.0);
+  for (const glm::dvec3& px : img.pixels) mean += px / double(img.pixels.size());
+  const double F = std::pow(0.5 / 2.5, 2);
+  const glm::dvec3 expected = (1 - F) * kGlowPerNit * blackbody_linear_rgb(kelvin);
+  ASSERT_GT(expected.g, 0.3);  // a bright orange
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(mean[i], expected[i], 0.02 * expected.r) << "channel " << i;
 }
 
 }  // namespace
