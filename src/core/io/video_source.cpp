@@ -472,7 +472,7 @@ Image decode_png_frame(std::string_view bytes, const std::string& file) {
     return decode_png(bytes, file, kMaxVideoSide);
   } catch (const InputError& e) {
     std::string why = e.what();
-    for (const std::string prefix : {file + ": ", std::string("a damaged PNG: ")})
+    for (const std::string& prefix : {file + ": ", std::string("a damaged PNG: ")})
       if (why.rfind(prefix, 0) == 0) why.erase(0, prefix.size());
     throw InputError(file + ": an undecodable PNG (" + why + ")");
   }

@@ -5,6 +5,7 @@
 #include "core/environment/lights.hpp"
 #include "core/environment/studio.hpp"
 #include "core/foam/head_volume.hpp"
+#include "core/math/basis.hpp"
 #include "core/math/random.hpp"
 #include "core/pointcloud/blackbody.hpp"
 #include "core/pointcloud/cloud_scene.hpp"
@@ -41,20 +42,6 @@ constexpr double kFrostBackscatter = 0.2;
 
 double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 double mean3(const glm::dvec3& v) { return (v.x + v.y + v.z) / 3.0; }
-
-// An orthonormal basis around unit n (Duff et al. 2017).
-void basis(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
-  const double s = std::copysign(1.0, n.z), a = -1.0 / (s + n.z), c = n.x * n.y * a;
-  t = {1 + s * n.x * n.x * a, s * c, -s * n.x};
-  b = {c, s + n.y * n.y * a, -n.y};
-}
-
-glm::dvec3 around(const glm::dvec3& n, double cos_t, double phi) {
-  glm::dvec3 t, b;
-  basis(n, t, b);
-  const double sin_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t));
-  return glm::normalize(sin_t * std::cos(phi) * t + sin_t * std::sin(phi) * b + cos_t * n);
-}
 
 // Henyey-Greenstein: phase value for the cosine between the incoming travel direction
 // and the scattered one, and a sample of it.
