@@ -246,12 +246,14 @@ void Condensation::merge(bool everything) {
   std::vector<char> look(beads.size(), 0);
   for (size_t i = 0; i < beads.size(); ++i) look[i] = everything || beads[i].sliding || i >= merged_upto_;
   const CondensationBand& band = state_.band;
-  for (int pass = 0; pass < 8; ++pass) {
+  for (int pass = 0; pass < 8 && beads.size() > 1; ++pass) {
     // A grid of cells as wide as the largest bead: touching beads are in neighbouring cells.
-    double largest = 1e-5;
+    // At most 512 cells a side (wider cells are as right, only slower): with no bead of
+    // any size yet, cells of a bead's width would be tens of millions of cells a step.
+    double largest = 0;
     for (const Bead& b : beads) largest = std::max(largest, b.radius);
-    const double cell = 2 * largest;
     const double widest = std::max({wall_radius(band.y0), wall_radius(0.5 * (band.y0 + band.y1)), wall_radius(band.y1)});
+    const double cell = std::max({2 * largest, 2 * kPi * widest / 512, (band.y1 - band.y0) / 512});
     const int across = std::max(1, int(2 * kPi * widest / cell)), rows = std::max(1, int((band.y1 - band.y0 + 2 * cell) / cell) + 1);
     auto row_of = [&](double y) { return std::clamp(int((y - band.y0 + cell) / cell), 0, rows - 1); };
     auto col_of = [&](double a) { return std::clamp(int((wrap(a) + kPi) / (2 * kPi) * across), 0, across - 1); };

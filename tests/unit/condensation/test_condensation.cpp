@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -170,6 +171,24 @@ TEST(Condensation, AnEmptyGlassStaysDry) {
   EXPECT_TRUE(c.state().beads.empty());
   c.advance_to(1.0);
   EXPECT_TRUE(c.state().beads.empty());
+}
+
+// A fog without beads (count 0, a slider's end): it ages like any other (the merge's grid
+// was once sized to a bead of no size, tens of millions of cells a step, and a glass took a
+// minute to age), and the one bead placed on it later stays as it is.
+TEST(Condensation, AFogWithoutBeadsAgesAndKeepsItsFog) {
+  CondensationParams p = cold();
+  p.count = 0;
+  Condensation c(p, pint(), 0.12);
+  c.advance_to(5.0);
+  EXPECT_TRUE(c.state().beads.empty());
+  float most = 0;
+  for (float f : c.state().fog) most = std::max(most, f);
+  EXPECT_GT(most, 0.2f);
+  c.place_bead({0.5, 0.07, 0.0008, false});
+  c.advance_to(6.0);
+  ASSERT_EQ(c.state().beads.size(), 1u);
+  EXPECT_GT(c.state().beads[0].radius, 0.0008);  // it grew
 }
 
 TEST(CondensationGrid, FindsEveryBeadAndDrawsItAsACap) {
