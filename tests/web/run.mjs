@@ -886,7 +886,7 @@ test('a lost WebGL context is restored: programs and textures rebuilt, drawing a
     await page.waitForFunction(() => window.draught.status().tilt < 0.5, null, { timeout: 10000 });  // upright again
 
     // And it keeps working: an edit changes the picture.
-    await editStillWorks(page, 'env.sky_horizon', '0.5,0,0');  // the whole backdrop, not one glass of three
+    await editStillWorks(page, 'env.sweep_color', '0.8,0.2,0.2');  // the whole backdrop, not one glass of three
     assert.deepEqual(pageErrors(page), []);
   } finally {
     await page.context().close();
