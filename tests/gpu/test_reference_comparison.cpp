@@ -180,7 +180,8 @@ TEST_P(ReferenceComparison, RegionsAgreeWithinTheirBounds) {
 INSTANTIATE_TEST_SUITE_P(
     Scenes, ReferenceComparison,
     // Today (llvmpipe, 256 paths per pixel), mean / 90th percentile, 64x64, in the packshot
-    // studio: lager-pint: glass 0.9 / 2.4, liquid 2.0 / 3.7, head 4.0 / 8.5 (16 pixels).
+    // studio: lager-pint: glass 0.9 / 2.4, liquid 1.4 / 1.9 (2.0 / 3.7 before sub-pixel
+    // rising bubbles faded instead of showing as dark dots), head 4.0 / 8.5 (16 pixels).
     // The glass and the liquid came from 1.8 / 4.4 and 3.2 / 4.8 when the sweep took its
     // own bounce (the surround's harmonics, core surround_irradiance: the paper lit by the
     // rig and by the sky and paper around it); the heads take the same surround, which
@@ -196,7 +197,7 @@ INSTANTIATE_TEST_SUITE_P(
     // reference's glass sees the lamps through paths no light sampling reaches (noisy at
     // 256 paths). docs/ENVIRONMENTS.md. Bounds: today's figures and about 10 %.
     ::testing::Values(
-        ComparisonCase{"lager-pint", SceneRequest{"lager", "pint"}, 64, 256, {1.0, 2.7}, {2.2, 4.1}, {4.4, 9.4}},
+        ComparisonCase{"lager-pint", SceneRequest{"lager", "pint"}, 64, 256, {1.0, 2.7}, {1.5, 2.1}, {4.4, 9.4}},
         ComparisonCase{"lager-pint-optics",
                        SceneRequest{"checker-studio", "pint", {"env.floor=false", "bubbles.carbonation=0"}},
                        64, 256, {1, 1.5}, {1, 1.5}, {0, 0}},
