@@ -11,6 +11,7 @@
 #include "core/scene/camera.hpp"
 #include "core/scene/frame.hpp"
 
+#include <cmath>
 #include <vector>
 
 namespace draught::test {
@@ -73,6 +74,13 @@ inline std::vector<PathEvent> reference_path(const FrameState& f, const SceneGeo
     object = turn.object;
   }
   return events;
+}
+
+// Whether the GPU's PathEvent debug pixel (t, material, object, medium) is event c's
+// surface, object and medium.
+inline bool same_event(const float* px, const PathEvent& c) {
+  return int(std::lround(px[1])) == int(c.m) && int(std::lround(px[2])) == c.object &&
+         int(std::lround(px[3])) == int(c.medium);
 }
 
 // reference_path of every pixel's centre ray of a w x h picture, rows top-down.

@@ -98,9 +98,7 @@ TEST(Flight, RefractedPathsThroughTwoGlassesMatchTheCpuTrace) {
         const PathEvent& c = cpu[i][size_t(e)];
         const float* px = gpu.px(x, y);
         ++compared;
-        const bool same = int(std::lround(px[1])) == int(c.m) && int(std::lround(px[2])) == c.object &&
-                          int(std::lround(px[3])) == int(c.medium);
-        if (!same) {
+        if (!same_event(px, c)) {
           ++material_bad;
           alive[i] = false;
           continue;

@@ -48,9 +48,7 @@ TEST(Flight, PathsFromTheShippedCameraMatchTheCpuTrace) {
         if (!alive[i] || int(cpu[i].size()) <= e || cpu[i][0].object < 0) continue;
         const PathEvent& c = cpu[i][size_t(e)];
         const float* px = gpu.px(x, y);
-        const bool same = int(std::lround(px[1])) == int(c.m) && int(std::lround(px[2])) == c.object &&
-                          int(std::lround(px[3])) == int(c.medium);
-        if (!same) {
+        if (!same_event(px, c)) {
           ++differ;
           alive[i] = false;
           continue;
