@@ -3,6 +3,7 @@
 // loop, and at 10k against 1M points filling the same blob (equal screen coverage).
 // docs/POINT_CLOUDS.md quotes the medians.
 #include "core/pointcloud/bvh.hpp"
+#include "core/pointcloud/cloud_scene.hpp"
 #include "core/pointcloud/cloud_texels.hpp"
 #include "core/pointcloud/field.hpp"
 
@@ -80,6 +81,48 @@ BENCHMARK(BM_MarchTree)->Args({10000, 2})->Args({10000, 4})->Args({10000, 8})->A
 
 void BM_MarchAllPoints(benchmark::State& st) { march_rays<false>(st, std::size_t(st.range(0)), 4); }
 BENCHMARK(BM_MarchAllPoints)->Arg(10000)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// A frame's clouds brought up to date when a still cloud of n points sits before a stream
+// of 400 points that moves every frame (a pour beside molten glass): CloudScene writes the
+// stream's texels only; the whole flatten below is what it did before (every cloud again).
+std::vector<CloudFrame> still_and_stream(const std::shared_ptr<const PointCloud>& still, std::uint64_t frame) {
+  PointCloud s;
+  for (int i = 0; i < 400; ++i) s.position.push_back({0.05f, 0.001f * float(i) - 0.001f * float(frame % 7), 0.0f});
+  std::vector<CloudFrame> f(2);
+  f[0].points = still;
+  f[0].version = 1;
+  f[1].points = std::make_shared<const PointCloud>(std::move(s));
+  f[1].version = frame + 2;
+  return f;
+}
+
+void BM_SceneUpdateBesideAStream(benchmark::State& st) {
+  const auto still = std::make_shared<const PointCloud>(ball(std::size_t(st.range(0))));
+  CloudScene scene;
+  std::uint64_t frame = 0;
+  scene.update(still_and_stream(still, frame));
+  for (auto _ : st) {
+    const auto f = still_and_stream(still, ++frame);
+    benchmark::DoNotOptimize(scene.update(f));
+  }
+}
+BENCHMARK(BM_SceneUpdateBesideAStream)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+void BM_FlattenEveryCloudBesideAStream(benchmark::State& st) {
+  const auto still = std::make_shared<const PointCloud>(ball(std::size_t(st.range(0))));
+  const CloudBvh still_tree = build_cloud_bvh(*still, kScale);
+  CloudTexels tx;
+  std::uint64_t frame = 0;
+  for (auto _ : st) {
+    const auto f = still_and_stream(still, ++frame);
+    const CloudBvh stream_tree = build_cloud_bvh(*f[1].points, kScale);
+    tx.clear();
+    tx.append(*still, still_tree);
+    tx.append(*f[1].points, stream_tree);
+    benchmark::DoNotOptimize(tx.points.data());
+  }
+}
+BENCHMARK(BM_FlattenEveryCloudBesideAStream)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -15,9 +15,10 @@ class CloudTextures {
   CloudTextures(const CloudTextures&) = delete;
   CloudTextures& operator=(const CloudTextures&) = delete;
 
-  // Uploads the arrays: storage is made again only when a texture needs more rows than it
-  // has (an animated cloud of the same size refits in place, a sub-image upload).
-  void upload(const CloudTexels&);
+  // Uploads the rows holding `span` of the arrays (all of them when storage is made again,
+  // which happens only when a texture needs more rows than it has).
+  void upload(const CloudTexels&, const CloudTexelSpan& span);
+  void upload(const CloudTexels& tx) { upload(tx, CloudTexelSpan::all(tx)); }
   void bind() const;
   int uploads() const { return uploads_; }  // how many uploads were made (tests)
 

@@ -152,7 +152,7 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   if (matcap) matcap_->bind();
   // The point clouds: trees kept, refit or rebuilt as their points change (core), the
   // textures uploaded only then.
-  if (cloud_scene_.update(f.clouds)) clouds_->upload(cloud_scene_.texels());
+  if (cloud_scene_.update(f.clouds)) clouds_->upload(cloud_scene_.texels(), cloud_scene_.changed());
   const bool clouds = !f.clouds.empty() && !matcap;
   if (clouds) clouds_->bind();
   contract::FrameBlock block = pack_frame_block(f, width, height, debug, event);

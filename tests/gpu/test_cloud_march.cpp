@@ -151,5 +151,50 @@ TEST(CloudMarch, GlslTwinMatchesCpp) {
   }
 }
 
+
+// A cloud moved in place and one appended after an upload: the textures then updated by the
+// changed span only draw both clouds exactly as textures uploaded whole from the same arrays.
+TEST(CloudMarch, ASpanUploadDrawsAsAWholeOne) {
+  Gpu& g = gpu_instance();
+  (void)g;
+  const float scale = float(cloud_support_scale(kCloudThreshold));
+  PointCloud first = blob(300, 0.003f, {0.0f, 0.1f, 0.0f}, 1);
+  const PointCloud second = blob(1200, 0.004f, {0.01f, 0.1f, 0.0f}, 2), third = blob(500, 0.003f, {-0.01f, 0.11f, 0.0f}, 3);
+  CloudTexels tx;
+  tx.append(first, build_cloud_bvh(first, scale));
+  tx.append(second, build_cloud_bvh(second, scale));
+  gpu::CloudTextures updated;
+  updated.upload(tx);
+
+  for (glm::vec3& p : first.position) p += glm::vec3(0.004f, -0.002f, 0.001f);
+  CloudBvh moved = build_cloud_bvh(first, scale);
+  const CloudRange r0 = tx.rewrite(0, first, moved);
+  CloudTexelSpan span{std::size_t(r0.first_point), std::size_t(r0.first_point + r0.point_count),
+                      2 * std::size_t(r0.first_node), 2 * std::size_t(r0.first_node + r0.node_count)};
+  const CloudTexelSpan before = CloudTexelSpan::all(tx);
+  tx.append(third, build_cloud_bvh(third, scale));
+  span |= {before.points_end, std::size_t(tx.point_count()), before.nodes_end, 2 * std::size_t(tx.node_count())};
+  updated.upload(tx, span);
+  gpu::CloudTextures whole;
+  whole.upload(tx);
+
+  gpu::ShaderSource vert = gpu::assemble_shader("passes/fullscreen.vert.glsl");
+  gpu::ShaderSource frag = gpu::assemble_shader("lib/pointcloud/march.glsl");
+  frag.text = "#version 300 es\n" + frag.text + kProbeMain;
+  gpu::Program prog(vert, frag);
+  const Camera cam{{0.0f, 0.12f, 0.15f}, {0.0f, -0.02f / 0.15f, -1.0f}, {0.3f, 0.0f, 0.0f}, {0.0f, 0.225f, 0.0f}};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const CloudRef ref = cloud_ref(tx.clouds[k]);
+    updated.bind();
+    const std::vector<float> a = draw(prog, cam, ref, 0);
+    whole.bind();
+    const std::vector<float> b = draw(prog, cam, ref, 0);
+    int hits = 0;
+    for (std::size_t i = 0; i < a.size(); i += 4) hits += a[i] != -1.0f;
+    EXPECT_GT(hits, kW * kH / 20) << "cloud " << k;
+    EXPECT_EQ(a, b) << "cloud " << k;
+  }
+}
+
 }  // namespace
 }  // namespace draught::test

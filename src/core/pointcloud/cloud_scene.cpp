@@ -8,8 +8,13 @@ namespace draught {
 
 bool CloudScene::update(const std::vector<CloudFrame>& clouds) {
   built_ = refit_ = 0;
+  changed_ = {};
   const std::size_t n = std::min(clouds.size(), std::size_t(kMaxClouds));
+  // Clouds from `reflatten` on are appended again; a changed cloud before it whose counts
+  // held is written in place, so a static million points beside a moving stream stay put.
+  std::size_t reflatten = std::min(n, entries_.size());
   bool changed = n != entries_.size();
+  std::vector<std::size_t> in_place;
   entries_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const CloudFrame& c = clouds[i];
@@ -31,10 +36,23 @@ bool CloudScene::update(const std::vector<CloudFrame>& clouds) {
     e.points = c.points ? c.points : std::make_shared<const PointCloud>();
     e.version = c.version;
     e.threshold = c.threshold;
+    if (i < reflatten && std::size_t(texels_.clouds[i].point_count) == points.size() &&
+        std::size_t(texels_.clouds[i].node_count) == e.bvh.nodes.size())
+      in_place.push_back(i);
+    else
+      reflatten = std::min(reflatten, i);
   }
   if (!changed) return false;
-  texels_.clear();
-  for (const Entry& e : entries_) texels_.append(*e.points, e.bvh);
+  for (std::size_t k : in_place) {
+    if (k >= reflatten) break;
+    const CloudRange& r = texels_.rewrite(k, *entries_[k].points, entries_[k].bvh);
+    changed_ |= {std::size_t(r.first_point), std::size_t(r.first_point + r.point_count), 2 * std::size_t(r.first_node),
+                 2 * std::size_t(r.first_node + r.node_count)};
+  }
+  texels_.truncate(reflatten);
+  const CloudTexelSpan kept = CloudTexelSpan::all(texels_);
+  for (std::size_t i = reflatten; i < n; ++i) texels_.append(*entries_[i].points, entries_[i].bvh);
+  changed_ |= {kept.points_end, std::size_t(texels_.point_count()), kept.nodes_end, 2 * std::size_t(texels_.node_count())};
   return true;
 }
 

@@ -43,11 +43,30 @@ struct CloudTexels {
   // leaf (CLOUD_LEAF_SIZE) and skips the rest; only arrays for the CPU twin alone (tests,
   // benchmarks of other leaf sizes) may allow more.
   CloudRange append(const PointCloud&, const CloudBvh&, int max_leaf = kCloudLeafSize);
+  // Writes cloud k again in place (its points moved, its tree refit or rebuilt to the same
+  // number of nodes): the arrays keep their size and the other clouds their texels.
+  // Throws std::invalid_argument, changing nothing, when the counts are not cloud k's.
+  CloudRange rewrite(std::size_t k, const PointCloud&, const CloudBvh&, int max_leaf = kCloudLeafSize);
+  // Keeps the first `count` clouds and their texels.
+  void truncate(std::size_t count);
   void clear();
   int point_count() const { return int(points.size() / 4); }
   int node_count() const { return int(nodes.size() / 8); }
   // Bytes the three textures take on the GPU, rows padded to kCloudTextureWidth.
   std::size_t gpu_bytes() const;
+};
+
+// The texels [first, end) of each array that differ from an earlier state (node texels:
+// two a node), so that an upload can leave the rest where it is.
+struct CloudTexelSpan {
+  std::size_t points_first = 0, points_end = 0;
+  std::size_t nodes_first = 0, nodes_end = 0;
+  static CloudTexelSpan all(const CloudTexels& t) {
+    return {0, std::size_t(t.point_count()), 0, 2 * std::size_t(t.node_count())};
+  }
+  bool empty() const { return points_first >= points_end && nodes_first >= nodes_end; }
+  // The smallest span holding both.
+  CloudTexelSpan& operator|=(const CloudTexelSpan&);
 };
 
 // Rows of a texture of `texels` texels, kCloudTextureWidth per row (at least 1).

@@ -56,7 +56,9 @@ int check_tree(const CloudBvh& bvh, const PointCloud& c) {
   }
   for (std::size_t i = 0; i < c.size(); ++i) EXPECT_EQ(seen[i], 1) << "point " << i;
   EXPECT_LE(bvh.depth, kCloudMaxDepth);
-  if (!c.position.empty()) EXPECT_EQ(bvh.nodes.size(), std::size_t(2 * leaves - 1));
+  if (!c.position.empty()) {
+    EXPECT_EQ(bvh.nodes.size(), std::size_t(2 * leaves - 1));
+  }
   return leaves;
 }
 
@@ -80,7 +82,9 @@ TEST(PointCloudBvh, InvariantsOnDegenerateClouds) {
   for (const PointCloud* c : {&same, &line, &one, &two, &none}) {
     const CloudBvh bvh = build_cloud_bvh(*c, scale);
     check_tree(bvh, *c);
-    if (c == &none) EXPECT_TRUE(bvh.nodes.empty());
+    if (c == &none) {
+      EXPECT_TRUE(bvh.nodes.empty());
+    }
   }
   // A thousand equal codes split by count: the tree stays within its depth.
   EXPECT_LE(build_cloud_bvh(same, scale, 1).depth, kCloudMaxDepth);
@@ -155,7 +159,9 @@ TEST(PointCloudBvh, GpuBytesPerPointWithinBudget) {
     const double per_point = double(tx.gpu_bytes()) / double(c.size());
     std::printf("leaf %d: %zu nodes (%.2f per point), %.1f bytes per point\n", leaf, bvh.nodes.size(),
                 double(bvh.nodes.size()) / double(c.size()), per_point);
-    if (leaf >= kCloudLeafSize) EXPECT_LE(per_point, 64.0);
+    if (leaf >= kCloudLeafSize) {
+      EXPECT_LE(per_point, 64.0);
+    }
   }
 }
 

@@ -163,6 +163,96 @@ TEST(PointCloudScene, TreesAreKeptWhileThePointsHoldStillAndRefitWhenTheyMove) {
   EXPECT_TRUE(scene.ranges().empty());
 }
 
+// The arrays flattened afresh from these clouds and the scene's trees of them (what every
+// update, in place or not, must equal).
+CloudTexels flattened_afresh(const CloudScene& scene, const std::vector<CloudFrame>& clouds) {
+  CloudTexels tx;
+  for (std::size_t i = 0; i < clouds.size(); ++i) tx.append(*clouds[i].points, scene.tree(i));
+  return tx;
+}
+
+void expect_same_texels(const CloudTexels& a, const CloudTexels& b) {
+  EXPECT_EQ(a.points, b.points);
+  EXPECT_EQ(a.attrs, b.attrs);
+  EXPECT_EQ(a.nodes, b.nodes);
+  ASSERT_EQ(a.clouds.size(), b.clouds.size());
+  for (std::size_t i = 0; i < a.clouds.size(); ++i) {
+    EXPECT_EQ(a.clouds[i].first_point, b.clouds[i].first_point);
+    EXPECT_EQ(a.clouds[i].first_node, b.clouds[i].first_node);
+    EXPECT_EQ(a.clouds[i].root, b.clouds[i].root);
+    EXPECT_EQ(a.clouds[i].lo, b.clouds[i].lo);
+    EXPECT_EQ(a.clouds[i].hi, b.clouds[i].hi);
+  }
+}
+
+TEST(PointCloudScene, OnlyTheTexelsOfCloudsThatChangedAreWrittenAgain) {
+  // A gob moving in front of its still blowpipe, then a stream after them that grows.
+  CloudSource gob(small_gob(), {0.0f, 0.2f, 0.0f}, 0.0f);
+  auto stream = [](int n, std::uint64_t version) {
+    PointCloud p;
+    for (int i = 0; i < n; ++i) p.position.push_back({0.3f, 0.01f * float(i), 0.0f});
+    CloudFrame f;
+    f.points = std::make_shared<const PointCloud>(std::move(p));
+    f.version = version;
+    return f;
+  };
+  CloudScene scene;
+  std::vector<CloudFrame> frames = gob.frames();
+  frames.push_back(stream(40, 1));
+  ASSERT_TRUE(scene.update(frames));
+  const CloudTexels first = scene.texels();
+  EXPECT_EQ(scene.changed().points_first, 0u);
+  EXPECT_EQ(scene.changed().points_end, std::size_t(first.point_count()));
+
+  // The gob moves (the same count: its tree refit): its texels only, in place.
+  gob.advance_to(0.05);
+  frames = gob.frames();
+  frames.push_back(stream(40, 1));
+  ASSERT_TRUE(scene.update(frames));
+  const CloudRange& g = scene.ranges()[0];
+  EXPECT_EQ(scene.changed().points_first, std::size_t(g.first_point));
+  EXPECT_EQ(scene.changed().points_end, std::size_t(g.first_point + g.point_count));
+  EXPECT_EQ(scene.changed().nodes_first, 2 * std::size_t(g.first_node));
+  EXPECT_EQ(scene.changed().nodes_end, 2 * std::size_t(g.first_node + g.node_count));
+  EXPECT_NE(scene.texels().points, first.points);
+  expect_same_texels(scene.texels(), flattened_afresh(scene, frames));
+
+  // The stream grows: from its first texel on, the gob and the pipe untouched.
+  frames.back() = stream(55, 2);
+  ASSERT_TRUE(scene.update(frames));
+  const CloudRange& s = scene.ranges()[2];
+  EXPECT_EQ(scene.changed().points_first, std::size_t(s.first_point));
+  EXPECT_EQ(scene.changed().points_end, std::size_t(s.first_point + 55));
+  EXPECT_EQ(scene.changed().nodes_first, 2 * std::size_t(s.first_node));
+  expect_same_texels(scene.texels(), flattened_afresh(scene, frames));
+
+  // Gone again: the ranges shrink, nothing to write.
+  frames.pop_back();
+  ASSERT_TRUE(scene.update(frames));
+  EXPECT_TRUE(scene.changed().empty());
+  expect_same_texels(scene.texels(), flattened_afresh(scene, frames));
+  EXPECT_FALSE(scene.update(frames));
+}
+
+TEST(PointCloudScene, ARewriteOfOtherCountsIsRefusedAndChangesNothing) {
+  CloudSource gob(small_gob(), {0.0f, 0.2f, 0.0f}, 0.0f);
+  CloudScene scene;
+  scene.update(gob.frames());
+  CloudTexels tx = scene.texels();
+  const CloudTexels before = tx;
+  PointCloud fewer = *gob.frames()[0].points;
+  fewer.position.pop_back();
+  const CloudBvh tree = build_cloud_bvh(fewer, 1.0f);
+  std::string e = "no error";
+  try {
+    tx.rewrite(0, fewer, tree);
+  } catch (const std::invalid_argument& x) {
+    e = x.what();
+  }
+  EXPECT_TRUE(has(e, {"cloud 0", "points", "nodes"}));
+  expect_same_texels(tx, before);
+}
+
 TEST(PointCloudScene, AScenePresetPlacesAGobBesideAGlass) {
   const std::string text = R"({"draught_preset": 1, "kind": "scene", "name": "bench",
     "objects": [{"name": "pint", "glass": "pint", "drink": "lager"},
