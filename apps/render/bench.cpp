@@ -290,7 +290,7 @@ void bench_clouds(gpu::Renderer& renderer, const std::vector<int>& sizes, int fr
 // front of a pint of lager) and droplets-seed (the trail alone: the seed demo's scene, 16
 // blended spheres with noise), each gathered at rest and stretched across the picture
 // (the droplets-trail timeline at 0.7 s, the pointer sweeping), and the same view without
-// the droplets (what the rest of the picture costs).
+// the droplets (what the rest of the picture costs); and both drawn by the MatCap tier.
 void bench_droplets(gpu::Renderer& renderer, int frames) {
   constexpr int kWidth = 400, kHeight = 300;
   const Timeline trail = load_timeline("droplets-trail");
@@ -299,11 +299,13 @@ void bench_droplets(gpu::Renderer& renderer, int frames) {
     SceneRequest request;
     request.preset = preset;
     const Scene scene = resolve_scene_objects(request);
-    for (const char* state : {"gathered", "stretched", "without"}) {
-      const bool stretched = state == std::string("stretched");
+    for (const char* state : {"gathered", "stretched", "without", "gathered matcap", "stretched matcap"}) {
+      const std::string s = state;
+      const bool stretched = s.rfind("stretched", 0) == 0;
       FrameState f = stretched ? timeline_frame(trail, scene, 0.7) : make_frame(scene);
       f.params.render.supersample = 1;
-      if (state == std::string("without")) f.droplets.clear();
+      if (s == "without") f.droplets.clear();
+      if (s.find("matcap") != std::string::npos) f.params.render.tier = int(RenderTier::MatCap);
       std::vector<double> ms;
       const double med = median_ms(renderer, f, kWidth, kHeight, frames, &ms);
       const std::string name = std::string(preset) + " " + state;
@@ -324,13 +326,19 @@ void bench_condensation(gpu::Renderer& renderer, const std::vector<int>& sizes, 
   cold.sets = {"condensation.enabled=true"};
   FrameState a = make_frame(resolve_scene_objects(dry)), b = make_frame(resolve_scene_objects(cold));
   a.params.render.supersample = b.params.render.supersample = 1;
+  // The same two in the MatCap tier, drawn in the same rounds.
+  FrameState am = a, bm = b;
+  am.params.render.tier = bm.params.render.tier = int(RenderTier::MatCap);
   for (int size : sizes) {
     char sz[32];
     std::snprintf(sz, sizeof sz, "%dx%d", size, size);
-    const std::vector<double> med = interleaved_medians(renderer, {a, b}, size, frames);
+    const std::vector<double> med = interleaved_medians(renderer, {a, b, am, bm}, size, frames);
     std::printf("%-26s %-9s %10.2f %10s %10s %8.1f\n", "pint-lager-dry", sz, med[0], "", "", 1000.0 / med[0]);
     std::printf("%-26s %-9s %10.2f %10s %10s %8.1f  (cold / dry: %.3fx)\n", "pint-lager-condensation", sz, med[1], "", "",
                 1000.0 / med[1], med[1] / med[0]);
+    std::printf("%-26s %-9s %10.2f %10s %10s %8.1f\n", "  matcap, dry", sz, med[2], "", "", 1000.0 / med[2]);
+    std::printf("%-26s %-9s %10.2f %10s %10s %8.1f  (cold / dry: %.3fx)\n", "  matcap, condensation", sz, med[3], "", "",
+                1000.0 / med[3], med[3] / med[2]);
     std::fflush(stdout);
   }
   // The beads running: what a frame's simulation step and upload cost (CPU).

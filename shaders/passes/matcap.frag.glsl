@@ -10,6 +10,10 @@
 //   the drink: absorption and haze over the straight line's length through the cavity
 //     below the liquid's plane, the head as a layer of its colour above it;
 //   decals: their image at the wall, lit cheaply;
+//   condensation (CONDENSATION): the fog's veil on the outer wall, a bead a water lens;
+//   droplets and point clouds (DROPLETS, CLOUDS): water and hot glass as lenses, the
+//     MatCap by Fresnel and along the line bent through the blob, absorbed (and glowing)
+//     over the blob's chord;
 //   behind everything: the backdrop, the lights and the sky seen straight (drawn once per
 //     view into u_matcap_background, MATCAP_CACHED, when float targets allow).
 #include "generated/constants.glsl"
@@ -35,6 +39,12 @@
 #endif
 #ifndef DEBUG_VIEWS
 #define DEBUG_VIEWS 0
+#endif
+#ifndef CONDENSATION
+#define CONDENSATION 0
+#endif
+#if CONDENSATION
+#include "lib/vessel/condensation.glsl"
 #endif
 
 out vec4 frag_color;
@@ -133,6 +143,82 @@ vec3 decal_seen(Vessel v, int m, vec3 pl, vec3 pw, vec3 n, vec2 uv, float footpr
 }
 #endif
 
+#if DROPLETS || CLOUDS || CONDENSATION
+// The surroundings along world direction w from the MatCap: the texel whose normal mirrors
+// the view (-z in view space) into w, n = normalize(w - view); straight on is its rim.
+vec3 matcap_along(vec3 w, float lod) {
+  vec3 n = view_space(w) + vec3(0.0, 0.0, 1.0);
+  float l = length(n);
+  return matcap_at(matcap_uv(l > 1e-4 ? n / l : vec3(1.0, 0.0, 0.0)), lod);
+}
+#endif
+
+#if DROPLETS || CLOUDS
+
+// A droplet's or a cloud's blob (h.m M_DROPLET or M_CLOUD) as a lens: the MatCap's
+// reflection by Fresnel; the line refracted in, across the blob to where it leaves (one
+// march inside: the chord and the far side's normal) and out again, seeing the MatCap
+// along where it goes, absorbed over the chord; hot glass glows over it (Kirchhoff, as
+// the path pass: emissivity 1 - exp(-kappa chord)). Nothing behind shows through
+// otherwise: thr is spent.
+vec3 shade_blob(Hit h, vec3 eye, vec3 dir, inout vec3 thr) {
+  vec3 p = eye + h.t * dir;
+  vec3 n = dot(h.n, dir) < 0.0 ? h.n : -h.n;
+  float nv = clamp(-dot(n, dir), 0.0, 1.0);
+  bool cloud = h.m == M_CLOUD;
+  float ior = frame.droplet_ior, lod = 0.0;
+  vec3 absorption = frame.droplet_absorption, tint = vec3(1.0), glow_light = vec3(0.0);
+  float kappa = 0.0;
+#if CLOUDS
+  int k = -2 - h.obj;
+  vec4 attrs = g_cloud_attrs;
+  if (cloud) {
+    ior = frame.cloud_lo[k].w;
+    absorption = frame.cloud_absorption[k].rgb;
+    float kelvin = attrs.x > 0.0 ? attrs.x : frame.cloud_absorption[k].w;
+    vec4 glow = frame.cloud_glow[k];
+    kappa = glow.y * clamp((kelvin - 700.0) / 400.0, 0.0, 1.0);
+    if (glow.x > 0.0) glow_light = glow.x * blackbody_luminance(kelvin);
+    if (max(attrs.y, max(attrs.z, attrs.w)) > 0.0) tint = attrs.yzw;
+    lod = 6.0 * frame.cloud_hi[k].w;
+  }
+#endif
+#if DROPLETS
+  if (!cloud) lod = 6.0 * frame.droplet_roughness;
+#endif
+  float F = fresnel_dielectric(nv, 1.0, ior);
+  vec3 radiance = F * matcap_along(reflect(dir, n), lod);
+  // In, across, out.
+  vec3 d1 = refract(dir, n, 1.0 / ior);
+  float chord = 0.0;
+  vec3 n2 = n;  // (no far side found: out as through a slab)
+  float t2;
+  vec3 m;
+  bool left = false;
+#if CLOUDS
+  if (cloud) left = march_cloud(cloud_ref_of(k), p, d1, 1e-5, 1.0, true, t2, m, attrs);
+#endif
+#if DROPLETS
+  if (!cloud) {  // as through a ball of the head's radius: no second march (the tier's cost)
+    m = reflect(n, d1);
+    t2 = 2.0 * frame.droplet_spheres[0].w * max(-dot(n, d1), 0.0);
+    left = true;
+  }
+#endif
+  if (left) {
+    chord = t2;
+    n2 = dot(m, d1) > 0.0 ? -m : m;  // facing the line inside
+  }
+  vec3 d2 = refract(d1, n2, ior);
+  if (dot(d2, d2) == 0.0) d2 = reflect(d1, n2);  // turned back inside: its mirror, not followed further
+  float hot = exp(-kappa * chord);
+  vec3 through = matcap_along(d2, lod + 1.0) * exp(-absorption * chord) * hot;
+  radiance += thr * (1.0 - F) * tint * ((1.0 - hot) * glow_light + through);
+  thr = vec3(0.0);
+  return radiance;
+}
+#endif
+
 // The picture of the pixel: radiance, and the throughput left to the background.
 vec3 shade(vec3 eye, vec3 dir, out vec3 thr) {
   thr = vec3(1.0);
@@ -142,6 +228,9 @@ vec3 shade(vec3 eye, vec3 dir, out vec3 thr) {
     if (search_step(s, eye, dir, MEDIUM_AIR, -1, true, v)) break;
   Hit h = s.best;
   vec3 radiance = vec3(0.0);
+#if DROPLETS || CLOUDS
+  if (h.m == M_DROPLET || h.m == M_CLOUD) return shade_blob(h, eye, dir, thr);
+#endif
   if (h.obj < 0) return radiance;  // the floor and the surroundings: seen straight
   vec3 p = eye + h.t * dir;
   vec3 pl = to_local_point(v, p), dl = to_local_dir(v, dir);
@@ -152,9 +241,35 @@ vec3 shade(vec3 eye, vec3 dir, out vec3 thr) {
   float lod = frame.matcap_frost_lod;
   bool liquid = h.m == M_LIQUID_SURFACE || h.m == M_CLIP_LIQUID;
   ObjectGlass g = glass_of(v.row);
+#if CONDENSATION
+  // Beads and fog on the outer wall (lib/vessel/condensation.glsl): the fog veils the wall;
+  // a bead is a water lens on it: it reflects by its cap; through its middle the drink
+  // shows (the line goes on into the glass), and towards its rim, where the cap is steep,
+  // the line is bent away to the surroundings' darker sides (a quarter of the MatCap along it:
+  // the dark outline of a bead seen in photographs).
+  if (h.m == M_GLASS_OUTER) {
+    vec3 nl = to_local_dir(v, n);
+    nl = dot(nl.xz, pl.xz) < 0.0 ? -nl : nl;
+    BeadSample bead = condensation_bead(v, pl, nl);
+    float fog = condensation_fog(v, pl) * bead.clear;
+    if (fog > 0.0) {
+      vec4 veil = fog_veil(v, to_world_dir(v, nl), fog);
+      radiance += thr * veil.rgb;
+      thr *= veil.a;
+    }
+    if (bead.found) {
+      vec3 nb = to_world_dir(v, bead.n);
+      float Fb = fresnel_dielectric(clamp(-dot(nb, dir), 0.0, 1.0), 1.0, WATER_IOR);
+      radiance += thr * Fb * matcap_at(matcap_uv(view_space(nb)), 0.0);
+      float bend = smoothstep(0.03, 0.35, 1.0 - dot(nb, n));
+      radiance += thr * (1.0 - Fb) * bend * 0.25 * matcap_along(refract(dir, nb, 1.0 / WATER_IOR), 1.0);
+      thr *= (1.0 - Fb) * (1.0 - bend);
+    }
+  }
+#endif
   // The reflection, under Fresnel (the drink's surface with its index).
   float F = fresnel_dielectric(nv, 1.0, liquid ? v.liquid.ior : g.glass_ior);
-  radiance += F * matcap_at(uv, liquid ? 0.0 : lod);
+  radiance += thr * F * matcap_at(uv, liquid ? 0.0 : lod);
   thr *= 1.0 - F;
   if (!liquid) {
     float thick = view_thickness(v, pl, dl, h.m);

@@ -14,7 +14,7 @@ MatCapTexture::MatCapTexture() { glGenTextures(1, &tex_); }
 MatCapTexture::~MatCapTexture() { glDeleteTextures(1, &tex_); }
 
 void MatCapTexture::update(const FrameState& f) {
-  std::shared_ptr<const MatCap> m = matcap_for(f.params, f.lights, f.backdrop);
+  std::shared_ptr<const MatCap> m = matcap_for(f.params, f.lights, f.backdrop, surroundings_centre(f));
   if (m == current_) return;
   // RGBA rows bottom-up (GL's t up: the sphere's top last), then each level the 2 x 2 box
   // mean of the one before (ES 3.0 cannot generate mipmaps of a float texture it cannot

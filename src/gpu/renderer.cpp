@@ -142,8 +142,9 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   if (matcap) matcap_->update(f);  // a bake or a read only when its inputs change
   textures_->update(f);  // only rows that changed; the floor's light when its inputs did
   const bool decals = decals_->update(f);  // the images when they change, arc rows when a glass does
-  // Beads and fog: a band when its glass's condensation changed.
-  const bool condensation = condensation_->update(f) && !matcap;
+  // Beads and fog: a band when its glass's condensation changed (the thickness view is the
+  // bare glasses').
+  const bool condensation = condensation_->update(f) && debug != DebugView::Thickness;
   screen_->update(f.screen);  // only when another frame comes, into the texture not drawn from
   screen_->bind();
   textures_->bind();  // (after the updates, which bind what they upload to the active unit)
@@ -153,7 +154,8 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   // The point clouds: trees kept, refit or rebuilt as their points change (core), the
   // textures uploaded only then.
   if (cloud_scene_.update(f.clouds)) clouds_->upload(cloud_scene_.texels(), cloud_scene_.changed());
-  const bool clouds = !f.clouds.empty() && !matcap;
+  // (The thickness view is the glasses' alone.)
+  const bool clouds = !f.clouds.empty() && debug != DebugView::Thickness;
   if (clouds) clouds_->bind();
   contract::FrameBlock block = pack_frame_block(f, width, height, debug, event);
   if (clouds) pack_clouds(f, cloud_scene_, block);
@@ -186,11 +188,13 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
                       (f.screen.mode == ScreenMode::Card ? kScreenCard : 0) |
                       (f.screen.mode == ScreenMode::Background ? kScreenBackground : 0) |
                       (spheres ? kSphereLights : 0) | (painted ? kPaintedSky : 0) |
-                      (!f.droplets.empty() && !f.droplets.front().field.spheres.empty() ? kDroplets : 0) |
+                      (!f.droplets.empty() && !f.droplets.front().field.spheres.empty() && debug != DebugView::Thickness
+                           ? kDroplets
+                           : 0) |
                       (clouds ? kClouds : 0) | (condensation ? kCondensation : 0);
-  // The MatCap pass marches nothing: waves (its surface is the plane) and heads (a layer)
-  // need no variant of it; it draws no droplets and no point clouds.
-  if (matcap) variant = (variant & ~(kWaves | kFoam | kDroplets | kClouds)) | kMatCap;
+  // The MatCap pass marches no drink: waves (its surface is the plane) and heads (a layer)
+  // need no variant of it. It marches droplets and point clouds (seen as lenses).
+  if (matcap) variant = (variant & ~(kWaves | kFoam)) | kMatCap;
   if (matcap && debug == DebugView::None && matcap_background(f, block, width, height, variant)) variant |= kMatCapCached;
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
@@ -226,7 +230,7 @@ bool Renderer::matcap_background(const FrameState& f, const contract::FrameBlock
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
   const bool drawn = matcap_background_->begin_drawing(width, height);
   if (drawn) {
-    const int v = (variant & ~(kDecals | kMatCapCached)) | kMatCapBackdrop;
+    const int v = (variant & ~(kDecals | kMatCapCached | kDroplets | kClouds | kCondensation)) | kMatCapBackdrop;
     auto& program = programs_[v];
     if (!program) program = build_program(v);
     glUseProgram(program->id());

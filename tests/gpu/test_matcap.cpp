@@ -7,7 +7,8 @@
 //   surface (within a pixel), 99 % of pixels within 0.1 mm + 1 % and none beyond 2 mm +
 //   10 % (lines along a wall near the silhouette are ill-conditioned in float);
 // - the picture: finite, the glass seen, the drink's colour in it; a still frame bakes and
-//   uploads its MatCap once; the MatCap follows the surroundings.
+//   uploads its MatCap once; the MatCap follows the surroundings; droplets and a hot gob
+//   are drawn (lenses, the gob glowing), only where they are; so are beads and fog.
 #include "core/scene/camera.hpp"
 #include "core/vessel/view_thickness.hpp"
 #include "gpu/matcap_texture.hpp"
@@ -111,6 +112,95 @@ TEST(MatCapTier, DrawsTheGlassAndItsDrink) {
   long differ = 0;
   for (size_t i = 0; i < img.rgba.size(); i += 4) differ += std::abs(int(img.rgba[i]) - int(full.rgba[i])) > 8;
   EXPECT_GT(differ, 96 * 96 / 50);
+}
+
+// The droplets and the point clouds are in the tier's picture: droplets-seed with and
+// without its droplets differs only inside the droplets' box on the screen, and there on
+// a droplet's worth of pixels; the molten gob glows (orange: red well over blue).
+TEST(MatCapTier, DrawsDropletsAndPointClouds) {
+  Gpu& g = gpu_instance();
+  SceneRequest req;
+  req.preset = "droplets-seed";
+  const FrameState with = matcap_tier(make_frame(resolve_scene_objects(req)));
+  FrameState without = with;
+  without.droplets.clear();
+  constexpr int kW = 160, kH = 120;
+  const Image a = g.renderer->render(with, kW, kH), b = g.renderer->render(without, kW, kH);
+  // The droplets' box (their spheres grown by the blend) on the screen.
+  const CameraBasis cam = camera_basis(with.camera_for(kW, kH), kW, kH);
+  auto project_to_pixels = [&](const glm::vec3& p) {  // (camera_ray's inverse; the lens not shifted)
+    const glm::vec3 q = p - cam.eye;
+    const float z = glm::dot(q, cam.forward);
+    const float x = glm::dot(q, cam.right) / z / (cam.aspect * cam.tan_half_vfov), y = glm::dot(q, cam.up) / z / cam.tan_half_vfov;
+    return glm::vec2((x + 1.0f) * 0.5f * float(kW), (1.0f - y) * 0.5f * float(kH));
+  };
+  glm::vec2 lo(1e9f), hi(-1e9f);
+  const DropletField& field = with.droplets.front().field;
+  for (const DropletSphere& s : field.spheres)
+    for (int corner = 0; corner < 8; ++corner) {
+      const float r = float(s.radius + field.blend + field.noise_amplitude);
+      const glm::vec3 p = glm::vec3(s.centre) + r * glm::vec3(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1);
+      const glm::vec2 px = project_to_pixels(p);
+      lo = glm::min(lo, px);
+      hi = glm::max(hi, px);
+    }
+  long inside = 0, outside = 0;
+  double drop_sum = 0, behind_sum = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const std::uint8_t *p = a.px(x, y), *q = b.px(x, y);
+      const bool differ = std::abs(int(p[0]) - int(q[0])) + std::abs(int(p[1]) - int(q[1])) + std::abs(int(p[2]) - int(q[2])) > 6;
+      const bool in = x >= lo.x - 1 && x <= hi.x + 1 && y >= lo.y - 1 && y <= hi.y + 1;
+      (in ? inside : outside) += differ;
+      if (differ && in) drop_sum += p[0] + p[1] + p[2], behind_sum += q[0] + q[1] + q[2];
+    }
+  std::printf("droplets: %ld pixels differ inside their box (%.0f x %.0f px), %ld outside; the drop %.0f %% as bright as "
+              "what it hides\n",
+              inside, hi.x - lo.x, hi.y - lo.y, outside, 100.0 * drop_sum / std::max(behind_sum, 1.0));
+  EXPECT_GT(inside, 60);
+  EXPECT_EQ(outside, 0);
+  // Clear water in a white studio is about as bright as the paper it hides (a MatCap baked
+  // from the floor under the droplets showed them dark, as chrome).
+  EXPECT_GT(drop_sum, 0.7 * behind_sum);
+
+  req.preset = "molten-gob";
+  const Image gob = g.renderer->render(matcap_tier(make_frame(resolve_scene_objects(req))), kW, kH);
+  long glowing = 0;
+  for (std::size_t i = 0; i < gob.rgba.size(); i += 4) glowing += gob.rgba[i] > 200 && int(gob.rgba[i]) - int(gob.rgba[i + 2]) > 120;
+  EXPECT_GT(glowing, kW * kH / 20);
+}
+
+// Condensation in the tier: the cold lager's beads and fog change the glass (a good part of
+// it), nothing beyond the glass, and the beads make it vary from pixel to pixel.
+TEST(MatCapTier, DrawsCondensation) {
+  Gpu& g = gpu_instance();
+  SceneRequest req;
+  req.preset = "cold-lager";
+  const FrameState cold = matcap_tier(make_frame(resolve_scene_objects(req)));
+  ASSERT_TRUE(cold.vessels.at(0).condensation);
+  FrameState dry = cold;
+  dry.vessels[0].condensation = nullptr;
+  constexpr int kS = 128;
+  const Image a = g.renderer->render(cold, kS, kS), b = g.renderer->render(dry, kS, kS);
+  long differ = 0, beyond = 0;
+  double rough_cold = 0, rough_dry = 0;  // the mean step between neighbours across the glass's middle
+  for (int y = 0; y < kS; ++y)
+    for (int x = 0; x < kS; ++x) {
+      const std::uint8_t *p = a.px(x, y), *q = b.px(x, y);
+      const int d = std::abs(int(p[0]) - int(q[0])) + std::abs(int(p[1]) - int(q[1])) + std::abs(int(p[2]) - int(q[2]));
+      const bool glass_columns = x > kS / 4 && x < 3 * kS / 4;
+      differ += d > 6;
+      beyond += d > 6 && !glass_columns;
+      if (glass_columns && y > kS / 3 && y < 2 * kS / 3 && x + 1 < kS) {
+        rough_cold += std::abs(int(p[1]) - int(a.px(x + 1, y)[1]));
+        rough_dry += std::abs(int(q[1]) - int(b.px(x + 1, y)[1]));
+      }
+    }
+  std::printf("condensation: %ld pixels differ (%ld outside the glass's columns); neighbour steps %.0f cold, %.0f dry\n",
+              differ, beyond, rough_cold, rough_dry);
+  EXPECT_GT(differ, kS * kS / 10);
+  EXPECT_EQ(beyond, 0);
+  EXPECT_GT(rough_cold, 2.0 * rough_dry);
 }
 
 TEST(MatCapTier, AStillFrameBakesAndUploadsOnce) {

@@ -503,6 +503,17 @@ test('droplets follow a finger on the picture; the glass stays upright', async (
     const st = await status(page);
     assert.equal(st.input, 'touch');
     assert.ok(st.tilt < 0.5, `the glass stays upright: ${st.tilt} degrees`);
+    // The MatCap tier (where a slow phone's adaptive quality falls) draws them too: back at
+    // the left, the right of the picture changes where they were.
+    assert.equal(await page.evaluate(() => window.draught.setParam('render.tier', 'matcap')), '');
+    await waitFrames(page, 3);
+    const atRight = await snapshot(page);
+    for (let i = 5; i >= 0; --i) await touch('touchMove', [[from.x + ((to.x - from.x) * i) / 6, from.y]]);
+    await settled(page, b.pointer);
+    const dMatCap = blockDifference(atRight, await snapshot(page), around(to));
+    note(`MatCap tier: the picture at the right changed ${dMatCap.toFixed(1)} when the droplets left it`);
+    assert.ok(dMatCap > 8, `the MatCap tier draws the droplets: ${dMatCap.toFixed(2)}`);
+    assert.equal((await status(page)).tier, 'matcap');
     await touch('touchEnd', []);
     // Without droplets a finger tilts the glass again and there is no pointer to take.
     await page.selectOption('#drink', 'lager');

@@ -30,13 +30,14 @@ glm::dvec3 matcap_normal(double u, double v) {
 
 glm::dvec2 matcap_uv(const glm::dvec3& n) { return {0.5 + 0.5 * n.x, 0.5 - 0.5 * n.y}; }
 
-MatCap bake_matcap(const SceneParams& p, const LightRig& rig, const BackdropSurface& backdrop, int size) {
+MatCap bake_matcap(const SceneParams& p, const LightRig& rig, const BackdropSurface& backdrop, const glm::dvec3& centre,
+                   int size) {
   constexpr double kPi = std::numbers::pi;
   const Studio studio(p);
   const SkyIrradiance sky = sky_irradiance(studio);
   const MatCapView view = matcap_view();
   MatCap m{size, std::vector<glm::vec3>(size_t(size) * size_t(size))};
-  const glm::dvec3 o = rig.aim;
+  const glm::dvec3 o = centre;
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
       const glm::dvec3 nv = matcap_normal((x + 0.5) / size, (y + 0.5) / size);
@@ -103,9 +104,9 @@ struct BakeEntry {
   std::shared_ptr<const MatCap> matcap;
 } g_bake;
 
-// What a bake depends on, as text: every env.*, light.*, strips.*, backlight.* value and
-// where the rig stands.
-std::string bake_key(const SceneParams& p, const LightRig& rig, const BackdropSurface& b) {
+// What a bake depends on, as text: every env.*, light.*, strips.*, backlight.* value,
+// where the rig stands and where the bake looks from.
+std::string bake_key(const SceneParams& p, const LightRig& rig, const BackdropSurface& b, const glm::dvec3& centre) {
   std::string key;
   for (const ParamDesc& d : param_table()) {
     if (d.scope != ParamScope::Scene) continue;
@@ -113,8 +114,9 @@ std::string bake_key(const SceneParams& p, const LightRig& rig, const BackdropSu
     if (group == "env" || group == "light" || group == "strips" || group == "backlight")
       key += format_param(d, get_param(p, d)) + ";";
   }
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "%.9g,%.9g,%.9g;%.9g", rig.aim.x, rig.aim.y, rig.aim.z, b.z_curve);
+  char buf[240];
+  std::snprintf(buf, sizeof buf, "%.9g,%.9g,%.9g;%.9g;%.9g,%.9g,%.9g", rig.aim.x, rig.aim.y, rig.aim.z, b.z_curve,
+                centre.x, centre.y, centre.z);
   return key + buf;
 }
 
@@ -143,14 +145,15 @@ void check_matcap_image(const std::string& name) {
   if (!name.empty()) load_matcap_file(name);
 }
 
-std::shared_ptr<const MatCap> matcap_for(const SceneParams& p, const LightRig& rig, const BackdropSurface& b) {
+std::shared_ptr<const MatCap> matcap_for(const SceneParams& p, const LightRig& rig, const BackdropSurface& b,
+                                         const glm::dvec3& centre) {
   if (!p.matcap.file.empty()) return load_matcap_file(p.matcap.file);
-  std::string key = bake_key(p, rig, b);
+  std::string key = bake_key(p, rig, b, centre);
   {
     std::lock_guard lock(g_mutex);
     if (g_bake.matcap && g_bake.key == key) return g_bake.matcap;
   }
-  auto matcap = std::make_shared<const MatCap>(bake_matcap(p, rig, b));
+  auto matcap = std::make_shared<const MatCap>(bake_matcap(p, rig, b, centre));
   std::lock_guard lock(g_mutex);
   g_bake = {std::move(key), matcap};
   return matcap;

@@ -44,9 +44,11 @@ glm::dvec3 matcap_normal(double u, double v);
 glm::dvec2 matcap_uv(const glm::dvec3& n);
 
 // The MatCap of these surroundings: for each texel, the radiance along the normal's
-// mirror direction of the view from the scene's centre (rig.aim): the nearest of a light's
-// front and the backdrop (lit by the rig and the sky), else the sky.
-MatCap bake_matcap(const SceneParams&, const LightRig&, const BackdropSurface&, int size = kMatCapSize);
+// mirror direction of the view from the scene's centre (surroundings_centre: rig.aim
+// where there are glasses): the nearest of a light's front and the backdrop (lit by the
+// rig and the sky), else the sky.
+MatCap bake_matcap(const SceneParams&, const LightRig&, const BackdropSurface&, const glm::dvec3& centre,
+                   int size = kMatCapSize);
 // A MatCap from an image (8-bit sRGB, any size; resampled to a square of kMatCapSize).
 MatCap matcap_from_image(const Image&);
 
@@ -56,8 +58,10 @@ MatCap matcap_from_image(const Image&);
 std::shared_ptr<const MatCap> load_matcap_file(const std::string& name);
 void check_matcap_image(const std::string& name);
 
-// The frame's MatCap: the file's, else the bake of these surroundings; kept while what it
-// depends on (env.*, the lights, the backdrop's place, matcap.file) stays the same.
-std::shared_ptr<const MatCap> matcap_for(const SceneParams&, const LightRig&, const BackdropSurface&);
+// The frame's MatCap: the file's, else the bake of these surroundings from `centre`; kept
+// while what it depends on (env.*, the lights, the backdrop's place, the centre,
+// matcap.file) stays the same.
+std::shared_ptr<const MatCap> matcap_for(const SceneParams&, const LightRig&, const BackdropSurface&,
+                                         const glm::dvec3& centre);
 
 }  // namespace draught

@@ -320,6 +320,7 @@ std::vector<CloudFrame> CloudSource::frames() const {
   f.roughness = params_.roughness;
   f.absorption = params_.absorption;
   f.temperature = float(kelvin);
+  f.placement = position_;
   std::vector<CloudFrame> out{f};
   if (s.pipe) {  // the blowpipe: steel, cold, glossy
     CloudFrame pipe;
@@ -330,6 +331,7 @@ std::vector<CloudFrame> CloudSource::frames() const {
     pipe.ior = 1.5f;
     pipe.roughness = 0.15f;
     pipe.temperature = float(s.gob_params.ambient_kelvin);
+    pipe.placement = position_;
     out.push_back(pipe);
   }
   return out;

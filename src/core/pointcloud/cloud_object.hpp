@@ -84,6 +84,7 @@ struct CloudFrame {
   glm::vec3 absorption{0.0f};
   glm::vec3 color{1.0f};     // the colour of points without their own (the drink's tint)
   float temperature = 293.15f;  // K of points without their own
+  glm::vec3 placement{0.0f};    // its object's position (the scene's centre is taken from it)
 };
 
 // The runtime of one point-cloud object: its source advanced on the scene's clock, its

@@ -188,6 +188,15 @@ glm::dvec3 scene_aim(const std::vector<VesselFrame>& vessels) {
   return {mid.x, 0.5 * top, mid.y};
 }
 
+glm::dvec3 surroundings_centre(const FrameState& f) {
+  if (!f.vessels.empty()) return scene_aim(f.vessels);
+  glm::dvec3 sum(0.0);
+  int n = 0;
+  for (const DropletsFrame& d : f.droplets) sum += glm::dvec3(d.position), ++n;
+  for (const CloudFrame& c : f.clouds) sum += glm::dvec3(c.placement), ++n;
+  return n ? sum / double(n) : glm::dvec3(0.0);
+}
+
 glm::dvec3 drink_aim(const std::vector<VesselFrame>& vessels) {
   glm::dvec3 aim = scene_aim(vessels);
   if (vessels.empty()) return aim;

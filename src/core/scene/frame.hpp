@@ -69,6 +69,10 @@ struct FrameState {
 // the glasses' placements across the floor, at half the tallest glass's height. Placements,
 // not poses: a glass tipped by the hand does not move the lights.
 glm::dvec3 scene_aim(const std::vector<VesselFrame>&);
+// Where the scene's surroundings are seen from (the MatCap's bake): scene_aim where there
+// are glasses, else the middle of the droplets' and point clouds' placements (a scene of
+// droplets alone looks from them, not from the floor under them).
+glm::dvec3 surroundings_centre(const FrameState&);
 // The middle of the drinks as poured (placements, the liquid at rest; the glasses' middle
 // where there is none), at scene_aim's x and z: what the backlight shines through.
 glm::dvec3 drink_aim(const std::vector<VesselFrame>&);

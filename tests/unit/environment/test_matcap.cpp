@@ -26,7 +26,7 @@ SceneParams constant_surroundings(glm::vec3 c) {
 TEST(MatCap, ConstantSurroundingsGiveAUniformMatCapOfTheirValue) {
   const SceneParams p = constant_surroundings({0.3f, 0.5f, 0.7f});
   const LightRig rig = light_rig(p, {0, 0.08, 0});
-  const MatCap m = bake_matcap(p, rig, backdrop_surface(p.env, rig.aim), 64);
+  const MatCap m = bake_matcap(p, rig, backdrop_surface(p.env, rig.aim), rig.aim, 64);
   ASSERT_EQ(m.size, 64);
   for (const glm::vec3& c : m.rgb) {
     EXPECT_NEAR(c.r, 0.3f, 1e-6f);
@@ -44,7 +44,7 @@ TEST(MatCap, ALightAboveShowsAtTheTop) {
   p.light.width = 0.3f;
   const LightRig rig = light_rig(p, {0, 0.08, 0});
   ASSERT_EQ(rig.lights.size(), 1u);
-  const MatCap m = bake_matcap(p, rig, backdrop_surface(p.env, rig.aim), 64);
+  const MatCap m = bake_matcap(p, rig, backdrop_surface(p.env, rig.aim), rig.aim, 64);
   auto band = [&](int y0, int y1) {
     double sum = 0;
     for (int y = y0; y < y1; ++y)

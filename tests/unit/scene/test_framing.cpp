@@ -151,6 +151,23 @@ TEST(Framing, TheStudioIsPlacedAroundTheMiddleOfTheGlassesAsTheyStand) {
   ASSERT_EQ(f.lights.lights.size(), 4u);
   EXPECT_EQ(f.lights.aim, aim);
   EXPECT_NEAR(glm::distance(f.lights.lights[0].center, aim), f.params.light.distance, 1e-5);
+  EXPECT_EQ(surroundings_centre(f), aim);  // the MatCap's bake looks from there too
+}
+
+TEST(Framing, ASceneWithoutGlassesIsSeenFromTheMiddleOfItsDropletsAndClouds) {
+  FrameState f;
+  EXPECT_EQ(surroundings_centre(f), glm::dvec3(0.0));
+  DropletsFrame d;
+  d.position = {-0.02f, 0.1f, 0.1f};
+  f.droplets.push_back(d);
+  EXPECT_EQ(surroundings_centre(f), glm::dvec3(d.position));
+  CloudFrame c;
+  c.placement = {0.1f, 0.2f, 0.0f};
+  f.clouds.push_back(c);
+  const glm::dvec3 mid = surroundings_centre(f);
+  EXPECT_NEAR(mid.x, 0.04, 1e-7);
+  EXPECT_NEAR(mid.y, 0.15, 1e-7);
+  EXPECT_NEAR(mid.z, 0.05, 1e-7);
 }
 
 }  // namespace
