@@ -332,7 +332,14 @@ void main() {
   return;
 #endif
   vec3 thr;
+#ifdef MATCAP_BACKGROUND_ONLY
+  // Outside the objects' part of the screen (gpu/renderer objects_on_screen): what a line
+  // that meets no object's bounds sees.
+  thr = vec3(1.0);
+  vec3 radiance = vec3(0.0);
+#else
   vec3 radiance = shade(frame.cam_eye, dir, thr);
+#endif
   float alpha = 1.0;
   if (frame.transparent != 0) {
     float m = min(thr.r, min(thr.g, thr.b));

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 
 namespace draught::gpu {
@@ -100,6 +101,7 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kPaintedSky) frag = with_define(std::move(frag), "PAINTED_SKY");
   if (variant & kMatCapBackdrop) frag = with_define(std::move(frag), "MATCAP_BACKDROP");
   if (variant & kMatCapCached) frag = with_define(std::move(frag), "MATCAP_CACHED");
+  if (variant & kMatCapBackgroundOnly) frag = with_define(std::move(frag), "MATCAP_BACKGROUND_ONLY");
   if (const int held = (variant >> kHeldShift) & kHeldMask)
     frag = with_define(std::move(frag), "HELD_OBJECTS", std::to_string(held));
   auto program = std::make_unique<Program>(vert, frag);
@@ -196,12 +198,70 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   // need no variant of it. It marches droplets and point clouds (seen as lenses).
   if (matcap) variant = (variant & ~(kWaves | kFoam)) | kMatCap;
   if (matcap && debug == DebugView::None && matcap_background(f, block, width, height, variant)) variant |= kMatCapCached;
+  // The MatCap tier with its background kept: only the part of the screen where the
+  // objects' bounds lie runs the pass; the rest is the background alone (what the pass
+  // gives a line that meets no object's bounds, for a fraction of the cost).
+  const PixelRect part = variant & kMatCapCached ? objects_on_screen(f, block, width, height) : PixelRect{0, 0, width, height};
+  const bool whole = part.x <= 0 && part.y <= 0 && part.x + part.w >= width && part.y + part.h >= height;
+  glBindVertexArray(vao_);
+  if (!whole) {
+    auto& background = programs_[variant | kMatCapBackgroundOnly];
+    if (!background) background = build_program(variant | kMatCapBackgroundOnly);
+    glUseProgram(background->id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(part.x, part.y, part.w, part.h);
+  }
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
   glUseProgram(program->id());
-  glBindVertexArray(vao_);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  if (debug == DebugView::None && !matcap) draw_bubbles(f, width, height);  // the MatCap tier leaves them out
+  if (part.w > 0 && part.h > 0) glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (!whole) glDisable(GL_SCISSOR_TEST);
+  // The rising bubbles over the picture (the MatCap tier's where its straight view sees them).
+  if (debug == DebugView::None) draw_bubbles(f, width, height);
+}
+
+namespace {
+
+// Where a world point lands in a width x height picture of the block's camera (pixels from
+// the top-left, as camera_dir's inverse); nothing when it is not in front of the eye.
+std::optional<glm::dvec2> on_screen(const contract::FrameBlock& b, const glm::vec3& p, int width, int height) {
+  const glm::dvec3 q = glm::dvec3(p) - glm::dvec3(b.cam_eye);
+  const double z = glm::dot(q, glm::dvec3(b.cam_forward));
+  if (!(z > 1e-4)) return std::nullopt;
+  const double x = glm::dot(q, glm::dvec3(b.cam_right)) / (z * b.cam_tan_half_vfov * b.cam_aspect);
+  const double y = glm::dot(q, glm::dvec3(b.cam_up)) / (z * b.cam_tan_half_vfov);
+  return glm::dvec2((x + 1.0 + b.cam_shift.x) * 0.5 * width, (1.0 - y - b.cam_shift.y) * 0.5 * height);
+}
+
+}  // namespace
+
+PixelRect objects_on_screen(const FrameState& f, const contract::FrameBlock& b, int width, int height) {
+  const PixelRect all{0, 0, width, height};
+  glm::dvec2 lo(1e30), hi(-1e30);
+  bool behind = false;
+  auto box = [&](const glm::vec3& a, const glm::vec3& c) {  // a box's corners
+    for (int k = 0; k < 8; ++k) {
+      const glm::vec3 p(k & 1 ? c.x : a.x, k & 2 ? c.y : a.y, k & 4 ? c.z : a.z);
+      const auto s = on_screen(b, p, width, height);
+      if (!s) behind = true;
+      else lo = glm::min(lo, *s), hi = glm::max(hi, *s);
+    }
+  };
+  for (int i = 0; i < int(f.vessels.size()); ++i) {  // the bounding cylinder of the search (object_span)
+    const contract::ObjectRecord r = pack_object(f, i);
+    const glm::vec3 base(r.bound_base), axis(r.bound_axis), top = base + r.bound_length * axis;
+    const glm::vec3 grow = r.bound_radius * glm::sqrt(glm::max(glm::vec3(1.0f) - axis * axis, glm::vec3(0.0f)));
+    box(glm::min(base, top) - grow, glm::max(base, top) + grow);
+  }
+  if (b.droplet_count > 0) box(b.droplet_bound_lo, b.droplet_bound_hi);
+  for (int c = 0; c < b.cloud_count; ++c) box(glm::vec3(b.cloud_lo[c]), glm::vec3(b.cloud_hi[c]));
+  if (behind) return all;
+  if (hi.x < lo.x) return {0, 0, 0, 0};  // nothing to draw
+  // GL's rows count from the bottom; two pixels more each side for the rounding.
+  const int x0 = std::max(0, int(std::floor(lo.x)) - 2), x1 = std::min(width, int(std::ceil(hi.x)) + 2);
+  const int y0 = std::max(0, height - int(std::ceil(hi.y)) - 2), y1 = std::min(height, height - int(std::floor(lo.y)) + 2);
+  return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
 }
 
 bool Renderer::matcap_background(const FrameState& f, const contract::FrameBlock& block, int width, int height,

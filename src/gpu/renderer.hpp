@@ -27,6 +27,17 @@ class Program;
 class SceneTextures;
 class ScreenTexture;
 
+// A part of a picture in GL's window coordinates (x, y from the bottom-left).
+struct PixelRect {
+  int x = 0, y = 0, w = 0, h = 0;
+};
+// Where the frame's objects can show in a width x height picture of block b's camera: the
+// boxes around their search bounds (glasses' cylinders, the droplets' box, the clouds'
+// root boxes) projected, grown by two pixels; the whole picture when a box reaches behind
+// the eye. Outside it every line misses every object (the MatCap tier draws only the
+// background there).
+PixelRect objects_on_screen(const FrameState&, const contract::FrameBlock& b, int width, int height);
+
 // Debug views, declared in src/interface/constants.def (shared with the shaders).
 using contract::DebugView;
 
@@ -105,12 +116,13 @@ class Renderer {
   // number of held objects (0: the general path) from bit kHeldShift on.
   // kMatCap: the MatCap tier's pass (passes/matcap.frag.glsl) instead of the path pass.
   // kMatCapBackdrop: its background pass (what lies behind, into MatCapBackground);
-  // kMatCapCached: its picture pass reading that background.
+  // kMatCapCached: its picture pass reading that background; kMatCapBackgroundOnly: that
+  // background alone, tone-mapped (the picture outside the objects' part of the screen).
   enum Variant {
     kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kScreenCard = 32, kScreenBackground = 64,
     kSphereLights = 128, kPaintedSky = 256, kDroplets = 512, kMatCap = 1024, kMatCapBackdrop = 2048,
     kMatCapCached = 4096, kHeldShift = 13, kHeldMask = 7, kClouds = 1 << 16,  // (held objects: bits 13-15)
-    kCondensation = 1 << 17
+    kCondensation = 1 << 17, kMatCapBackgroundOnly = 1 << 18
   };
   // The MatCap tier's background, drawn when it is not the one of this frame; false when
   // it cannot be kept (no float targets, a screen whose frames it does not follow).

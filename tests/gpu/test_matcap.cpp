@@ -12,6 +12,7 @@
 #include "core/scene/camera.hpp"
 #include "core/vessel/view_thickness.hpp"
 #include "gpu/matcap_texture.hpp"
+#include "gpu/scene_data.hpp"
 #include "gpu_fixture.hpp"
 
 #include <gtest/gtest.h>
@@ -201,6 +202,40 @@ TEST(MatCapTier, DrawsCondensation) {
   EXPECT_GT(differ, kS * kS / 10);
   EXPECT_EQ(beyond, 0);
   EXPECT_GT(rough_cold, 2.0 * rough_dry);
+}
+
+// The part of the screen the tier runs its pass in (objects_on_screen; the rest is the
+// background alone) holds every pixel whose camera ray meets a glass by the reference
+// intersector, and for a single pint is well short of the whole picture.
+TEST(MatCapTier, ThePassRunsWhereTheObjectsAre) {
+  struct View {
+    const char* name;
+    FrameState f;
+    int w, h;
+  };
+  for (const View& view : {View{"pint", pint_front(), 96, 96}, View{"pint from above", pint_above(), 80, 64},
+                           View{"flight at an angle", flight_angle(), 120, 90}}) {
+    const contract::FrameBlock block = gpu::pack_frame_block(view.f, view.w, view.h, gpu::DebugView::None);
+    const gpu::PixelRect part = gpu::objects_on_screen(view.f, block, view.w, view.h);
+    const SceneGeometry geo = scene_geometry(view.f);
+    const CameraBasis cam = camera_basis(view.f, view.w, view.h);
+    long hits = 0, outside = 0;
+    for (int y = 0; y < view.h; ++y)
+      for (int x = 0; x < view.w; ++x) {
+        const Hit h = first_hit(geo, camera_ray(cam, x + 0.5, y + 0.5, view.w, view.h));
+        if (h.object < 0) continue;
+        ++hits;
+        const int gy = view.h - 1 - y;  // GL's rows from the bottom
+        outside += x < part.x || x >= part.x + part.w || gy < part.y || gy >= part.y + part.h;
+      }
+    std::printf("[%s] %ld pixels on glasses, %ld outside the pass's part (%d x %d of %d x %d)\n", view.name, hits, outside,
+                part.w, part.h, view.w, view.h);
+    EXPECT_GT(hits, 0) << view.name;
+    EXPECT_EQ(outside, 0) << view.name;
+  }
+  const FrameState pint = pint_front();
+  const gpu::PixelRect part = gpu::objects_on_screen(pint, gpu::pack_frame_block(pint, 96, 96, gpu::DebugView::None), 96, 96);
+  EXPECT_LT(part.w * part.h, 96 * 96 * 2 / 3);
 }
 
 TEST(MatCapTier, AStillFrameBakesAndUploadsOnce) {

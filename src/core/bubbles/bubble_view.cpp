@@ -14,7 +14,8 @@ namespace {
 enum class Medium { Air, Glass, Liquid };
 
 // The leg of a camera path inside one glass's liquid (world frame), and what it crossed
-// to get there: other glasses and their drinks, in any order.
+// to get there: other glasses and their drinks, in any order. straight: the path is not
+// bent at the interfaces (the MatCap tier's view), only dimmed by them.
 struct LiquidLeg {
   bool ok = false;
   Ray ray;
@@ -22,7 +23,7 @@ struct LiquidLeg {
   glm::dvec3 thr{1.0};   // Fresnel, glass and other drinks' absorption on the way
 };
 
-LiquidLeg trace_to_liquid(const FrameState& f, const SceneGeometry& geo, int target, Ray r) {
+LiquidLeg trace_to_liquid(const FrameState& f, const SceneGeometry& geo, int target, Ray r, bool straight = false) {
   LiquidLeg leg;
   Medium medium = Medium::Air;
   int inside = -1;  // the object whose glass or liquid the path is in
@@ -47,7 +48,7 @@ LiquidLeg trace_to_liquid(const FrameState& f, const SceneGeometry& geo, int tar
     const auto refracted = refract_dir(r.d, n, n1 / n2);
     if (!refracted) return leg;  // total internal reflection: not a straight view of the liquid
     leg.thr *= 1.0 - fresnel_dielectric(-glm::dot(n, r.d), n1, n2);
-    r = Ray{p_hit, glm::normalize(*refracted)};
+    r = Ray{p_hit, straight ? r.d : glm::normalize(*refracted)};
     medium = next;
     inside = medium == Medium::Air ? -1 : h.object;
     if (medium == Medium::Liquid && h.object == target) {
@@ -61,6 +62,8 @@ LiquidLeg trace_to_liquid(const FrameState& f, const SceneGeometry& geo, int tar
 
 void add_sprites(const FrameState&, const SceneGeometry&, int target, const CameraBasis&, int width, int height,
                  std::vector<BubbleSprite>& out);
+void add_straight_sprites(const FrameState&, const SceneGeometry&, int target, const CameraBasis&, int width, int height,
+                          std::vector<BubbleSprite>& out);
 }  // namespace
 
 std::vector<BubbleSprite> bubble_sprites(const FrameState& f, int width, int height) {
@@ -70,7 +73,8 @@ std::vector<BubbleSprite> bubble_sprites(const FrameState& f, int width, int hei
   for (size_t k = 0; k < f.vessels.size(); ++k) {
     const VesselFrame& vf = f.vessels[k];
     if (!vf.has_liquid || vf.bubbles.empty()) continue;
-    add_sprites(f, geo, int(k), cam, width, height, out);
+    if (f.params.render.tier == int(RenderTier::MatCap)) add_straight_sprites(f, geo, int(k), cam, width, height, out);
+    else add_sprites(f, geo, int(k), cam, width, height, out);
   }
   std::sort(out.begin(), out.end(), [](const BubbleSprite& a, const BubbleSprite& b) { return a.distance > b.distance; });
   return out;
@@ -127,6 +131,36 @@ void add_sprites(const FrameState& f, const SceneGeometry& geo, int target, cons
     BubbleSprite s;
     s.centre = {float(px), float(py)};
     s.radius = float(b.radius / std::sqrt(std::abs(det)));  // metres over metres-per-pixel
+    s.tint = glm::vec3(leg.thr * glm::exp(-sigma * t));
+    s.distance = float(leg.before + t);
+    s.object = target;
+    if (s.radius > 0.05f) out.push_back(s);
+  }
+}
+
+// The MatCap tier sees the drink straight through the glass (no refracted march): each
+// bubble where the camera's straight line to it meets the picture, its size by the
+// distance, dimmed by what that line crosses (Fresnel, the glass, the drink before it).
+void add_straight_sprites(const FrameState& f, const SceneGeometry& geo, int target, const CameraBasis& cam,
+                          int width, int height, std::vector<BubbleSprite>& out) {
+  const VesselFrame& vf = f.vessels[size_t(target)];
+  const glm::dvec3 eye(cam.eye), fwd(cam.forward), right(cam.right), up(cam.up);
+  const glm::dvec3 sigma = glm::dvec3(vf.liquid_absorption) + double(vf.params.liquid.haze);
+  for (const Bubble& b : vf.bubbles) {
+    if (geo.vessels[size_t(target)].clipped(glm::dvec3(b.p))) continue;
+    const glm::dvec3 c = vf.pose.orientation * glm::dvec3(b.p) + vf.pose.position, v = c - eye;
+    const double z = glm::dot(v, fwd);
+    if (z <= 0) continue;
+    const double px = (glm::dot(v, right) / (z * cam.tan_half_vfov * cam.aspect) + 1 + cam.shift.x) * 0.5 * width;
+    const double py = (1 - glm::dot(v, up) / (z * cam.tan_half_vfov) - cam.shift.y) * 0.5 * height;
+    if (px < -10 || py < -10 || px > width + 10 || py > height + 10) continue;
+    const LiquidLeg leg = trace_to_liquid(f, geo, target, Ray{eye, glm::normalize(v)}, true);
+    if (!leg.ok) continue;
+    const double t = glm::dot(c - leg.ray.o, leg.ray.d);
+    if (t <= 0 || first_hit(geo, leg.ray, 1e-6).t < t) continue;  // not in this stretch of the drink
+    BubbleSprite s;
+    s.centre = {float(px), float(py)};
+    s.radius = float(b.radius / (2.0 * z * cam.tan_half_vfov / height));  // metres over metres-per-pixel
     s.tint = glm::vec3(leg.thr * glm::exp(-sigma * t));
     s.distance = float(leg.before + t);
     s.object = target;

@@ -3,7 +3,8 @@
 // pixel whose refracted path passes through it is solved for (Newton on the pixel
 // position, tracing with the reference intersector). The renderer then draws each one
 // as an instanced sphere impostor there, tinted by what the path went through, and
-// skips bubbles hidden by the foam head.
+// skips bubbles hidden by the foam head. The MatCap tier (render.tier matcap) bends no
+// view: there a bubble is where the camera's straight line to it meets the picture.
 #pragma once
 
 #include "core/scene/frame.hpp"

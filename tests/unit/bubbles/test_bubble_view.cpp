@@ -64,6 +64,37 @@ TEST(BubbleView, SpritesSitWhereTheRefractedViewMeetsTheBubble) {
   for (size_t i = 1; i < sprites.size(); ++i) EXPECT_GE(sprites[i - 1].distance, sprites[i].distance);  // far first
 }
 
+// The MatCap tier bends no view: its sprites sit where the camera's straight line meets
+// each bubble, sized by the distance, and dimmed by the drink in front of them.
+TEST(BubbleView, TheMatCapTiersSpritesSitOnTheStraightView) {
+  FrameState f = settled({"lager", "pint", {"foam.height=0", "render.tier=matcap"}, {"eye=0,0.07,0.3", "target=0,0.07,0", "vfov=30"}});
+  const int w = 200, h = 200;
+  const auto sprites = bubble_sprites(f, w, h);
+  ASSERT_GT(sprites.size(), 20u);
+  const CameraBasis cam = camera_basis(f, w, h);
+  int matched = 0;
+  for (const BubbleSprite& s : sprites) {
+    // The bubble whose straight line passes nearest the sprite's pixel, within its radius.
+    const Ray r = camera_ray(cam, s.centre.x, s.centre.y, w, h);
+    double best = 1e9, radius = 0, depth = 0;
+    for (const Bubble& b : f.vessels[0].bubbles) {
+      const glm::dvec3 c(b.p);
+      const double t = glm::dot(c - r.o, r.d), miss = glm::length(c - r.at(t));
+      if (miss < best) best = miss, radius = b.radius, depth = glm::dot(c - r.o, glm::dvec3(cam.forward));
+    }
+    EXPECT_LT(best, 1e-3 * radius + 1e-9) << "sprite at " << s.centre.x << "," << s.centre.y;
+    EXPECT_NEAR(s.radius, radius / (2.0 * depth * cam.tan_half_vfov / h), 1e-3 * s.radius);
+    EXPECT_LT(s.tint.b, s.tint.r);  // through lager: blue goes first
+    matched += best < 1e-3 * radius + 1e-9;
+  }
+  EXPECT_EQ(matched, int(sprites.size()));
+  // Not where the refracted view puts them.
+  f.params.render.tier = int(RenderTier::Full);
+  const auto bent = bubble_sprites(f, w, h);
+  ASSERT_FALSE(bent.empty());
+  EXPECT_NE(bent.front().centre, sprites.front().centre);
+}
+
 TEST(BubbleView, HiddenUnderTheHeadFromAbove) {
   // Looking straight down into a pint: with a head, no bubble shows; without, many do.
   const std::vector<std::string> above = {"eye=0,0.5,0.001", "target=0,0,0", "vfov=20"};
