@@ -8,7 +8,8 @@
 // the page's picker, a mouse moving round a circle over the canvas (pointermove events every
 // 16 ms, so the trail keeps stretching), 4 s of warm-up (the shaders compile), then `runs`
 // runs of `seconds` each: frames drawn (window.draught.frames) over the wall time between
-// them. Prints each run and the median.
+// them. Prints each run and the median. Each scene in the full tier and in the MatCap tier
+// (render.tier matcap: where a slow device's adaptive quality falls).
 import { start, openPage } from './lib.mjs';
 
 const runs = Number(process.argv[2] || 5);
@@ -27,11 +28,15 @@ const median = (v) => {
 const env = await start();
 try {
   console.log(`chromium ${env.browser.version()}, SwiftShader (lib.mjs flags); ${size} CSS px at scale 1; ${runs} runs of ${seconds} s after 4 s of warm-up`);
-  for (const preset of ['droplets-seed', 'droplets']) {
+  for (const [preset, tier] of [['droplets-seed', 'full'], ['droplets', 'full'], ['droplets-seed', 'matcap'], ['droplets', 'matcap']]) {
     const page = await openPage(env, { query: `size=${size}&scale=1` });
     try {
       await page.selectOption('#drink', preset);
       await page.waitForFunction(() => window.draught.droplets().droplets === true, null, { timeout: 30000 });
+      if (tier === 'matcap') {
+        const refused = await page.evaluate(() => window.draught.setParam('render.tier', 'matcap'));
+        if (refused) throw new Error(refused);
+      }
       // The mouse circles over the canvas: real pointermove events, as a hand makes them.
       await page.evaluate(() => {
         const canvas = document.getElementById('canvas');
