@@ -541,7 +541,13 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
     put(v.params.glass.ior, v.params.liquid.ior, v.params.liquid.haze);
     put3(v.params.glass.absorption);
     put3(v.params.liquid.haze_color);
-    put(v.foam.thickness, v.foam.dome, v.params.foam.density, v.params.foam.bubble_size, v.params.foam.detail);
+    // A head collapses all the time (a few mm a minute): its height in steps of 0.5 mm, or
+    // the map was traced again every frame of every beer (in the browser, a draft a frame:
+    // most of a frame's CPU). A step changes the light under the glass by a few per cent
+    // of what crosses the head.
+    const auto coarse = [](double x, double step) { return std::round(x / step) * step; };
+    put(coarse(v.foam.thickness, 5e-4), coarse(v.foam.dome, 0.02), v.params.foam.density, v.params.foam.bubble_size,
+        v.params.foam.detail);
     put(geo.vessels[i].clip.x, geo.vessels[i].clip.y, geo.vessels[i].clip.z, geo.vessels[i].clip.w);
   }
   return k;

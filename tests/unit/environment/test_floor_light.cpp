@@ -8,6 +8,8 @@
 #include "core/math/random.hpp"
 #include "core/params/preset.hpp"
 #include "core/scene/motion.hpp"
+#include "core/input/driver.hpp"
+#include "core/sim/scene_simulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -205,6 +207,38 @@ TEST(FloorLight, TheInputsChangeWithWhatTheMapDependsOn) {
   EXPECT_NE(k, floor_light_inputs(lit));
   EXPECT_NE(k, floor_light_inputs(pint({"clip.enabled=true", "clip.normal=1,0,0"})));
   EXPECT_NE(k, floor_light_inputs(pint({}, "stout")));
+  // A head collapsing by a hundredth of a millimetre a frame leaves the map as it is; by a
+  // millimetre, not.
+  FrameState settling = f;
+  settling.vessels[0].foam.thickness += 1e-5;
+  EXPECT_EQ(k, floor_light_inputs(settling));
+  settling.vessels[0].foam.thickness += 1e-3;
+  EXPECT_NE(k, floor_light_inputs(settling));
+}
+
+// A still pint whose head collapses (a few mm a minute) traces its floor light again a
+// few times a minute, not every frame (a minute at 5 frames a second).
+TEST(FloorLight, AStillPintsCollapsingHeadRetracesRarely) {
+  SceneSimulation sim(single_glass_scene(resolve_scene({"lager", "pint", {}, {}})));
+  struct Still : InputDriver {
+    const char* name() const override { return "still"; }
+    MotionSample sample(double) override { return {}; }
+  } still;
+  std::vector<double> last;
+  int traced = 0;
+  double head0 = 0, head1 = 0;
+  for (int i = 1; i <= 300; ++i) {
+    sim.advance(still, 0.2 * i, 0.0);
+    const FrameState f = sim.frame();
+    (i == 1 ? head0 : head1) = f.vessels[0].foam.thickness;
+    std::vector<double> k = floor_light_inputs(f);
+    traced += k != last;
+    last = std::move(k);
+  }
+  std::printf("the head %.2f -> %.2f mm over 60 s; the floor light traced %d times in 300 frames\n", 1e3 * head0,
+              1e3 * head1, traced);
+  EXPECT_LT(head1, head0 - 1e-3);  // it did collapse
+  EXPECT_LE(traced, 12);
 }
 
 }  // namespace
