@@ -205,8 +205,10 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   const bool whole = part.x <= 0 && part.y <= 0 && part.x + part.w >= width && part.y + part.h >= height;
   glBindVertexArray(vao_);
   if (!whole) {
-    auto& background = programs_[variant | kMatCapBackgroundOnly];
-    if (!background) background = build_program(variant | kMatCapBackgroundOnly);
+    // (Without the objects' code: one small program whatever the scene holds.)
+    const int v = (variant & ~(kDecals | kDroplets | kClouds | kCondensation)) | kMatCapBackgroundOnly;
+    auto& background = programs_[v];
+    if (!background) background = build_program(v);
     glUseProgram(background->id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glEnable(GL_SCISSOR_TEST);

@@ -169,6 +169,28 @@ struct ExrDecode {
   }
 };
 
+// The header's attributes as the file lists them (name, type, a 4-byte little-endian size,
+// the value), checked where Debian's tinyexr 1.0.1 trusts them: it reads a "tiles" value
+// as 9 bytes whatever its size (a heap over-read, found by fuzz_hdr_image). The walk stops
+// at the header's end or where the file ends; tinyexr reports the damage it then meets.
+void check_exr_attributes(std::string_view bytes, const std::string& name) {
+  size_t at = 8;  // past the magic number and the version field
+  while (at < bytes.size() && bytes[at] != '\0') {
+    const size_t name_end = bytes.find('\0', at);
+    if (name_end == std::string_view::npos) return;
+    const size_t type_end = bytes.find('\0', name_end + 1);
+    if (type_end == std::string_view::npos || type_end + 5 > bytes.size()) return;
+    const auto* s = reinterpret_cast<const unsigned char*>(bytes.data() + type_end + 1);
+    const std::uint32_t size = std::uint32_t(s[0]) | std::uint32_t(s[1]) << 8 | std::uint32_t(s[2]) << 16 |
+                               std::uint32_t(s[3]) << 24;
+    if (bytes.substr(at, name_end - at) == "tiles" && size != 9)
+      throw InputError(name + ": a damaged OpenEXR header: its \"tiles\" attribute holds " + std::to_string(size) +
+                       " bytes (expected 9)");
+    if (size > bytes.size() - (type_end + 5)) return;
+    at = type_end + 5 + size;
+  }
+}
+
 HdrImage decode_exr(std::string_view bytes, const std::string& name, HdrDecodeReport* report) {
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
   EXRVersion version;
@@ -176,6 +198,7 @@ HdrImage decode_exr(std::string_view bytes, const std::string& name, HdrDecodeRe
     throw InputError(name + ": a damaged OpenEXR header (its version field)");
   if (version.multipart || version.non_image)
     throw InputError(name + ": a multi-part or deep OpenEXR file; expected a single-part scanline or tiled image");
+  check_exr_attributes(bytes, name);
   ExrDecode exr;
   const char* err = nullptr;
   if (ParseEXRHeaderFromMemory(&exr.header, &version, data, bytes.size(), &err) != TINYEXR_SUCCESS)

@@ -122,6 +122,16 @@ TEST(HdrImage, MalformedRunsAndHeadersAreRefusedNotDecoded) {
                         {"env.hdr", "ends before its last pixel"}));
 }
 
+// A tiled header whose "tiles" attribute is shorter than its 9 bytes: tinyexr 1.0.1 reads 9
+// whatever the size (fuzz_hdr_image; fuzz/regressions/hdr_image/exr-tiles-attribute-short).
+TEST(HdrImage, AShortTilesAttributeIsRefusedBeforeTinyexrReadsIt) {
+  const std::string magic("\x76\x2f\x31\x01", 4), tiled_version("\x02\x02\x00\x00", 4);
+  const std::string four_bytes("\x04\x00\x00\x00", 4);
+  const std::string file = magic + tiled_version + std::string("tiles\0tiledesc\0", 15) + four_bytes + "abcd" +
+                           std::string(1, '\0');
+  EXPECT_TRUE(test::has(error_of(file, "env.exr"), {"env.exr", "damaged OpenEXR", "\"tiles\"", "4 bytes", "expected 9"}));
+}
+
 TEST(HdrImage, EightBitImagesAreRefusedByName) {
   EXPECT_TRUE(test::has(error_of(std::string("\x89PNG\r\n\x1a\n", 8) + std::string(40, '\0'), "sky.png"),
                         {"sky.png", "a PNG image holds 8-bit colour", "Radiance .hdr or OpenEXR .exr"}));
