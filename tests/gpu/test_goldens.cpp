@@ -51,26 +51,11 @@ FrameState wine_spill() {  // a spill's stream over the rim
   const Timeline tl = load_timeline("tilt-until-spill");
   return draught::timeline_frame(tl, resolve_scene(SceneRequest{tl.preset, tl.glass, {}, {}}), 3.4);
 }
-FrameState matcap_flight() {  // the MatCap tier (docs/MATCAP.md)
-  FrameState f = make_frame(flight_scene(FlightView::StraightOn));
-  f.params.render.tier = int(RenderTier::MatCap);
-  return f;
-}
-
-// The droplets' trail, the molten gob and the cold lager's condensation drawn by the MatCap
-// tier (lenses of water and hot glass, beads and fog).
-FrameState matcap_droplets_trail() {
-  FrameState f = droplets_trail();
-  f.params.render.tier = int(RenderTier::MatCap);
-  return f;
-}
-FrameState matcap_cold_lager() {
-  FrameState f = cold_lager();
-  f.params.render.tier = int(RenderTier::MatCap);
-  return f;
-}
-FrameState matcap_molten_gob() {
-  FrameState f = molten_gob();
+// A scene drawn by the MatCap tier (docs/MATCAP.md): the flight; the droplets' trail, the
+// molten gob and the cold lager's condensation (lenses of water and hot glass, beads, fog).
+template <FrameState (*scene)()>
+FrameState in_matcap_tier() {
+  FrameState f = scene();
   f.params.render.tier = int(RenderTier::MatCap);
   return f;
 }
@@ -211,10 +196,10 @@ INSTANTIATE_TEST_SUITE_P(
         GoldenCase{"matcap_pint_decal",
                    {"lager", "pint", {"render.tier=matcap", "decal_outer.file=wordmark", "decal_outer.color=0.75,0.06,0.05",
                                       "decal_outer.width=0.07", "decal_outer.height=0.075"}, {}}, 160, 160, 3, 0.002, 64},
-        GoldenCase{"matcap_flight", {}, 256, 128, 3, 0.002, 64, nullptr, 0, matcap_flight},
-        GoldenCase{"matcap_droplets_trail", {}, 200, 150, 3, 0.002, 64, nullptr, 0, matcap_droplets_trail},
-        GoldenCase{"matcap_molten_gob", {}, 200, 150, 3, 0.003, 64, nullptr, 0, matcap_molten_gob},
-        GoldenCase{"matcap_cold_lager", {}, 160, 160, 3, 0.002, 64, nullptr, 0, matcap_cold_lager}),
+        GoldenCase{"matcap_flight", {}, 256, 128, 3, 0.002, 64, nullptr, 0, in_matcap_tier<flight_front>},
+        GoldenCase{"matcap_droplets_trail", {}, 200, 150, 3, 0.002, 64, nullptr, 0, in_matcap_tier<droplets_trail>},
+        GoldenCase{"matcap_molten_gob", {}, 200, 150, 3, 0.003, 64, nullptr, 0, in_matcap_tier<molten_gob>},
+        GoldenCase{"matcap_cold_lager", {}, 160, 160, 3, 0.002, 64, nullptr, 0, in_matcap_tier<cold_lager>}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
