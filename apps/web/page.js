@@ -212,7 +212,7 @@
     if (s.events_cap) q += ` (${s.events_cap} events)`;
     if (!s.adaptive) q += ' (fixed)';
     // The fall to the low-cost glass (docs/MATCAP.md), said where the quality is.
-    if (s.matcap_fallback) q += ' · MatCap tier: the frame budget could not be held at 50 % resolution';
+    if (s.matcap_fallback) q += ' · MatCap tier: the full tier missed the frame budget at 50 % resolution';
     else if (s.tier === 'matcap') q += ' · MatCap tier';
     $('quality').textContent = `${q} · ${s.width}×${s.height} · ${shown.toFixed(shown < 10 ? 1 : 0)} fps`;
     $('input').textContent = 'input: ' + s.input;
