@@ -91,17 +91,29 @@ void BM_ReferenceFirstHit(benchmark::State& state) {
 BENCHMARK(BM_ReferenceFirstHit);
 
 // The floor's light map (shadows and caustics traced from the rig's lights) at a still's
-// and an interactive budget: the default pint and the four-glass flight.
-void BM_FloorLight(benchmark::State& state, const char* preset, int photons) {
+// and an interactive budget: the default pint and the four-glass flight (threads 0: all).
+void BM_FloorLight(benchmark::State& state, const char* preset, int photons, int threads = 0, bool draft = false) {
   const FrameState f = make_frame(resolve_scene_objects({preset, "", {}, {}}));
   FloorLightSettings s;
   s.photons = photons;
+  s.threads = threads;
+  if (draft) {  // as SceneTextures traces a draft
+    s.texel *= 2;
+    s.max_resolution /= 2;
+  }
   for (auto _ : state) benchmark::DoNotOptimize(compute_floor_light(f, s));
 }
 BENCHMARK_CAPTURE(BM_FloorLight, pint_still, "lager", kFloorPhotonsStill)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_FloorLight, pint_interactive, "lager", kFloorPhotonsInteractive)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_FloorLight, flight_still, "flight", kFloorPhotonsStill)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_FloorLight, flight_interactive, "flight", kFloorPhotonsInteractive)->Unit(benchmark::kMillisecond)->UseRealTime();
+// The marched bodies' shadows: the droplets in front of a pint (the web page's draft and
+// still budgets: one thread there), the droplets alone, and a cooled gob on its blowpipe.
+BENCHMARK_CAPTURE(BM_FloorLight, pint_web_draft, "lager", kFloorPhotonsStill / 100, 1, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_FloorLight, droplets_still, "droplets", kFloorPhotonsStill)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_FloorLight, droplets_web_draft, "droplets", kFloorPhotonsStill / 100, 1, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_FloorLight, droplets_seed_still, "droplets-seed", kFloorPhotonsStill)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_FloorLight, gob_cooled_still, "gob-cooled", kFloorPhotonsStill)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Loading a timeline of N tilts (parse, validate, chain the tilts): linear in N, so the
 // time per tilt stays flat from 1,000 to 100,000.

@@ -56,6 +56,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/bubbles/bubble_view.cpp
   src/core/reference/intersect.cpp
   src/core/reference/optics.cpp
+  src/core/reference/bodies.cpp
   src/core/reference/path_tracer.cpp
   src/core/sim/simulation.cpp
   src/core/sim/scene_simulation.cpp

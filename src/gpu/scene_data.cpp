@@ -247,12 +247,8 @@ void make_texture(unsigned& tex, int width, int rows) {
 }  // namespace
 
 std::vector<glm::vec4> pack_floor_light(const FloorLightMap& m) {
-  std::vector<glm::vec4> texels(m.irradiance.size(), glm::vec4(1.0f));
-  for (size_t k = 0; k < texels.size(); ++k)
-    for (int c = 0; c < 3; ++c) {
-      const float open = m.unoccluded[k][c];
-      if (open > 1e-9f) texels[k][c] = m.irradiance[k][c] / open;
-    }
+  std::vector<glm::vec4> texels(m.factor.size());
+  for (size_t k = 0; k < texels.size(); ++k) texels[k] = glm::vec4(m.factor[k], 1.0f);
   return texels;
 }
 
@@ -448,7 +444,13 @@ void SceneTextures::update_floor_light(const FrameState& f) {
   e.inputs = std::move(inputs);
   FloorLightSettings s = floor_settings_;
   e.draft = draft_photons_ > 0 && !refine;
-  if (e.draft) s.photons = std::min(s.photons, draft_photons_);
+  if (e.draft) {
+    s.photons = std::min(s.photons, draft_photons_);
+    // Texels twice as wide: a quarter of the rig's exact light to evaluate per texel (most
+    // of a draft's time), and a draft's few photons spread over fewer, less noisy texels.
+    s.texel *= 2;
+    s.max_resolution = std::max(1, s.max_resolution / 2);
+  }
   e.map = floor_on_ ? compute_floor_light(f, s) : FloorLightMap{};
   floor_computed_ = true;
   if (!e.map.empty()) {

@@ -35,10 +35,9 @@ void pack_clouds(const FrameState&, const CloudScene& clouds, contract::FrameBlo
 contract::ObjectRecord pack_object(const FrameState&, int row);
 // A vessel's knot row: texel k = (r_outer[k], r_inner[k], r_outer[k + 1], r_inner[k + 1]).
 std::vector<glm::vec4> pack_knots(const Vessel&);
-
-// The floor's light map as the texture holds it: per texel, its irradiance over the
-// unoccluded irradiance, per channel (a = 1), so the shader multiplies the unoccluded light
-// it computes itself; where no light reaches the floor, 1.
+// The floor's light map as the texture holds it: its factor (FloorLightMap::factor: the
+// light over the unoccluded light per channel), a = 1; the shader multiplies the unoccluded
+// light it computes itself.
 std::vector<glm::vec4> pack_floor_light(const FloorLightMap&);
 // The backdrop's light map as the texture holds it: rgb the irradiance, a whether the
 // filtering may be trusted (BackdropLightMap::trusted).
@@ -62,7 +61,8 @@ class SceneTextures {
   // The floor's light map: computed with these settings when what it depends on changes
   // (floor_light_inputs), never else; off: none (the floor takes the unoccluded light).
   // draft_photons > 0 (interactive apps): a frame whose inputs just changed gets a draft of
-  // that many photons, traced again with the full budget on the first frame they hold still.
+  // that many photons on texels twice as wide, traced again with the full budget and
+  // texels on the first frame they hold still.
   void set_floor_light(const FloorLightSettings&, bool on = true, int draft_photons = 0);
   // Where the map lies (frame block members floor_light_*) for the frame of the last update.
   void describe_floor_light(contract::FrameBlock&) const;

@@ -5,6 +5,7 @@
 
 #include "core/foam/head_volume.hpp"
 #include "core/math/random.hpp"
+#include "core/reference/bodies.hpp"
 #include "core/reference/media.hpp"
 #include "core/reference/free_flight.hpp"
 #include "core/reference/optics.hpp"
@@ -46,7 +47,8 @@ double radical_inverse(int base, std::uint64_t k) {
   return r;
 }
 
-// A glass as the photons aim at it: the sphere around its bounding cylinder.
+// What the photons aim at: the sphere around a glass's bounding cylinder, or around a
+// droplet trail's or a cloud's box.
 struct Target {
   glm::dvec3 centre{0.0};
   double radius = 0;
@@ -90,7 +92,7 @@ struct Lane {
 
 class PhotonTracer {
  public:
-  PhotonTracer(const FrameState& f, const FloorLightMap& map) : geo_(scene_geometry(f)), map_(map) {
+  PhotonTracer(const FrameState& f, const FloorLightMap& map) : geo_(scene_geometry(f)), bodies_(f, true), map_(map) {
     // The heads without their big bubbles (ignored, as the rising bubbles).
     frames_.reserve(f.vessels.size());
     for (const VesselFrame& vf : f.vessels) {
@@ -114,12 +116,14 @@ class PhotonTracer {
       m.liquid_absorption = glm::dvec3(vf.liquid_absorption) + glm::dvec3(haze) - m.haze;
       media_.push_back(m);
     }
-    texel_ = {map.size.x / map.width, map.size.y / map.height};
   }
+
+  const MarchedBodies& bodies() const { return bodies_; }
 
   // One photon of power `power` leaving x along d (unit).
   void trace(Ray ray, glm::dvec3 power, Rng& rng, Lane& lane) const {
-    Hit h = first_hit(geo_, ray, kEps);
+    glm::dvec4 attrs(0.0);  // a cloud's surface: its temperature and colour there
+    Hit h = bodies_.nearest(geo_, ray, kEps, MediumKind::Air, -1, attrs);
     if (!h.valid() || h.m == Material::Floor) return;  // its light is the unoccluded one
     lane.stats.hit += power;
     // Where its straight line would have met the backdrop: on the floor, the map's; on the
@@ -135,10 +139,13 @@ class PhotonTracer {
     MediumKind medium = MediumKind::Air;
     int obj = -1;
     for (int events = 0;; ++events) {
-      if (events > 0) h = first_hit(geo_, ray, kEps);
+      if (events > 0) h = bodies_.nearest(geo_, ray, kEps, medium, obj, attrs);
       const double t_end = h.valid() ? h.t : (medium == MediumKind::Air ? kInf : 0.0);
       const glm::dvec3 before = power;
-      if (medium == MediumKind::Glass) {
+      if (medium == MediumKind::Droplet || medium == MediumKind::Cloud) {
+        glm::dvec3 glow(0.0);  // a hot blob's own light is not the lights' (the map holds theirs)
+        bodies_.chord(medium, obj, t_end, attrs.x, power, glow);
+      } else if (medium == MediumKind::Glass) {
         power *= glm::exp(-media_[size_t(obj)].glass_absorption * t_end);
       } else if (medium == MediumKind::Liquid) {
         double t_scatter;
@@ -178,6 +185,12 @@ class PhotonTracer {
         lane.stats.absorbed += power;
         return;
       }
+      if (h.m == Material::Droplet || h.m == Material::Cloud) {  // water or a blob against the air
+        const glm::dvec3 untinted = power;
+        bodies_.cross(h, attrs, ray, medium, obj, power, rng);
+        lane.stats.absorbed += untinted - power;  // a cloud point's colour, where it crossed
+        continue;
+      }
       const Medium& m = media_[size_t(h.object)];
       const bool below = geo_.vessels[size_t(h.object)].liquid.below(m.local_point(p));
       const MediumKind next = medium_across(h.m, medium, below);
@@ -185,19 +198,14 @@ class PhotonTracer {
       const double n1 = m.ior(medium), n2 = m.ior(next);
       const double F = fresnel_dielectric(-glm::dot(n, ray.d), n1, n2);
       ray.o = p;
-      if (rng.uniform() < F) {
-        ray.d = reflect_dir(ray.d, n);
-      } else {
-        ray.d = glm::normalize(*refract_dir(ray.d, n, n1 / n2));
-        medium = next;
-        obj = next == MediumKind::Air ? -1 : h.object;
-      }
+      fresnel_turn(ray, n, n1, n2, F, rng.uniform(), next, h.object, medium, obj);
     }
   }
 
   // Adds power (W) at floor point p with the kernel, as irradiance.
   void splat(const glm::dvec3& p, const glm::dvec3& power, Lane& lane) const {
-    const double u = (p.x - map_.origin.x) / texel_.x - 0.5, v = (p.z - map_.origin.y) / texel_.y - 0.5;
+    const glm::dvec2 texel(map_.size.x / map_.width, map_.size.y / map_.height);
+    const double u = (p.x - map_.origin.x) / texel.x - 0.5, v = (p.z - map_.origin.y) / texel.y - 0.5;
     const int reach = int(std::ceil(2 * kKernelScale));
     const int i0 = int(std::floor(u)) - reach + 1, j0 = int(std::floor(v)) - reach + 1;
     constexpr int kTaps = 8;
@@ -209,7 +217,7 @@ class PhotonTracer {
       sx += wx[k];
       sy += wy[k];
     }
-    const glm::dvec3 e = power / (sx * sy * texel_.x * texel_.y);
+    const glm::dvec3 e = power / (sx * sy * texel.x * texel.y);
     for (int b = 0; b < taps; ++b) {
       const int j = j0 + b;
       if (j < 0 || j >= map_.height || wy[b] <= 0) continue;
@@ -244,10 +252,10 @@ class PhotonTracer {
 
   std::vector<VesselFrame> frames_;
   SceneGeometry geo_;
+  MarchedBodies bodies_;  // the droplets and the clouds: their shadows and caustics too
   std::vector<HeadVolume> heads_;
   std::vector<Medium> media_;
   const FloorLightMap& map_;
-  glm::dvec2 texel_{1.0};
 };
 
 // The sphere around a glass's bounding cylinder, as it stands.
@@ -273,17 +281,49 @@ std::vector<glm::dvec3> light_points(const AreaLight& l) {
   return pts;
 }
 
-// The rect of the floor where the glasses may change the light: every light point's shadow of
-// every corner of every glass's bounds, each reaching at most three glass heights from it,
-// widened by a glass's bound radius (light bent by the glass lands beside its shadow).
-void place_rect(const FrameState& f, const LightRig& emitters, const FloorLightSettings& s, FloorLightMap& map) {
+// What casts light and shade on the floor, as the rect sees it: the corners of its box, the
+// point of the floor under it, how far its shadow may reach from there, and how far light
+// it bends lands beside its shadow.
+struct Caster {
+  std::array<glm::dvec3, 8> corners;
+  glm::dvec2 foot{0.0};
+  double reach = 0, spread = 0;
+};
+
+// A glass: its bounding cylinder as it stands; its shadow reaches three glass heights.
+Caster caster_of(const VesselFrame& v) {
+  Caster c;
+  const double top = v.vessel.height + v.vessel.rim_minor, b = v.vessel.bound_radius;
+  for (int k = 0; k < 8; ++k)
+    c.corners[size_t(k)] = v.pose.position + v.pose.orientation * glm::dvec3(k & 1 ? b : -b, k & 2 ? top : 0, k & 4 ? b : -b);
+  c.foot = {v.pose.position.x, v.pose.position.z};
+  c.reach = 3 * top;
+  c.spread = b;
+  return c;
+}
+
+// A droplet trail or a cloud: the box around its sphere; its shadow reaches three times the
+// sphere's top's height.
+Caster caster_of(const Target& t) {
+  Caster c;
+  for (int k = 0; k < 8; ++k)
+    c.corners[size_t(k)] = t.centre + t.radius * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+  c.foot = {t.centre.x, t.centre.z};
+  c.reach = 3 * std::max(t.centre.y + t.radius, t.radius);
+  c.spread = t.radius;
+  return c;
+}
+
+// The rect of the floor where the casters may change the light: every light point's shadow
+// of every corner of every caster, each reaching at most the caster's reach from its foot,
+// widened by its spread (light bent by a glass lands beside its shadow).
+void place_rect(const std::vector<Caster>& casters, const LightRig& emitters, const FloorLightSettings& s,
+                FloorLightMap& map) {
   glm::dvec2 lo(kInf), hi(-kInf);
-  for (const VesselFrame& v : f.vessels) {
-    const double top = v.vessel.height + v.vessel.rim_minor, b = v.vessel.bound_radius;
-    const double reach = 3 * top;
-    const glm::dvec2 foot(v.pose.position.x, v.pose.position.z);
-    for (int k = 0; k < 8; ++k) {
-      const glm::dvec3 g = v.pose.position + v.pose.orientation * glm::dvec3(k & 1 ? b : -b, k & 2 ? top : 0, k & 4 ? b : -b);
+  for (const Caster& c : casters) {
+    const double reach = c.reach, b = c.spread;
+    const glm::dvec2 foot = c.foot;
+    for (const glm::dvec3& g : c.corners) {
       const glm::dvec2 gxz(g.x, g.z);
       lo = glm::min(lo, gxz - b);
       hi = glm::max(hi, gxz + b);
@@ -350,6 +390,16 @@ glm::dvec2 FloorLightMap::texel_centre(int i, int j) const {
   return origin + glm::dvec2((i + 0.5) * size.x / width, (j + 0.5) * size.y / height);
 }
 
+glm::dvec3 FloorLightMap::unoccluded(int i, int j) const {
+  if (even) return even_light;
+  const glm::dvec2 c = texel_centre(i, j);
+  return unoccluded_floor_irradiance(lights, {c.x, 0, c.y});
+}
+
+glm::dvec3 FloorLightMap::at(int i, int j) const {
+  return glm::max(unoccluded(i, j) + glm::dvec3(change[size_t(j) * size_t(width) + size_t(i)]), glm::dvec3(0.0));
+}
+
 glm::dvec3 FloorLightMap::sample(double x, double z) const {
   if (empty()) return glm::dvec3(0.0);
   const double u = std::clamp((x - origin.x) / size.x * width - 0.5, 0.0, width - 1.0);
@@ -357,8 +407,8 @@ glm::dvec3 FloorLightMap::sample(double x, double z) const {
   const int i = std::min(int(u), width - 2 < 0 ? 0 : width - 2), j = std::min(int(v), height - 2 < 0 ? 0 : height - 2);
   const int i1 = std::min(i + 1, width - 1), j1 = std::min(j + 1, height - 1);
   const double fu = u - i, fv = v - j;
-  const glm::dvec3 a = glm::mix(glm::dvec3(at(i, j)), glm::dvec3(at(i1, j)), fu);
-  const glm::dvec3 b = glm::mix(glm::dvec3(at(i, j1)), glm::dvec3(at(i1, j1)), fu);
+  const glm::dvec3 a = glm::mix(at(i, j), at(i1, j), fu);
+  const glm::dvec3 b = glm::mix(at(i, j1), at(i1, j1), fu);
   return glm::mix(a, b, fv);
 }
 
@@ -409,12 +459,36 @@ FloorLightMap compute_floor_light(const FrameState& f, const FloorLightSettings&
   const auto start = std::chrono::steady_clock::now();
   FloorLightMap map;
   const LightRig emitters = floor_emitters(f);
-  if (!scene_geometry(f).backdrop.present || emitters.lights.empty() || f.vessels.empty()) return map;
-  place_rect(f, emitters, s, map);
-
+  if (!scene_geometry(f).backdrop.present || emitters.lights.empty()) return map;
+  const PhotonTracer tracer(f, map);
   std::vector<Target> targets;
-  for (const VesselFrame& v : f.vessels) targets.push_back(target_of(v));
-  const std::vector<int> counts = photon_counts(emitters, targets, std::max(s.photons, 0));
+  std::vector<Caster> casters;
+  for (const VesselFrame& v : f.vessels) {
+    targets.push_back(target_of(v));
+    casters.push_back(caster_of(v));
+  }
+  std::vector<bool> cloud(targets.size(), false);
+  for (const MarchedBodies::Bound& b : tracer.bodies().bounds()) {
+    targets.push_back({b.centre, b.radius});
+    casters.push_back(caster_of(targets.back()));
+    cloud.push_back(b.cloud);
+  }
+  if (targets.empty()) return map;
+  place_rect(casters, emitters, s, map);
+  // The clouds' photons from a budget of their own, kCloudPhotonShare of the glasses' and
+  // droplets': each costs tens of theirs (the march through the tree), and a blob's soft
+  // shadow needs fewer.
+  std::vector<Target> solid, blobs;
+  for (size_t g = 0; g < targets.size(); ++g) (cloud[g] ? blobs : solid).push_back(targets[g]);
+  const int budget = std::max(s.photons, 0);
+  const std::vector<int> solid_counts = photon_counts(emitters, solid, budget);
+  const std::vector<int> blob_counts = photon_counts(emitters, blobs, int(budget * kCloudPhotonShare));
+  std::vector<int> counts;  // per (light, target) pair, as targets lists them
+  for (size_t l = 0; l < emitters.lights.size(); ++l) {
+    size_t a = 0, b = 0;
+    for (size_t g = 0; g < targets.size(); ++g)
+      counts.push_back(cloud[g] ? blob_counts[l * blobs.size() + b++] : solid_counts[l * solid.size() + a++]);
+  }
   std::vector<long long> first{0};  // the first photon index of each pair
   for (int n : counts) first.push_back(first.back() + n);
   const long long total = first.back();
@@ -424,7 +498,6 @@ FloorLightMap compute_floor_light(const FrameState& f, const FloorLightSettings&
     Rng rng(s.seed, pair, ~std::uint64_t(0));
     for (double& u : shifts[pair]) u = rng.uniform();
   }
-  const PhotonTracer tracer(f, map);
   const size_t texels = size_t(map.width) * size_t(map.height);
   std::vector<Lane> lanes(kLanes);
   const size_t G = targets.size();
@@ -476,21 +549,24 @@ FloorLightMap compute_floor_light(const FrameState& f, const FloorLightSettings&
   work(0);
   for (std::thread& t : pool) t.join();
 
-  // The exact unoccluded light per texel, plus the lanes' change in a fixed order.
-  map.irradiance.resize(texels);
-  map.unoccluded.resize(texels);
+  // The lanes' change in a fixed order, and the factor the picture reads: where a photon
+  // changed the light, over the exact unoccluded light there (noise may dip below zero).
+  map.lights = f.lights;
+  map.even = bool(f.environment.image);  // the image's whole light: the same everywhere
+  if (map.even) map.even_light = f.environment.sky.at({0, 1, 0});
+  map.change.assign(texels, glm::vec3(0.0f));
+  map.factor.assign(texels, glm::vec3(1.0f));
   auto rows = [&](int t) {
     for (int j = t; j < map.height; j += threads)
       for (int i = 0; i < map.width; ++i) {
-        const glm::dvec2 c = map.texel_centre(i, j);
-        // Under an image, its whole light (the same everywhere: the image is infinitely far);
-        // the proxies' photons only change it near the glasses.
-        glm::dvec3 e = f.environment.image ? f.environment.sky.at({0, 1, 0})
-                                           : unoccluded_floor_irradiance(f.lights, {c.x, 0, c.y});
         const size_t at = size_t(j) * size_t(map.width) + size_t(i);
-        map.unoccluded[at] = glm::vec3(e);
-        for (const Lane& lane : lanes) e += lane.change[at];
-        map.irradiance[at] = glm::vec3(glm::max(e, glm::dvec3(0.0)));  // noise may dip below zero
+        glm::dvec3 change(0.0);
+        for (const Lane& lane : lanes) change += lane.change[at];
+        if (change == glm::dvec3(0.0)) continue;
+        map.change[at] = glm::vec3(change);
+        const glm::dvec3 open = map.unoccluded(i, j);
+        for (int c = 0; c < 3; ++c)
+          if (open[c] > 1e-9) map.factor[at][c] = float(std::max(open[c] + change[c], 0.0) / open[c]);
       }
   };
   pool.clear();
@@ -549,6 +625,21 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
     put(coarse(v.foam.thickness, 5e-4), coarse(v.foam.dome, 0.02), v.params.foam.density, v.params.foam.bubble_size,
         v.params.foam.detail);
     put(geo.vessels[i].clip.x, geo.vessels[i].clip.y, geo.vessels[i].clip.z, geo.vessels[i].clip.w);
+  }
+  // The droplets as the march sees them, and each cloud by its points' version (a new one
+  // whenever they move: an animated cloud is traced again each frame it moves).
+  put(f.droplets.size(), f.clouds.size());
+  for (const DropletsFrame& d : f.droplets) {
+    put(int(d.field.kernel), d.field.blend, d.field.noise_amplitude, d.field.noise_frequency, d.field.spheres.size());
+    for (const DropletSphere& sp : d.field.spheres) put(sp.centre.x, sp.centre.y, sp.centre.z, sp.radius);
+    put(d.params.ior);
+    put3(d.params.absorption);
+  }
+  for (const CloudFrame& c : f.clouds) {
+    k.push_back(double(c.version));  // exact: versions are counts
+    put(c.material, c.threshold, c.glow_depth, c.temperature, c.ior);
+    put3(c.absorption);
+    put3(c.color);
   }
   return k;
 }

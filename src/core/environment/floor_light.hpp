@@ -3,14 +3,16 @@
 // give each point, computed by tracing the actual geometry.
 //
 // Each texel is the exact unoccluded irradiance (AreaLight::irradiance_factor) plus a traced
-// change: photons leave each light towards each glass's bounding sphere and follow the
-// reference intersector with the path tracer's media rules (Fresnel choosing reflection or
-// refraction, Beer-Lambert in glass and drink, the drink's haze scattering, the head's
-// optical depth). A photon that meets a glass adds its power where it reaches the floor and
-// subtracts it where its straight line would have reached it, so the map is exact far from
-// the glasses and its noise stays near them. Rising and big bubbles are ignored (the head is
-// taken without its big bubbles), as is light the head scatters. The picture's twin reads
-// the map as a texture: shaders/lib/environment/floor_light.glsl.
+// change: photons leave each light towards each glass's bounding sphere (and the spheres
+// around the droplets and each cloud) and follow the reference intersector and marches with
+// the path tracer's media rules (Fresnel choosing reflection or refraction, Beer-Lambert in
+// glass, drink, water and blob, the drink's haze scattering, the head's optical depth;
+// core/reference/bodies for the droplets and clouds). A photon that meets an object adds
+// its power where it reaches the floor and subtracts it where its straight line would have
+// reached it, so the map is exact far from the objects and its noise stays near them.
+// Rising and big bubbles are ignored (the head is taken without its big bubbles), as are a
+// hot blob's own glow and light the head scatters. The picture's twin reads the map as a
+// texture: shaders/lib/environment/floor_light.glsl.
 #pragma once
 
 #include "core/scene/frame.hpp"
@@ -29,8 +31,12 @@ inline constexpr int kFloorPhotonsStill = 500000;
 // Once an interactive scene holds still: five times faster, about 2 % noise.
 inline constexpr int kFloorPhotonsInteractive = 100000;
 
+// The clouds' photons: this share of the budget, on top of it (a cloud's photon costs tens
+// of a glass's).
+inline constexpr double kCloudPhotonShare = 0.125;
+
 struct FloorLightSettings {
-  int photons = kFloorPhotonsStill;  // over all lights and glasses
+  int photons = kFloorPhotonsStill;  // over all lights, glasses and droplets
   std::uint64_t seed = 1;
   int threads = 0;                   // 0: the hardware's, at most kFloorLightLanes
   double texel = 0.0025;             // m, the finest texel; coarser when the rect is big
@@ -54,14 +60,24 @@ struct FloorLightMap {
   glm::dvec2 origin{0.0};  // world (x, z) of the rect's corner
   glm::dvec2 size{0.0};    // m along x and z
   int width = 0, height = 0;
-  std::vector<glm::vec3> irradiance;  // W/m^2, row-major, row j along z, texel centres
-  std::vector<glm::vec3> unoccluded;  // the same with nothing in between (exact)
+  // Per texel (row-major, row j along z, texel centres): the traced change (W/m^2), and
+  // what the picture reads, the light over the unoccluded light per channel (1 where no
+  // photon changed it: the unoccluded light is evaluated only where one did, most of a
+  // draft's time otherwise).
+  std::vector<glm::vec3> change;
+  std::vector<glm::vec3> factor;
   FloorLightStats stats;
+  LightRig lights;             // whose unoccluded light the texels change
+  bool even = false;           // under an image: its light is the same everywhere,
+  glm::dvec3 even_light{0.0};  // this
 
   bool empty() const { return width == 0 || height == 0; }
   double texel_area() const { return size.x / width * (size.y / height); }
   glm::dvec2 texel_centre(int i, int j) const;
-  const glm::vec3& at(int i, int j) const { return irradiance[size_t(j) * size_t(width) + size_t(i)]; }
+  // The exact irradiance with nothing in between at texel (i, j), and the map's (that plus
+  // the change, at least 0).
+  glm::dvec3 unoccluded(int i, int j) const;
+  glm::dvec3 at(int i, int j) const;
   // The map at world (x, z), bilinear between texel centres as GL's linear filter, clamped
   // to the edge.
   glm::dvec3 sample(double x, double z) const;
@@ -80,12 +96,13 @@ LightRig floor_emitters(const FrameState&);
 // The irradiance the rig gives floor point p (y = 0) with nothing in between.
 glm::dvec3 unoccluded_floor_irradiance(const LightRig&, const glm::dvec3& p);
 
-// The map of the frame (empty when there is no floor, no light or no glass).
+// The map of the frame (empty when there is no floor, no light or no object).
 FloorLightMap compute_floor_light(const FrameState&, const FloorLightSettings& = {});
 
 // Everything the map depends on, as numbers rounded to 1e-5 (of a metre, or of the unit:
 // nothing a picture shows): poses, glass shapes, liquid surfaces,
-// drink, glass and head parameters, cross-sections, the lights, the floor. Equal inputs give
+// drink, glass and head parameters, cross-sections, the droplets, the clouds' versions, the
+// lights, the floor. Equal inputs give
 // an equal map, so a renderer recomputes it only when these change.
 std::vector<double> floor_light_inputs(const FrameState&);
 

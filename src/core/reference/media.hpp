@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/reference/intersect.hpp"
+#include "core/reference/optics.hpp"
 
 namespace draught {
 
@@ -23,6 +24,22 @@ constexpr MediumKind medium_across(Material m, MediumKind from, bool below_liqui
   if (from != MediumKind::Glass) return MediumKind::Glass;
   if (m == Material::GlassInner || m == Material::CavityFloor) return below_liquid ? MediumKind::Liquid : MediumKind::Air;
   return MediumKind::Air;
+}
+
+// Fresnel's choice at a smooth interface for a path (or a photon) at its point (n: the
+// normal facing it; indices n1 -> n2; F the reflectance; u uniform): the mirror direction,
+// or the refraction into `next` (the object `next_obj` of it; -1 in the air). True when it
+// reflected off a surface seen from the air.
+inline bool fresnel_turn(Ray& ray, const glm::dvec3& n, double n1, double n2, double F, double u, MediumKind next,
+                         int next_obj, MediumKind& medium, int& obj) {
+  if (u < F) {
+    ray.d = reflect_dir(ray.d, n);
+    return medium == MediumKind::Air;
+  }
+  ray.d = glm::normalize(*refract_dir(ray.d, n, n1 / n2));  // F < 1: it refracts
+  medium = next;
+  obj = next == MediumKind::Air ? -1 : next_obj;
+  return false;
 }
 
 }  // namespace draught

@@ -7,10 +7,8 @@
 #include "core/foam/head_volume.hpp"
 #include "core/math/basis.hpp"
 #include "core/math/random.hpp"
-#include "core/pointcloud/blackbody.hpp"
-#include "core/pointcloud/cloud_scene.hpp"
-#include "core/pointcloud/field.hpp"
 #include "core/output/tonemap.hpp"
+#include "core/reference/bodies.hpp"
 #include "core/reference/media.hpp"
 #include "core/reference/free_flight.hpp"
 #include "core/reference/optics.hpp"
@@ -31,10 +29,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kEps = 1e-7;  // where a path starts again past the surface it left
-// The same for the marched surfaces (droplets, clouds): the clouds' march is the picture's
-// float one, its hits placed to about a tenth of a micrometre, so a path leaving one
-// starts 2 um on, as the picture's does (a march from the wrong side stops at once).
-constexpr double kMarchEps = 2e-6;
 // Of the light an etched (frosted) decal scatters, the part it sends back to the side it
 // came from; the rest goes through, scattered (the picture's lib/vessel/decal.glsl uses
 // the same share).
@@ -101,7 +95,7 @@ class Tracer {
  public:
   Tracer(const FrameState& f, const ReferenceSettings& s, const CameraBasis& cam)
       : frame_(f), settings_(s), geo_(scene_geometry(f, true)), studio_(f.params), environment_(studio_),
-        lights_(f.lights.lights), cam_(cam) {
+        lights_(f.lights.lights), cam_(cam), bodies_(f) {
     for (size_t i = 0; i < f.vessels.size(); ++i) {
       const VesselFrame& vf = f.vessels[i];
       heads_.emplace_back(vf, geo_.vessels[i]);
@@ -123,10 +117,6 @@ class Tracer {
       m.foam_g = vf.params.foam.anisotropy;
       media_.push_back(m);
     }
-    if (!f.droplets.empty() && !droplet_bounds(f.droplets.front().field).empty) droplets_ = &f.droplets.front();
-    clouds_.update(f.clouds);
-    for (size_t c = 0; c < std::min(f.clouds.size(), clouds_.ranges().size()); ++c)
-      cloud_refs_.push_back(cloud_ref(clouds_.ranges()[c], f.clouds[c].threshold));
   }
 
   // The radiance arriving at the eye along the camera ray.
@@ -145,7 +135,7 @@ class Tracer {
     const glm::dvec3 eye = ray.o;
     for (;;) {
       glm::dvec4 attrs(0.0);  // a cloud's surface: its temperature and colour there
-      const Hit h = nearest_surface(ray, medium, obj, attrs);
+      const Hit h = bodies_.nearest(geo_, ray, kEps, medium, obj, attrs);
       // A path inside a glass or drink that meets none of its surfaces has slipped out
       // (a grazing turn about a smooth normal can leave the frustum's side), as has one in
       // a droplet or a blob whose march ran out of steps: it leaves into the studio from
@@ -154,10 +144,8 @@ class Tracer {
       // The medium along the segment: absorption, or a scattering event before its end.
       if (medium == MediumKind::Glass) {
         thr *= glm::exp(-media_[size_t(obj)].glass_absorption * t_end);
-      } else if (medium == MediumKind::Droplet) {
-        thr *= glm::exp(-glm::dvec3(droplets_->params.absorption) * t_end);
-      } else if (medium == MediumKind::Cloud) {
-        cloud_chord(obj, t_end, attrs.x, thr, L);
+      } else if (medium == MediumKind::Droplet || medium == MediumKind::Cloud) {
+        bodies_.chord(medium, obj, t_end, attrs.x, thr, L);
       } else if (medium == MediumKind::Liquid) {
         const VesselMedia& m = media_[size_t(obj)];
         double t_scatter;
@@ -243,7 +231,7 @@ class Tracer {
       }
       if (++surfaces > settings_.max_surfaces) break;
       if (h.m == Material::Droplet || h.m == Material::Cloud) {  // water or a blob against the air
-        sees_lights = cross_body(h, attrs, ray, medium, obj, thr, rng);
+        sees_lights = bodies_.cross(h, attrs, ray, medium, obj, thr, rng);
         mis.pdf = -1;
         continue;
       }
@@ -282,103 +270,6 @@ class Tracer {
   }
 
  private:
-  // Fresnel's choice at a smooth interface for a path at its point (n: the normal facing
-  // the path; indices n1 -> n2; F the reflectance; u uniform): the mirror direction, or the
-  // refraction into `next` (the object `next_obj` of it; -1 in the air). True when it
-  // reflected off a surface seen from the air (a light is then seen in it).
-  static bool fresnel_turn(Ray& ray, const glm::dvec3& n, double n1, double n2, double F, double u, MediumKind next,
-                           int next_obj, MediumKind& medium, int& obj) {
-    if (u < F) {
-      ray.d = reflect_dir(ray.d, n);
-      return medium == MediumKind::Air;
-    }
-    ray.d = glm::normalize(*refract_dir(ray.d, n, n1 / n2));  // F < 1: it refracts
-    medium = next;
-    obj = next == MediumKind::Air ? -1 : next_obj;
-    return false;
-  }
-
-  // The nearest surface along the ray for a path in `medium` (of object `obj`), as the
-  // picture's search (lib/scene/trace.glsl) takes them: in the air every vessel, the
-  // backdrop, the droplets and the clouds; in a glass or a drink the vessels; in a droplet
-  // or a cloud's blob only its own surface (the objects are taken not to overlap). attrs:
-  // a cloud hit's temperature and colour (the march's k-weighted means).
-  Hit nearest_surface(const Ray& ray, MediumKind medium, int obj, glm::dvec4& attrs) const {
-    if (medium == MediumKind::Glass || medium == MediumKind::Liquid) return first_hit(geo_, ray, kEps);
-    Hit h;
-    if (medium == MediumKind::Air) h = first_hit(geo_, ray, kEps);
-    march_bodies(ray, medium, obj, h, attrs);
-    return h;
-  }
-
-  // Narrows h to a droplet's or a cloud's surface nearer than it, by the project's own
-  // marches: core/droplets march_droplets (double) and core/pointcloud march_cloud (the
-  // float twin of the picture's, through the cloud's tree). From the air every body is
-  // marched, from inside a droplet or a blob only its own.
-  void march_bodies(const Ray& ray, MediumKind medium, int obj, Hit& h, glm::dvec4& attrs) const {
-    if (droplets_ && (medium == MediumKind::Air || medium == MediumKind::Droplet)) {
-      if (const auto d = march_droplets(droplets_->field, ray.o, ray.d, kMarchEps, h.t, medium == MediumKind::Droplet))
-        h = {d->t, d->n, Material::Droplet, -1};
-    }
-    for (size_t c = 0; c < cloud_refs_.size(); ++c) {
-      const bool own = medium == MediumKind::Cloud && int(c) == obj;
-      if (medium != MediumKind::Air && !own) continue;
-      const auto k = march_cloud(clouds_.texels(), cloud_refs_[c], glm::vec3(ray.o), glm::vec3(ray.d), float(kMarchEps),
-                                 float(h.t), own);
-      if (k && k->t < h.t) {
-        h = {double(k->t), glm::dvec3(k->n), Material::Cloud, int(c)};
-        attrs = glm::dvec4(k->attrs);
-      }
-    }
-  }
-
-  // The surface h of a droplet or a cloud's blob, against the air: a smooth dielectric
-  // (Fresnel chooses reflection or refraction, total internal reflection included); a
-  // cloud point's colour tints the light that crosses the surface there, as the
-  // picture's shade_cloud does. True when the path reflected off it from the air.
-  bool cross_body(const Hit& h, const glm::dvec4& attrs, Ray& ray, MediumKind& medium, int& obj, glm::dvec3& thr,
-                  Rng& rng) const {
-    const bool droplet = h.m == Material::Droplet;
-    const double ior = droplet ? double(droplets_->params.ior) : double(frame_.clouds[size_t(h.object)].ior);
-    const bool inside = medium != MediumKind::Air;
-    const glm::dvec3 hn = glm::length(h.n) > 0 ? h.n : -ray.d;  // (a march out of steps inside gives none)
-    const glm::dvec3 n = glm::dot(hn, ray.d) < 0 ? hn : -hn;
-    const double n1 = inside ? ior : 1.0, n2 = inside ? 1.0 : ior;
-    const double F = fresnel_dielectric(-glm::dot(n, ray.d), n1, n2);
-    ray.o = ray.at(h.t);
-    const MediumKind before = medium;
-    const MediumKind next = inside ? MediumKind::Air : (droplet ? MediumKind::Droplet : MediumKind::Cloud);
-    const bool reflected = fresnel_turn(ray, n, n1, n2, F, rng.uniform(), next, h.object, medium, obj);
-    const glm::dvec3 tint(attrs.y, attrs.z, attrs.w);  // 0: the points give no colour
-    if (medium != before && max3(tint) > 0) thr *= tint;
-    return reflected;
-  }
-
-  // Through cloud c's blob for t, the chord ending where the temperature is `kelvin` (0:
-  // the points give none there): Beer-Lambert, and hot glass's glow by the picture's model
-  // (shade_cloud, passes/path.frag.glsl): a grey visible extinction kappa, 0 at 700 K
-  // rising linearly to 1 / glow_depth at 1100 K and above, that emits as much as it
-  // absorbs (Kirchhoff): the chord adds (1 - exp(-kappa t)) x glow x kGlowPerNit x the
-  // blackbody's luminance-scaled colour (the GPU's table, within a fraction of a percent
-  // of Planck's) at the temperature where the chord ends; the coloured absorption dims
-  // what lies beyond, not the glow.
-  void cloud_chord(int c, double t, double kelvin, glm::dvec3& thr, glm::dvec3& L) const {
-    const CloudFrame& cf = frame_.clouds[size_t(c)];
-    if (!(kelvin > 0)) kelvin = cf.temperature;
-    const double kappa =
-        cf.glow_depth > 0 ? std::clamp((kelvin - 700.0) / 400.0, 0.0, 1.0) / double(cf.glow_depth) : 0.0;
-    const double hot = std::exp(-kappa * t);
-    if (cf.glow > 0 && hot < 1) L += thr * (1 - hot) * double(cf.glow) * kGlowPerNit * glow_table(kelvin);
-    thr *= glm::exp(-glm::dvec3(cf.absorption) * t) * hot;
-  }
-
-  // A blackbody's radiance in cd/m^2 of luminance, as the picture's table gives it.
-  glm::dvec3 glow_table(double kelvin) const {
-    static const std::vector<glm::vec4> table =
-        blackbody_table(contract::kBlackbodyEntries, contract::kBlackbodyMinK, contract::kBlackbodyMaxK);
-    return blackbody_table_lookup(table, contract::kBlackbodyMinK, contract::kBlackbodyMaxK, kelvin);
-  }
-
   // What a path sees when it leaves the scene: the studio's sky (an image's weighted
   // against the last vertex's sampling of it), or the screen when it is the background
   // (found by the paths alone: weight 1).
@@ -504,7 +395,7 @@ class Tracer {
     Hit body;  // a droplet or a cloud in the way
     body.t = dist;
     glm::dvec4 attrs;
-    march_bodies(ray, MediumKind::Air, -1, body, attrs);
+    bodies_.march(ray, MediumKind::Air, -1, body, attrs);
     if (body.valid()) return 0;
     double t_light = dist * (1 - 1e-9);
     if (nearest_light(ray, t_light) >= 0) return 0;
@@ -612,9 +503,7 @@ class Tracer {
   CameraBasis cam_;  // the picture's camera: the screen as background is seen across its picture plane
   std::vector<HeadVolume> heads_;
   std::vector<VesselMedia> media_;
-  const DropletsFrame* droplets_ = nullptr;  // the frame's droplets (at most one object); null: none
-  CloudScene clouds_;                        // the frame's clouds as the picture's march reads them
-  std::vector<CloudRef> cloud_refs_;
+  MarchedBodies bodies_;  // the droplets and the clouds
 };
 
 }  // namespace

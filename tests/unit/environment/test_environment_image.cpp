@@ -131,7 +131,7 @@ TEST_F(EnvironmentImage, TheImageReplacesTheRigAndTheSweepIsOnlyAFloor) {
   const FloorLightMap map = compute_floor_light(f, s);
   ASSERT_FALSE(map.empty());
   const double open = f.environment.sky.at({0, 1, 0}).r;
-  EXPECT_NEAR(map.unoccluded[0].r, open, 1e-6 * open);
+  EXPECT_NEAR(map.unoccluded(0, 0).r, open, 1e-6 * open);
   const glm::dvec3 foot = f.vessels[0].pose.position;
   const glm::dvec3 away = glm::normalize(glm::dvec3(-0.5, 0, 0.3));  // the lamp's shadow falls this way
   const glm::dvec3 shadow = foot + away * 0.09;
