@@ -140,6 +140,30 @@ TEST(FloorLight, TheChangeIntegratesToMinusThePowerAbsorbedAndSentAway) {
   EXPECT_LT(mean(s.outside), 3e-3 * mean(s.hit)) << "the rect misses where the light lands";
 }
 
+// What the picture reads is the map over the exact open light, where a photon changed it
+// (the open light there interpolated between exact texels 1 cm apart), and 1 elsewhere.
+TEST(FloorLight, TheFactorIsTheMapOverTheOpenLight) {
+  const FrameState f = pint({}, "stout");
+  const FloorLightMap m = compute_floor_light(f, budget(50000));
+  double worst = 0;
+  int changed = 0;
+  for (int j = 0; j < m.height; ++j)
+    for (int i = 0; i < m.width; ++i) {
+      const size_t k = size_t(j) * size_t(m.width) + size_t(i);
+      const glm::dvec3 open = m.unoccluded(i, j), exact = m.at(i, j) / open;
+      if (m.change[k] == glm::vec3(0.0f)) {
+        EXPECT_EQ(m.factor[k], glm::vec3(1.0f));
+        continue;
+      }
+      ++changed;
+      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(double(m.factor[k][c]) - exact[c]));
+    }
+  std::printf("factor: %d of %d texels changed; largest |factor - map / open light| %.2e\n", changed,
+              m.width * m.height, worst);
+  ASSERT_GT(changed, 100);
+  EXPECT_LT(worst, 2e-4);
+}
+
 TEST(FloorLight, AFullLagerFocusesACausticBrighterThanTheOpenFloor) {
   const FrameState f = pint();
   const FloorLightMap m = compute_floor_light(f, budget(200000));
