@@ -153,8 +153,8 @@ class Viewer {
     // With the controller subsystem up, the gamepad part is always there: it holds the glass
     // upright until a controller reports motion, so one plugged in later just works.
     if (rig_.gamepad) gamepad_ = std::make_unique<SdlGamepadInput>(*rig_.gamepad);
-    // The floor's shadows: drafts while a glass moves (tens of milliseconds), the
-    // interactive budget once it holds still.
+    // The floor's shadows: drafts while something moves (milliseconds), then the
+    // interactive budget in five batches over as many frames once it holds still.
     FloorLightSettings floor;
     floor.photons = kFloorPhotonsInteractive;
     renderer_.set_floor_light(floor, true, kFloorPhotonsInteractive / 5);

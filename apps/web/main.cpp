@@ -268,8 +268,9 @@ EM_BOOL on_context_lost(int, const void*, void*) {
   return EM_TRUE;
 }
 
-// The floor's shadows on the page: one thread (no workers), drafts while a glass moves,
-// a tenth of a still's photons once it holds still (well under a second in WebAssembly).
+// The floor's shadows on the page: one thread (no workers), drafts while something moves,
+// a tenth of a still's photons once it holds still, in ten batches over as many frames (a
+// batch costs about a draft: no frame stalls on the whole).
 void set_web_floor_light(gpu::Renderer& r) {
   FloorLightSettings s;
   s.threads = 1;

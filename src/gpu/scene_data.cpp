@@ -433,27 +433,53 @@ void SceneTextures::update_floor_light(const FrameState& f) {
   for (size_t i = 0; i < floor_cache_.size(); ++i)
     if (floor_cache_[i].inputs == inputs) {  // a still or an unchanged frame costs nothing more
       std::rotate(floor_cache_.begin(), floor_cache_.begin() + long(i), floor_cache_.begin() + long(i) + 1);
-      if (i > 0 || !floor_cache_.front().draft) return;
+      for (size_t k = 1; k < floor_cache_.size(); ++k) floor_cache_[k].refining.reset();  // they keep what they have
+      FloorEntry& front = floor_cache_.front();
+      if (front.refining) {
+        refine_floor_light(front, 1);
+        return;
+      }
+      drafted_last_ = false;
+      if (i > 0 || !front.draft) return;
       // A draft the frame holds still on: traced again in full.
-      glDeleteTextures(1, &floor_cache_.front().tex);
+      glDeleteTextures(1, &front.tex);
       floor_cache_.erase(floor_cache_.begin());
       refine = true;
       break;
     }
+  // While things keep moving, a draft every other frame (the last one stays a frame
+  // longer): half the cost of a moving scene's frames.
+  if (draft_photons_ > 0 && !refine && drafted_last_ && floor_on_ && !floor_cache_.empty()) {
+    drafted_last_ = false;
+    return;
+  }
+  drafted_last_ = false;
   FloorEntry e;
   e.inputs = std::move(inputs);
   FloorLightSettings s = floor_settings_;
-  e.draft = draft_photons_ > 0 && !refine;
-  if (e.draft) {
+  if (!floor_on_) {
+    // no map: the floor takes the unoccluded light
+  } else if (draft_photons_ > 0 && refine) {
+    // In batches of a draft's photons on full texels, the first two at once (one would be
+    // noisier than the draft it replaces, whose texels are four times the area).
+    s.photons = std::min(s.photons, draft_photons_);
+    e.refining = std::make_unique<FloorLightTrace>(f, s);
+    e.batches_left = std::max(1, (floor_settings_.photons + s.photons - 1) / std::max(s.photons, 1));
+    refine_floor_light(e, 2);
+  } else if (draft_photons_ > 0) {
+    e.draft = true;
+    drafted_last_ = true;
     s.photons = std::min(s.photons, draft_photons_);
     // Texels twice as wide: a quarter of the rig's exact light to evaluate per texel (most
     // of a draft's time), and a draft's few photons spread over fewer, less noisy texels.
     s.texel *= 2;
     s.max_resolution = std::max(1, s.max_resolution / 2);
+    e.map = compute_floor_light(f, s);
+  } else {
+    e.map = compute_floor_light(f, s);
   }
-  e.map = floor_on_ ? compute_floor_light(f, s) : FloorLightMap{};
   floor_computed_ = true;
-  if (!e.map.empty()) {
+  if (!e.map.empty() && !e.tex) {
     const std::vector<glm::vec4> texels = pack_floor_light(e.map);
     e.tex = make_floor_texture(e.map.width, e.map.height, &texels[0].x);
   }
@@ -461,7 +487,23 @@ void SceneTextures::update_floor_light(const FrameState& f) {
     glDeleteTextures(1, &floor_cache_.back().tex);
     floor_cache_.pop_back();
   }
+  for (FloorEntry& old : floor_cache_) old.refining.reset();
   floor_cache_.insert(floor_cache_.begin(), std::move(e));
+}
+
+void SceneTextures::refine_floor_light(FloorEntry& e, int batches) {
+  for (int b = 0; b < batches && e.batches_left > 0; ++b, --e.batches_left) e.refining->add_batch();
+  e.map = e.refining->map();
+  if (e.batches_left == 0) e.refining.reset();  // the full budget: done
+  floor_computed_ = true;
+  if (e.map.empty()) return;
+  const std::vector<glm::vec4> texels = pack_floor_light(e.map);
+  if (e.tex) {  // the same rect: the texels replaced
+    glBindTexture(GL_TEXTURE_2D, e.tex);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, e.map.width, e.map.height, GL_RGBA, GL_FLOAT, &texels[0].x);
+  } else {
+    e.tex = make_floor_texture(e.map.width, e.map.height, &texels[0].x);
+  }
 }
 
 const FloorLightMap& SceneTextures::floor_light() const {

@@ -61,8 +61,10 @@ class SceneTextures {
   // The floor's light map: computed with these settings when what it depends on changes
   // (floor_light_inputs), never else; off: none (the floor takes the unoccluded light).
   // draft_photons > 0 (interactive apps): a frame whose inputs just changed gets a draft of
-  // that many photons on texels twice as wide, traced again with the full budget and
-  // texels on the first frame they hold still.
+  // that many photons on texels twice as wide; once they hold still the map is traced
+  // again on full texels in batches of that many photons, one a frame (two the first),
+  // until the full budget is reached: no frame stalls on the whole budget. While the
+  // inputs keep changing, a draft every other frame.
   void set_floor_light(const FloorLightSettings&, bool on = true, int draft_photons = 0);
   // Where the map lies (frame block members floor_light_*) for the frame of the last update.
   void describe_floor_light(contract::FrameBlock&) const;
@@ -104,7 +106,10 @@ class SceneTextures {
     FloorLightMap map;
     unsigned tex = 0;
     bool draft = false;
+    std::unique_ptr<FloorLightTrace> refining;  // a still's map still taking batches (the current entry only)
+    int batches_left = 0;
   };
+  void refine_floor_light(FloorEntry&, int batches);
   static constexpr size_t kFloorCache = 6;
   std::vector<FloorEntry> floor_cache_;
   unsigned neutral_tex_ = 0;  // one texel of factor 1, bound when there is no map
@@ -127,6 +132,7 @@ class SceneTextures {
   bool backdrop_computed_ = false;
   bool floor_on_ = true, floor_computed_ = false;
   int draft_photons_ = 0;
+  bool drafted_last_ = false;  // the last update traced a draft (the next one in motion skips)
 };
 
 }  // namespace draught::gpu

@@ -186,6 +186,42 @@ TEST(SceneData, UploadsOnlyWhatChanged) {
   EXPECT_EQ(g.renderer->scene_textures().knot_rows_uploaded(), 1);
 }
 
+// An interactive app's floor light: a draft (few photons, texels twice as wide) every other
+// frame while the scene moves; once it holds still, the full map in batches of the draft's
+// photons, one a frame (two the first), ending at the full budget with the map one trace
+// in as many batches gives; then nothing more.
+TEST(SceneData, TheFloorLightIsRefinedInBatchesOnceStill) {
+  Gpu& g = gpu_instance();
+  FloorLightSettings s = test_floor_light();
+  s.photons = 20000;
+  g.renderer->set_floor_light(s, true, 5000);
+  FrameState f = scene_frame({"lager", "pint", {}, {}});
+  const gpu::SceneTextures& t = g.renderer->scene_textures();
+  std::vector<bool> moving;
+  for (int frame = 0; frame < 4; ++frame) {
+    f.vessels[0].pose.position.x = 0.002 * frame;
+    g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
+    moving.push_back(t.floor_light_computed());
+  }
+  EXPECT_EQ(moving, (std::vector<bool>{true, false, true, false}));
+  std::vector<int> photons, widths;
+  for (int frame = 0; frame < 6; ++frame) {
+    g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
+    photons.push_back(t.floor_light_computed() ? t.floor_light().stats.photons : 0);
+    widths.push_back(t.floor_light().width);
+  }
+  EXPECT_EQ(photons, (std::vector<int>{photons[0], 10000, 15000, 20000, 0, 0}));
+  EXPECT_NEAR(photons[0], 5000, 100);  // the draft
+  EXPECT_LT(widths[0], widths[1]);     // on wider texels
+  FloorLightSettings batch = s;
+  batch.photons = 5000;
+  FloorLightTrace trace(f, batch);
+  for (int b = 0; b < 4; ++b) trace.add_batch();
+  EXPECT_EQ(widths[5], trace.map().width);
+  EXPECT_EQ(t.floor_light().change, trace.map().change);
+  g.renderer->set_floor_light(test_floor_light());  // as the other tests have it
+}
+
 // The record packed for a glass holds core's numbers: the liquid plane as the
 // simulation solved it (the fill table never reaches the GPU) and the big bubbles as
 // core/foam placed them.

@@ -15,6 +15,8 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <limits>
+#include <memory>
 #include <thread>
 
 namespace draught {
@@ -492,64 +494,47 @@ glm::dvec3 unoccluded_floor_irradiance(const LightRig& rig, const glm::dvec3& p)
   return rig.irradiance(p, {0, 1, 0});
 }
 
-FloorLightMap compute_floor_light(const FrameState& f, const FloorLightSettings& s) {
-  const auto start = std::chrono::steady_clock::now();
+struct FloorLightTrace::State {
+  FrameState frame;  // the photons' scene, kept for the batches to come
+  FloorLightSettings settings;
+  LightRig emitters;
   FloorLightMap map;
-  const LightRig emitters = floor_emitters(f);
-  if (!scene_geometry(f).backdrop.present || emitters.lights.empty()) return map;
-  const PhotonTracer tracer(f, map);
+  std::unique_ptr<PhotonTracer> tracer;
   std::vector<Target> targets;
-  std::vector<Caster> casters;
-  for (const VesselFrame& v : f.vessels) {
-    targets.push_back(target_of(v));
-    casters.push_back(caster_of(v));
-  }
-  std::vector<bool> cloud(targets.size(), false);
-  for (const MarchedBodies::Bound& b : tracer.bodies().bounds()) {
-    targets.push_back({b.centre, b.radius});
-    casters.push_back(caster_of(targets.back()));
-    cloud.push_back(b.cloud);
-  }
-  if (targets.empty()) return map;
-  place_rect(casters, emitters, s, map);
-  // The clouds' photons from a budget of their own, kCloudPhotonShare of the glasses' and
-  // droplets': each costs tens of theirs (the march through the tree), and a blob's soft
-  // shadow needs fewer.
-  std::vector<Target> solid, blobs;
-  for (size_t g = 0; g < targets.size(); ++g) (cloud[g] ? blobs : solid).push_back(targets[g]);
-  const int budget = std::max(s.photons, 0);
-  const std::vector<int> solid_counts = photon_counts(emitters, solid, budget);
-  const std::vector<int> blob_counts = photon_counts(emitters, blobs, int(budget * kCloudPhotonShare));
-  std::vector<int> counts;  // per (light, target) pair, as targets lists them
-  for (size_t l = 0; l < emitters.lights.size(); ++l) {
-    size_t a = 0, b = 0;
-    for (size_t g = 0; g < targets.size(); ++g)
-      counts.push_back(cloud[g] ? blob_counts[l * blobs.size() + b++] : solid_counts[l * solid.size() + a++]);
-  }
-  std::vector<long long> first{0};  // the first photon index of each pair
-  for (int n : counts) first.push_back(first.back() + n);
-  const long long total = first.back();
+  std::vector<int> counts;                          // photons of a batch per (light, target) pair
+  std::vector<long long> first{0};                  // the first photon of each pair in a batch
+  std::vector<std::array<double, 4>> shifts;        // each pair's random shift of its sequence
+  std::vector<Lane> lanes;                          // sums over the batches so far
+  std::unique_ptr<OpenLightLattice> lattice;
+  int batches = 0;
+  double seconds = 0;
 
-  std::vector<std::array<double, 4>> shifts(counts.size());
-  for (size_t pair = 0; pair < counts.size(); ++pair) {
-    Rng rng(s.seed, pair, ~std::uint64_t(0));
-    for (double& u : shifts[pair]) u = rng.uniform();
+  int threads() const {
+    const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+    return std::clamp(settings.threads > 0 ? settings.threads : int(hw), 1, kLanes);
   }
-  const size_t texels = size_t(map.width) * size_t(map.height);
-  std::vector<Lane> lanes(kLanes);
-  const size_t G = targets.size();
+  template <class F>
+  void in_parallel(F&& f) const {
+    const int n = threads();
+    std::vector<std::thread> pool;
+    for (int t = 1; t < n; ++t) pool.emplace_back(f, t);
+    f(0);
+    for (std::thread& t : pool) t.join();
+  }
 
-  // Photon k of pair (l, g): a point on light l, a direction in g's cone. The weight is the
-  // balance heuristic over every glass's cone from that point, so directions towards
-  // several glasses are not counted twice.
-  auto photon = [&](long long k, Lane& lane) {
+  // Photon i of pair (l, g) in batch b: a point on light l, a direction in g's cone. The
+  // weight is the balance heuristic over every target's cone from that point, so directions
+  // towards several targets are not counted twice.
+  void photon(int b, long long k, Lane& lane) const {
+    const size_t G = targets.size();
     const size_t pair = size_t(std::upper_bound(first.begin(), first.end(), k) - first.begin()) - 1;
     const AreaLight& light = emitters.lights[pair / G];
-    const std::uint64_t index = std::uint64_t(k - first[pair]);
-    Rng rng(s.seed, pair, index);
+    const std::uint64_t index = std::uint64_t(b) * std::uint64_t(counts[pair]) + std::uint64_t(k - first[pair]);
+    Rng rng(settings.seed, pair, index);
     // The point and the direction from a Halton sequence shifted by the pair's random offset
     // (randomised quasi-Monte Carlo: unbiased, and a shadow's noise falls much faster than
-    // with independent samples); the rest of the path from the photon's own stream.
+    // with independent samples), a batch going on where the last stopped; the rest of the
+    // path from the photon's own stream.
     auto halton = [&](int dim) {
       static constexpr int kBases[4] = {2, 3, 5, 7};
       const double u = radical_inverse(kBases[dim], index) + shifts[pair][size_t(dim)];
@@ -569,60 +554,114 @@ FloorLightMap compute_floor_light(const FrameState& f, const FloorLightSettings&
       if (cg.contains(d)) density += n / cg.solid_angle;
     }
     if (density <= 0) return;
-    tracer.trace({x + d * 1e-6, d}, light.radiance * (cos_l * light.area() / density), rng, lane);
-  };
+    tracer->trace({x + d * 1e-6, d}, light.radiance * (cos_l * light.area() / density), rng, lane);
+  }
+};
 
-  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  const int threads = std::clamp(s.threads > 0 ? s.threads : int(hw), 1, kLanes);
-  auto work = [&](int t) {
-    for (int l = t; l < kLanes; l += threads) {
-      Lane& lane = lanes[size_t(l)];
-      lane.change.assign(texels, glm::dvec3(0.0));
-      for (long long k = l; k < total; k += kLanes) photon(k, lane);
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
-  work(0);
-  for (std::thread& t : pool) t.join();
+FloorLightTrace::FloorLightTrace(const FrameState& f, const FloorLightSettings& s) : state_(std::make_unique<State>()) {
+  State& st = *state_;
+  st.frame = f;
+  st.settings = s;
+  st.emitters = floor_emitters(f);
+  if (!scene_geometry(f).backdrop.present || st.emitters.lights.empty()) return;
+  st.tracer = std::make_unique<PhotonTracer>(st.frame, st.map);
+  std::vector<Caster> casters;
+  for (const VesselFrame& v : f.vessels) {
+    st.targets.push_back(target_of(v));
+    casters.push_back(caster_of(v));
+  }
+  std::vector<bool> cloud(st.targets.size(), false);
+  for (const MarchedBodies::Bound& b : st.tracer->bodies().bounds()) {
+    st.targets.push_back({b.centre, b.radius});
+    casters.push_back(caster_of(st.targets.back()));
+    cloud.push_back(b.cloud);
+  }
+  if (st.targets.empty()) return;
+  place_rect(casters, st.emitters, s, st.map);
+  // The clouds' photons from a budget of their own, kCloudPhotonShare of the glasses' and
+  // droplets': each costs tens of theirs (the march through the tree), and a blob's soft
+  // shadow needs fewer.
+  std::vector<Target> solid, blobs;
+  for (size_t g = 0; g < st.targets.size(); ++g) (cloud[g] ? blobs : solid).push_back(st.targets[g]);
+  const int budget = std::max(s.photons, 0);
+  const std::vector<int> solid_counts = photon_counts(st.emitters, solid, budget);
+  const std::vector<int> blob_counts = photon_counts(st.emitters, blobs, int(budget * kCloudPhotonShare));
+  for (size_t l = 0; l < st.emitters.lights.size(); ++l) {  // per (light, target) pair, as targets lists them
+    size_t a = 0, b = 0;
+    for (size_t g = 0; g < st.targets.size(); ++g)
+      st.counts.push_back(cloud[g] ? blob_counts[l * blobs.size() + b++] : solid_counts[l * solid.size() + a++]);
+  }
+  for (int n : st.counts) st.first.push_back(st.first.back() + n);
+  st.shifts.resize(st.counts.size());
+  for (size_t pair = 0; pair < st.counts.size(); ++pair) {
+    Rng rng(s.seed, pair, ~std::uint64_t(0));
+    for (double& u : st.shifts[pair]) u = rng.uniform();
+  }
+  const size_t texels = size_t(st.map.width) * size_t(st.map.height);
+  st.lanes.resize(kLanes);
+  for (Lane& lane : st.lanes) lane.change.assign(texels, glm::dvec3(0.0));
+  st.map.lights = f.lights;
+  st.map.even = bool(f.environment.image);  // the image's whole light: the same everywhere
+  if (st.map.even) st.map.even_light = f.environment.sky.at({0, 1, 0});
+  st.lattice = std::make_unique<OpenLightLattice>(st.map);
+  st.map.change.assign(texels, glm::vec3(0.0f));
+  st.map.factor.assign(texels, glm::vec3(1.0f));
+}
 
-  // The lanes' change in a fixed order, and the factor the picture reads: where a photon
-  // changed the light, over the unoccluded light there (noise may dip below zero).
-  map.lights = f.lights;
-  map.even = bool(f.environment.image);  // the image's whole light: the same everywhere
-  if (map.even) map.even_light = f.environment.sky.at({0, 1, 0});
-  const OpenLightLattice lattice(map);
-  map.change.assign(texels, glm::vec3(0.0f));
-  map.factor.assign(texels, glm::vec3(1.0f));
-  auto rows = [&](int t) {
+FloorLightTrace::~FloorLightTrace() = default;
+
+int FloorLightTrace::batches() const { return state_->batches; }
+const FloorLightMap& FloorLightTrace::map() const { return state_->map; }
+
+void FloorLightTrace::add_batch() {
+  State& st = *state_;
+  if (st.map.empty()) return;
+  const auto start = std::chrono::steady_clock::now();
+  const int b = st.batches++;
+  const long long total = st.first.back();
+  const int threads = st.threads();
+  st.in_parallel([&](int t) {
+    for (int l = t; l < kLanes; l += threads)
+      for (long long k = l; k < total; k += kLanes) st.photon(b, k, st.lanes[size_t(l)]);
+  });
+
+  // The mean change over the batches, the lanes summed in a fixed order, and the factor the
+  // picture reads: where a photon changed the light, over the unoccluded light there (noise
+  // may dip below zero).
+  FloorLightMap& map = st.map;
+  const double per = 1.0 / st.batches;
+  st.in_parallel([&](int t) {
     for (int j = t; j < map.height; j += threads)
       for (int i = 0; i < map.width; ++i) {
         const size_t at = size_t(j) * size_t(map.width) + size_t(i);
         glm::dvec3 change(0.0);
-        for (const Lane& lane : lanes) change += lane.change[at];
+        for (const Lane& lane : st.lanes) change += lane.change[at];
         if (change == glm::dvec3(0.0)) continue;
+        change *= per;
         map.change[at] = glm::vec3(change);
-        const glm::dvec3 open = lattice.at(i, j);
+        const glm::dvec3 open = st.lattice->at(i, j);
         for (int c = 0; c < 3; ++c)
           if (open[c] > 1e-9) map.factor[at][c] = float(std::max(open[c] + change[c], 0.0) / open[c]);
       }
-  };
-  pool.clear();
-  for (int t = 1; t < threads; ++t) pool.emplace_back(rows, t);
-  rows(0);
-  for (std::thread& t : pool) t.join();
-
-  for (const Lane& lane : lanes) {
-    map.stats.hit += lane.stats.hit;
-    map.stats.landed += lane.stats.landed;
-    map.stats.removed += lane.stats.removed;
-    map.stats.absorbed += lane.stats.absorbed;
-    map.stats.escaped += lane.stats.escaped;
-    map.stats.outside += lane.stats.outside;
+  });
+  map.stats = {};
+  for (const Lane& lane : st.lanes) {
+    map.stats.hit += lane.stats.hit * per;
+    map.stats.landed += lane.stats.landed * per;
+    map.stats.removed += lane.stats.removed * per;
+    map.stats.absorbed += lane.stats.absorbed * per;
+    map.stats.escaped += lane.stats.escaped * per;
+    map.stats.outside += lane.stats.outside * per;
   }
-  map.stats.photons = int(total);
-  map.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return map;
+  map.stats.photons = int(std::min<long long>(total * st.batches, std::numeric_limits<int>::max()));
+  st.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  map.stats.seconds = st.seconds;
+}
+
+FloorLightMap compute_floor_light(const FrameState& f, const FloorLightSettings& s) {
+  FloorLightTrace trace(f, s);
+  trace.add_batch();
+  return trace.map();
 }
 
 std::vector<double> floor_light_inputs(const FrameState& f) {

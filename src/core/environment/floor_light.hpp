@@ -20,6 +20,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace draught {
@@ -98,6 +99,27 @@ glm::dvec3 unoccluded_floor_irradiance(const LightRig&, const glm::dvec3& p);
 
 // The map of the frame (empty when there is no floor, no light or no object).
 FloorLightMap compute_floor_light(const FrameState&, const FloorLightSettings& = {});
+
+// A map traced in batches, for interactive apps that refine it over frames rather than
+// stall one: each batch an estimate of its own with settings.photons photons (each pair's
+// Halton sequence going on where the last batch stopped), the map the mean of the batches
+// so far (its stats the means too, stats.photons the count traced). One batch is
+// compute_floor_light's map. Keeps a copy of the frame.
+class FloorLightTrace {
+ public:
+  FloorLightTrace(const FrameState&, const FloorLightSettings&);
+  ~FloorLightTrace();
+  FloorLightTrace(const FloorLightTrace&) = delete;
+  FloorLightTrace& operator=(const FloorLightTrace&) = delete;
+
+  void add_batch();
+  int batches() const;
+  const FloorLightMap& map() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 // Everything the map depends on, as numbers rounded to 1e-5 (of a metre, or of the unit:
 // nothing a picture shows): poses, glass shapes, liquid surfaces,
