@@ -67,18 +67,56 @@ TEST(FloorLight, AGlassOfIndexOneThatAbsorbsNothingChangesNothing) {
 }
 
 // Irradiance at floor point p by backward shadow rays: samples of every light, each counted
-// when nothing lies between.
-glm::dvec3 backward_irradiance(const FrameState& f, const SceneGeometry& geo, glm::dvec3 p, int samples, Rng& rng) {
+// when blocked(p, dir, dist) says nothing lies between.
+template <class Blocked>
+glm::dvec3 backward_irradiance(const FrameState& f, glm::dvec3 p, int samples, Rng& rng, const Blocked& blocked) {
   glm::dvec3 e(0.0);
   for (const AreaLight& l : f.lights.lights)
     for (int k = 0; k < samples; ++k) {
       AreaLight::Sample s;
       if (!l.sample_from(p, rng.uniform(), rng.uniform(), s) || s.dir.y <= 0) continue;
-      const Hit h = first_hit(geo, {p + glm::dvec3(0, 1e-7, 0), s.dir});
-      if (h.valid() && h.t < s.dist) continue;
+      if (blocked(p + glm::dvec3(0, 1e-7, 0), s.dir, s.dist)) continue;
       e += l.radiance * s.dir.y / s.pdf / double(samples);
     }
   return e;
+}
+
+// An opaque object's shadow in the map against backward shadow rays, over a grid of texels
+// (every `step`-th) where the map takes more than `least` of the open light, those `skip`
+// names left out: the points, those the rays find darker than `shaded` of the open light,
+// the largest pointwise difference over the mean open light, and the mean light blocked
+// by the map and by the rays.
+struct ShadowComparison {
+  int points = 0, shaded = 0;
+  double worst = 0, blocked_map = 0, blocked_back = 0;
+};
+template <class Blocked, class Skip>
+ShadowComparison compare_with_shadow_rays(const FrameState& f, const FloorLightMap& m, int step, double least,
+                                          double shaded, Rng& rng, const Blocked& blocked, const Skip& skip) {
+  ShadowComparison r;
+  double open_mean = 0;
+  for (int j = step / 2; j < m.height; j += step)
+    for (int i = step / 2; i < m.width; i += step) {
+      const glm::dvec2 c = m.texel_centre(i, j);
+      if (skip(c)) continue;
+      const glm::dvec3 p(c.x, 0, c.y);
+      const glm::dvec3 open = unoccluded_floor_irradiance(f.lights, p);
+      if (mean(open - m.at(i, j)) < least * mean(open)) continue;
+      const glm::dvec3 back = backward_irradiance(f, p, 2000, rng, blocked);
+      const glm::dvec3 map(m.sample(c.x, c.y));
+      r.worst = std::max(r.worst, std::fabs(mean(map) - mean(back)));
+      open_mean += mean(open);
+      r.blocked_map += mean(open - map);
+      r.blocked_back += mean(open - back);
+      r.shaded += mean(back) < shaded * mean(open);
+      ++r.points;
+    }
+  if (r.points > 0) {
+    r.worst /= open_mean / r.points;
+    r.blocked_map /= r.points;
+    r.blocked_back /= r.points;
+  }
+  return r;
 }
 
 TEST(FloorLight, AnOpaqueGlassShadowIsWhatShadowRaysFind) {
@@ -92,34 +130,22 @@ TEST(FloorLight, AnOpaqueGlassShadowIsWhatShadowRaysFind) {
   const FloorLightMap m = compute_floor_light(f, budget(800000));
   const SceneGeometry geo = scene_geometry(f);
   Rng rng(3, 1, 0);
-  double worst = 0, open_mean = 0, blocked_map = 0, blocked_back = 0;
-  int n = 0, shaded = 0;
   const double foot = f.vessels[0].vessel.r_outer.front();
   // A grid over where the map changes the light, the floor under the foot left out.
-  for (int j = 4; j < m.height; j += 8)
-    for (int i = 4; i < m.width; i += 8) {
-      const glm::dvec2 c = m.texel_centre(i, j);
-      if (std::hypot(c.x, c.y) < foot + 0.005) continue;
-      const glm::dvec3 p(c.x, 0, c.y);
-      const glm::dvec3 open = unoccluded_floor_irradiance(f.lights, p);
-      if (mean(open - m.at(i, j)) < 0.02 * mean(open)) continue;
-      const glm::dvec3 back = backward_irradiance(f, geo, p, 2000, rng);
-      const glm::dvec3 map(m.sample(c.x, c.y));
-      worst = std::max(worst, std::fabs(mean(map) - mean(back)));
-      open_mean += mean(open);
-      blocked_map += mean(open - map);
-      blocked_back += mean(open - back);
-      shaded += mean(back) < 0.5 * mean(open);
-      ++n;
-    }
-  open_mean /= n;
+  const ShadowComparison r = compare_with_shadow_rays(
+      f, m, 8, 0.02, 0.5, rng,
+      [&](const glm::dvec3& o, const glm::dvec3& d, double dist) {
+        const Hit h = first_hit(geo, {o, d});
+        return h.valid() && h.t < dist;
+      },
+      [&](const glm::dvec2& c) { return std::hypot(c.x, c.y) < foot + 0.005; });
   std::printf("opaque glass: %d points (%d in shadow), largest |map - shadow rays| %.3f of the open light; blocked %.4f vs %.4f\n",
-              n, shaded, worst / open_mean, blocked_map / n, blocked_back / n);
-  ASSERT_GT(shaded, 10) << "the grid misses the shadow";
+              r.points, r.shaded, r.worst, r.blocked_map, r.blocked_back);
+  ASSERT_GT(r.shaded, 10) << "the grid misses the shadow";
   // Pointwise: the noise of both estimates (together about 2 % rms of the open light here;
   // the largest of 150 points reaches 3 sigma) and the kernel's blur of the penumbra.
-  EXPECT_LT(worst, 0.08 * open_mean);
-  EXPECT_NEAR(blocked_map, blocked_back, 0.03 * std::fabs(blocked_back));
+  EXPECT_LT(r.worst, 0.08);
+  EXPECT_NEAR(r.blocked_map, r.blocked_back, 0.03 * std::fabs(r.blocked_back));
 }
 
 TEST(FloorLight, TheChangeIntegratesToMinusThePowerAbsorbedAndSentAway) {
@@ -315,22 +341,6 @@ FrameState scene_frame(const std::string& preset) {
   return sim.frame();
 }
 
-// Irradiance at floor point p by backward shadow rays (as backward_irradiance) that the
-// droplets' own march (noise left out, as the map's photons take them) also blocks.
-glm::dvec3 backward_irradiance_droplets(const FrameState& f, glm::dvec3 p, int samples, Rng& rng) {
-  DropletField field = f.droplets.front().field;
-  field.noise_amplitude = 0;
-  glm::dvec3 e(0.0);
-  for (const AreaLight& l : f.lights.lights)
-    for (int k = 0; k < samples; ++k) {
-      AreaLight::Sample s;
-      if (!l.sample_from(p, rng.uniform(), rng.uniform(), s) || s.dir.y <= 0) continue;
-      if (march_droplets(field, p + glm::dvec3(0, 1e-7, 0), s.dir, 1e-7, s.dist, false)) continue;
-      e += l.radiance * s.dir.y / s.pdf / double(samples);
-    }
-  return e;
-}
-
 TEST(FloorLight, OpaqueDropletsShadowIsWhatShadowRaysFind) {
   // Index 1 (no reflection, no bending) and black: all the light that meets them is absorbed.
   FrameState f = scene_frame("droplets-seed");
@@ -340,31 +350,21 @@ TEST(FloorLight, OpaqueDropletsShadowIsWhatShadowRaysFind) {
   const FloorLightMap m = compute_floor_light(f, budget(400000));
   ASSERT_FALSE(m.empty()) << "droplets alone get a map";
   ASSERT_GT(mean(m.stats.hit), 0.0) << "no photon met the droplets";
+  // The shadow rays meet the droplets' own march, the noise left out as the photons take it.
+  DropletField field = f.droplets.front().field;
+  field.noise_amplitude = 0;
   Rng rng(7, 1, 0);
-  double worst = 0, open_mean = 0, blocked_map = 0, blocked_back = 0;
-  int n = 0, shaded = 0;
-  for (int j = 2; j < m.height; j += 4)
-    for (int i = 2; i < m.width; i += 4) {
-      const glm::dvec2 c = m.texel_centre(i, j);
-      const glm::dvec3 p(c.x, 0, c.y);
-      const glm::dvec3 open = unoccluded_floor_irradiance(f.lights, p);
-      if (mean(open - m.at(i, j)) < 0.01 * mean(open)) continue;
-      const glm::dvec3 back = backward_irradiance_droplets(f, p, 2000, rng);
-      const glm::dvec3 map(m.sample(c.x, c.y));
-      worst = std::max(worst, std::fabs(mean(map) - mean(back)));
-      open_mean += mean(open);
-      blocked_map += mean(open - map);
-      blocked_back += mean(open - back);
-      shaded += mean(back) < 0.9 * mean(open);
-      ++n;
-    }
-  ASSERT_GT(n, 0) << "the map shows no shadow";
-  open_mean /= n;
+  const ShadowComparison r = compare_with_shadow_rays(
+      f, m, 4, 0.01, 0.9, rng,
+      [&](const glm::dvec3& o, const glm::dvec3& d, double dist) {
+        return march_droplets(field, o, d, 1e-7, dist, false).has_value();
+      },
+      [](const glm::dvec2&) { return false; });
   std::printf("opaque droplets: %d points (%d shaded), largest |map - shadow rays| %.3f of the open light; blocked %.4f vs %.4f\n",
-              n, shaded, worst / open_mean, blocked_map / n, blocked_back / n);
-  ASSERT_GT(shaded, 5) << "the grid misses the shadow";
-  EXPECT_LT(worst, 0.06 * open_mean);
-  EXPECT_NEAR(blocked_map, blocked_back, 0.05 * std::fabs(blocked_back));
+              r.points, r.shaded, r.worst, r.blocked_map, r.blocked_back);
+  ASSERT_GT(r.shaded, 5) << "the grid misses the shadow";
+  EXPECT_LT(r.worst, 0.06);
+  EXPECT_NEAR(r.blocked_map, r.blocked_back, 0.05 * std::fabs(r.blocked_back));
 }
 
 // Water droplets (their own index and absorption) and a gob of glass: each takes light from
