@@ -89,6 +89,10 @@ glm::dvec3 backward_irradiance(const FrameState& f, glm::dvec3 p, int samples, R
 struct ShadowComparison {
   int points = 0, shaded = 0;
   double worst = 0, blocked_map = 0, blocked_back = 0;
+  void print(const char* what) const {
+    std::printf("%s: %d points (%d shaded), largest |map - shadow rays| %.3f of the open light; blocked %.4f vs %.4f\n",
+                what, points, shaded, worst, blocked_map, blocked_back);
+  }
 };
 template <class Blocked, class Skip>
 ShadowComparison compare_with_shadow_rays(const FrameState& f, const FloorLightMap& m, int step, double least,
@@ -139,8 +143,7 @@ TEST(FloorLight, AnOpaqueGlassShadowIsWhatShadowRaysFind) {
         return h.valid() && h.t < dist;
       },
       [&](const glm::dvec2& c) { return std::hypot(c.x, c.y) < foot + 0.005; });
-  std::printf("opaque glass: %d points (%d in shadow), largest |map - shadow rays| %.3f of the open light; blocked %.4f vs %.4f\n",
-              r.points, r.shaded, r.worst, r.blocked_map, r.blocked_back);
+  r.print("opaque glass");
   ASSERT_GT(r.shaded, 10) << "the grid misses the shadow";
   // Pointwise: the noise of both estimates (together about 2 % rms of the open light here;
   // the largest of 150 points reaches 3 sigma) and the kernel's blur of the penumbra.
@@ -360,8 +363,7 @@ TEST(FloorLight, OpaqueDropletsShadowIsWhatShadowRaysFind) {
         return march_droplets(field, o, d, 1e-7, dist, false).has_value();
       },
       [](const glm::dvec2&) { return false; });
-  std::printf("opaque droplets: %d points (%d shaded), largest |map - shadow rays| %.3f of the open light; blocked %.4f vs %.4f\n",
-              r.points, r.shaded, r.worst, r.blocked_map, r.blocked_back);
+  r.print("opaque droplets");
   ASSERT_GT(r.shaded, 5) << "the grid misses the shadow";
   EXPECT_LT(r.worst, 0.06);
   EXPECT_NEAR(r.blocked_map, r.blocked_back, 0.05 * std::fabs(r.blocked_back));
