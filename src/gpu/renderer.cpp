@@ -197,11 +197,14 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   // The MatCap pass marches no drink: waves (its surface is the plane) and heads (a layer)
   // need no variant of it. It marches droplets and point clouds (seen as lenses).
   if (matcap) variant = (variant & ~(kWaves | kFoam)) | kMatCap;
-  if (matcap && debug == DebugView::None && matcap_background(f, block, width, height, variant)) variant |= kMatCapCached;
+  const std::vector<contract::ObjectRecord> records = matcap ? textures_->records() : std::vector<contract::ObjectRecord>{};
+  if (matcap && debug == DebugView::None && matcap_background(f, block, records, width, height, variant))
+    variant |= kMatCapCached;
   // The MatCap tier with its background kept: only the part of the screen where the
   // objects' bounds lie runs the pass; the rest is the background alone (what the pass
   // gives a line that meets no object's bounds, for a fraction of the cost).
-  const PixelRect part = variant & kMatCapCached ? objects_on_screen(f, block, width, height) : PixelRect{0, 0, width, height};
+  const PixelRect part =
+      variant & kMatCapCached ? objects_on_screen(records, block, width, height) : PixelRect{0, 0, width, height};
   const bool whole = part.x <= 0 && part.y <= 0 && part.x + part.w >= width && part.y + part.h >= height;
   glBindVertexArray(vao_);
   if (!whole) {
@@ -239,6 +242,13 @@ std::optional<glm::dvec2> on_screen(const contract::FrameBlock& b, const glm::ve
 }  // namespace
 
 PixelRect objects_on_screen(const FrameState& f, const contract::FrameBlock& b, int width, int height) {
+  std::vector<contract::ObjectRecord> vessels;
+  for (int i = 0; i < int(f.vessels.size()); ++i) vessels.push_back(pack_object(f, i));
+  return objects_on_screen(vessels, b, width, height);
+}
+
+PixelRect objects_on_screen(const std::vector<contract::ObjectRecord>& vessels, const contract::FrameBlock& b, int width,
+                            int height) {
   const PixelRect all{0, 0, width, height};
   glm::dvec2 lo(1e30), hi(-1e30);
   bool behind = false;
@@ -250,8 +260,7 @@ PixelRect objects_on_screen(const FrameState& f, const contract::FrameBlock& b, 
       else lo = glm::min(lo, *s), hi = glm::max(hi, *s);
     }
   };
-  for (int i = 0; i < int(f.vessels.size()); ++i) {  // the bounding cylinder of the search (object_span)
-    const contract::ObjectRecord r = pack_object(f, i);
+  for (const contract::ObjectRecord& r : vessels) {  // the bounding cylinder of the search (object_span)
     const glm::vec3 base(r.bound_base), axis(r.bound_axis), top = base + r.bound_length * axis;
     const glm::vec3 grow = r.bound_radius * glm::sqrt(glm::max(glm::vec3(1.0f) - axis * axis, glm::vec3(0.0f)));
     box(glm::min(base, top) - grow, glm::max(base, top) + grow);
@@ -266,8 +275,8 @@ PixelRect objects_on_screen(const FrameState& f, const contract::FrameBlock& b, 
   return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
 }
 
-bool Renderer::matcap_background(const FrameState& f, const contract::FrameBlock& block, int width, int height,
-                                 int variant) {
+bool Renderer::matcap_background(const FrameState& f, const contract::FrameBlock& block,
+                                 const std::vector<contract::ObjectRecord>& records, int width, int height, int variant) {
   // A transparent picture has no background; a screen's frames change without the block.
   if (f.params.render.transparent || f.screen.mode != ScreenMode::Off || !matcap_background_->usable()) return false;
   // What the background depends on: the block (camera, size, surroundings), the
@@ -276,8 +285,7 @@ bool Renderer::matcap_background(const FrameState& f, const contract::FrameBlock
   std::memcpy(key.data(), &block, sizeof block);
   const void* image = f.environment.image.get();
   std::memcpy(key.data() + sizeof block, &image, sizeof image);
-  for (int i = 0; i < int(f.vessels.size()); ++i) {
-    const contract::ObjectRecord r = pack_object(f, i);
+  for (const contract::ObjectRecord& r : records) {
     const float part[] = {r.bound_base.x, r.bound_base.y, r.bound_base.z, r.bound_axis.x, r.bound_axis.y, r.bound_axis.z,
                           r.bound_radius, r.bound_length, r.foot_radius, r.clip_world_normal.x, r.clip_world_normal.y,
                           r.clip_world_normal.z, r.clip_world_offset};

@@ -10,6 +10,7 @@
 #include "core/pointcloud/cloud_scene.hpp"
 #include "generated/constants.hpp"
 #include "generated/frame.hpp"
+#include "generated/objects.hpp"
 
 #include <filesystem>
 #include <map>
@@ -36,7 +37,10 @@ struct PixelRect {
 // root boxes) projected, grown by two pixels; the whole picture when a box reaches behind
 // the eye. Outside it every line misses every object (the MatCap tier draws only the
 // background there).
-PixelRect objects_on_screen(const FrameState&, const contract::FrameBlock& b, int width, int height);
+// `vessels`: the glasses' records as u_objects holds them (SceneTextures::records).
+PixelRect objects_on_screen(const std::vector<contract::ObjectRecord>& vessels, const contract::FrameBlock& b, int width,
+                            int height);
+PixelRect objects_on_screen(const FrameState&, const contract::FrameBlock& b, int width, int height);  // packs them
 
 // Debug views, declared in src/interface/constants.def (shared with the shaders).
 using contract::DebugView;
@@ -126,7 +130,8 @@ class Renderer {
   };
   // The MatCap tier's background, drawn when it is not the one of this frame; false when
   // it cannot be kept (no float targets, a screen whose frames it does not follow).
-  bool matcap_background(const FrameState&, const contract::FrameBlock&, int width, int height, int variant);
+  bool matcap_background(const FrameState&, const contract::FrameBlock&, const std::vector<contract::ObjectRecord>&,
+                         int width, int height, int variant);
   std::unique_ptr<Program> build_program(int variant) const;
 
   std::filesystem::path shader_dir_;

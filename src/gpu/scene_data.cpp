@@ -506,6 +506,12 @@ void SceneTextures::refine_floor_light(FloorEntry& e, int batches) {
   }
 }
 
+std::vector<contract::ObjectRecord> SceneTextures::records() const {
+  std::vector<contract::ObjectRecord> out;
+  for (const auto& r : objects_) out.push_back(*r);
+  return out;
+}
+
 const FloorLightMap& SceneTextures::floor_light() const {
   static const FloorLightMap none;
   return floor_cache_.empty() ? none : floor_cache_.front().map;

@@ -86,6 +86,8 @@ class SceneTextures {
   // Whether the last update computed and uploaded the floor's light map.
   bool floor_light_computed() const { return floor_computed_; }
   int capacity() const { return capacity_; }
+  // The frame's object records as the last update packed them (one per glass).
+  std::vector<contract::ObjectRecord> records() const;
 
  private:
   void allocate(int rows);
