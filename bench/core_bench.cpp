@@ -4,6 +4,7 @@
 // docs/PERFORMANCE.md.
 #include "core/bubbles/bubble_view.hpp"
 #include "core/environment/floor_light.hpp"
+#include "core/environment/matcap.hpp"
 #include "core/scene/camera.hpp"
 #include "core/vessel/fill_table.hpp"
 #include "core/scene/frame.hpp"
@@ -114,6 +115,16 @@ BENCHMARK_CAPTURE(BM_FloorLight, droplets_still, "droplets", kFloorPhotonsStill)
 BENCHMARK_CAPTURE(BM_FloorLight, droplets_web_draft, "droplets", kFloorPhotonsStill / 100, 1, true)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_FloorLight, droplets_seed_still, "droplets-seed", kFloorPhotonsStill)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_FloorLight, gob_cooled_still, "gob-cooled", kFloorPhotonsStill)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// What the MatCap tier pays each frame to learn that its baked MatCap still holds: the
+// bake's key (the surroundings' and lights' parameters as text) against the last one.
+void BM_MatCapStillHolds(benchmark::State& state) {
+  const FrameState f = make_frame(resolve_scene_objects({"lager", "", {}, {}}));
+  const glm::dvec3 centre = surroundings_centre(f);
+  matcap_for(f.params, f.lights, f.backdrop, centre);  // baked once
+  for (auto _ : state) benchmark::DoNotOptimize(matcap_for(f.params, f.lights, f.backdrop, centre));
+}
+BENCHMARK(BM_MatCapStillHolds)->Unit(benchmark::kMicrosecond);
 
 // Loading a timeline of N tilts (parse, validate, chain the tilts): linear in N, so the
 // time per tilt stays flat from 1,000 to 100,000.
