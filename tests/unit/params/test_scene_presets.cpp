@@ -352,12 +352,7 @@ TEST(ResolveSceneObjects, FlightWithSetsOnOneObjectOrAll) {
 }
 
 std::string resolve_error(const SceneRequest& req) {
-  try {
-    resolve_scene_objects(req);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::input_error_of([&] { resolve_scene_objects(req); });
 }
 
 TEST(ResolveSceneObjects, Errors) {

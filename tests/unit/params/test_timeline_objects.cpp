@@ -32,22 +32,14 @@ Timeline parse(const std::string& actions, const std::string& extra = "") {
 }
 
 std::string parse_error(const std::string& actions) {
-  try {
-    parse(actions);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::input_error_of([&] { parse(actions); });
 }
 
 std::string bind_error(const std::string& actions, const Scene& scene) {
-  try {
+  return test::input_error_of([&] {
     Timeline t = parse(actions);
     bind_timeline(t, scene);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  });
 }
 
 const Scene& flight() {

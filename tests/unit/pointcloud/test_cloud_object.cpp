@@ -22,12 +22,7 @@ namespace {
 using test::has;
 
 std::string parse_error(const std::string& text) {
-  try {
-    parse_point_cloud_params(nlohmann::json::parse(text), "gob.json", "objects[1].pointcloud");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::input_error_of([&] { parse_point_cloud_params(nlohmann::json::parse(text), "gob.json", "objects[1].pointcloud"); });
 }
 
 TEST(PointCloudObject, EveryMistakeIsNamedWithItsFieldAndWhatWasExpected) {
