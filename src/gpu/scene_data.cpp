@@ -428,7 +428,11 @@ void SceneTextures::clear_floor_light() {
 
 void SceneTextures::update_floor_light(const FrameState& f) {
   floor_computed_ = false;
+  // The scene's own budget (render.floor_photons) where it gives one, else the app's.
+  FloorLightSettings full = floor_settings_;
+  if (f.params.render.floor_photons > 0) full.photons = f.params.render.floor_photons;
   std::vector<double> inputs = floor_light_inputs(f);
+  inputs.push_back(full.photons);  // another budget, another map
   bool refine = false;
   for (size_t i = 0; i < floor_cache_.size(); ++i)
     if (floor_cache_[i].inputs == inputs) {  // a still or an unchanged frame costs nothing more
@@ -456,7 +460,7 @@ void SceneTextures::update_floor_light(const FrameState& f) {
   drafted_last_ = false;
   FloorEntry e;
   e.inputs = std::move(inputs);
-  FloorLightSettings s = floor_settings_;
+  FloorLightSettings s = full;
   if (!floor_on_) {
     // no map: the floor takes the unoccluded light
   } else if (draft_photons_ > 0 && refine) {
@@ -464,7 +468,7 @@ void SceneTextures::update_floor_light(const FrameState& f) {
     // noisier than the draft it replaces, whose texels are four times the area).
     s.photons = std::min(s.photons, draft_photons_);
     e.refining = std::make_unique<FloorLightTrace>(f, s);
-    e.batches_left = std::max(1, (floor_settings_.photons + s.photons - 1) / std::max(s.photons, 1));
+    e.batches_left = std::max(1, (full.photons + s.photons - 1) / std::max(s.photons, 1));
     refine_floor_light(e, 2);
   } else if (draft_photons_ > 0) {
     e.draft = true;

@@ -222,6 +222,20 @@ TEST(SceneData, TheFloorLightIsRefinedInBatchesOnceStill) {
   g.renderer->set_floor_light(test_floor_light());  // as the other tests have it
 }
 
+// render.floor_photons: a scene may give its floor light's budget (an animation rendered
+// faster); 0 leaves the app's (here the GPU tests' 50,000); another budget, another map.
+TEST(SceneData, TheSceneMayGiveTheFloorLightsBudget) {
+  Gpu& g = gpu_instance();
+  const gpu::SceneTextures& t = g.renderer->scene_textures();
+  FrameState f = scene_frame({"lager", "pint", {"render.floor_photons=3000"}, {}});
+  g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
+  EXPECT_NEAR(t.floor_light().stats.photons, 3000, 100);
+  f.params.render.floor_photons = 0;
+  g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
+  EXPECT_TRUE(t.floor_light_computed());
+  EXPECT_NEAR(t.floor_light().stats.photons, test_floor_light().photons, 500);
+}
+
 // The record packed for a glass holds core's numbers: the liquid plane as the
 // simulation solved it (the fill table never reaches the GPU) and the big bubbles as
 // core/foam placed them.

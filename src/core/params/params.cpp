@@ -286,6 +286,9 @@ std::vector<ParamDesc> make_camera_and_render_rows() {
           "Transparent background, premultiplied alpha (the floor is left out)"),
       ROW(SceneParams, render, supersample, Int, 1.0f, 4.0f, "", "Supersampling factor per axis (anti-aliasing)"),
       ROW(SceneParams, render, max_events, Int, 2.0f, 32.0f, "", "Most surface interactions followed per pixel"),
+      ROW(SceneParams, render, floor_photons, Int, 0.0f, 5000000.0f, "",
+          "Photons traced for the floor's shadows and caustics in a still or an animation frame; 0: the app's own "
+          "(the CLI's 500,000; fewer render an animation whose objects move faster, noisier)"),
       // the MatCap tier
       with_file_check(ROW(SceneParams, matcap, file, File, 0, 0, "",
                           "render.tier matcap: a MatCap PNG (a lit sphere seen straight on, at most 4096 x 4096); "

@@ -250,6 +250,7 @@ struct RenderParams {
   bool transparent = false;
   int supersample = 2;
   int max_events = 12;
+  int floor_photons = 0;  // the floor's light map's budget for a still; 0: the app's own
 };
 
 // The groups that belong to one vessel object of a scene: its glass and its drink.
