@@ -98,10 +98,7 @@ void BM_FloorLight(benchmark::State& state, const char* preset, int photons, int
   FloorLightSettings s;
   s.photons = photons;
   s.threads = threads;
-  if (draft) {  // as SceneTextures traces a draft
-    s.texel *= 2;
-    s.max_resolution /= 2;
-  }
+  if (draft) s = floor_light_draft(s, photons);  // as SceneTextures traces a draft
   for (auto _ : state) benchmark::DoNotOptimize(compute_floor_light(f, s));
 }
 BENCHMARK_CAPTURE(BM_FloorLight, pint_still, "lager", kFloorPhotonsStill)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -437,7 +437,7 @@ void SceneTextures::update_floor_light(const FrameState& f) {
   for (size_t i = 0; i < floor_cache_.size(); ++i)
     if (floor_cache_[i].inputs == inputs) {  // a still or an unchanged frame costs nothing more
       std::rotate(floor_cache_.begin(), floor_cache_.begin() + long(i), floor_cache_.begin() + long(i) + 1);
-      for (size_t k = 1; k < floor_cache_.size(); ++k) floor_cache_[k].refining.reset();  // they keep what they have
+      for (size_t k = 1; k < floor_cache_.size(); ++k) floor_cache_[k].settle();
       FloorEntry& front = floor_cache_.front();
       if (front.refining) {
         refine_floor_light(front, 1);
@@ -473,17 +473,12 @@ void SceneTextures::update_floor_light(const FrameState& f) {
   } else if (draft_photons_ > 0) {
     e.draft = true;
     drafted_last_ = true;
-    s.photons = std::min(s.photons, draft_photons_);
-    // Texels twice as wide: a quarter of the rig's exact light to evaluate per texel (most
-    // of a draft's time), and a draft's few photons spread over fewer, less noisy texels.
-    s.texel *= 2;
-    s.max_resolution = std::max(1, s.max_resolution / 2);
-    e.map = compute_floor_light(f, s);
+    e.map = compute_floor_light(f, floor_light_draft(s, draft_photons_));
   } else {
     e.map = compute_floor_light(f, s);
   }
   floor_computed_ = true;
-  if (!e.map.empty() && !e.tex) {
+  if (!e.map.empty() && !e.tex) {  // (a refined entry made its texture as it began)
     const std::vector<glm::vec4> texels = pack_floor_light(e.map);
     e.tex = make_floor_texture(e.map.width, e.map.height, &texels[0].x);
   }
@@ -491,23 +486,24 @@ void SceneTextures::update_floor_light(const FrameState& f) {
     glDeleteTextures(1, &floor_cache_.back().tex);
     floor_cache_.pop_back();
   }
-  for (FloorEntry& old : floor_cache_) old.refining.reset();
+  for (FloorEntry& old : floor_cache_) old.settle();
   floor_cache_.insert(floor_cache_.begin(), std::move(e));
 }
 
 void SceneTextures::refine_floor_light(FloorEntry& e, int batches) {
   for (int b = 0; b < batches && e.batches_left > 0; ++b, --e.batches_left) e.refining->add_batch();
-  e.map = e.refining->map();
-  if (e.batches_left == 0) e.refining.reset();  // the full budget: done
   floor_computed_ = true;
-  if (e.map.empty()) return;
-  const std::vector<glm::vec4> texels = pack_floor_light(e.map);
-  if (e.tex) {  // the same rect: the texels replaced
-    glBindTexture(GL_TEXTURE_2D, e.tex);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, e.map.width, e.map.height, GL_RGBA, GL_FLOAT, &texels[0].x);
-  } else {
-    e.tex = make_floor_texture(e.map.width, e.map.height, &texels[0].x);
+  const FloorLightMap& m = e.refining->map();
+  if (!m.empty()) {
+    const std::vector<glm::vec4> texels = pack_floor_light(m);
+    if (e.tex) {  // the same rect: the texels replaced
+      glBindTexture(GL_TEXTURE_2D, e.tex);
+      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, m.width, m.height, GL_RGBA, GL_FLOAT, &texels[0].x);
+    } else {
+      e.tex = make_floor_texture(m.width, m.height, &texels[0].x);
+    }
   }
+  if (e.batches_left == 0) e.settle();  // the full budget: done
 }
 
 std::vector<contract::ObjectRecord> SceneTextures::records() const {
@@ -518,7 +514,7 @@ std::vector<contract::ObjectRecord> SceneTextures::records() const {
 
 const FloorLightMap& SceneTextures::floor_light() const {
   static const FloorLightMap none;
-  return floor_cache_.empty() ? none : floor_cache_.front().map;
+  return floor_cache_.empty() ? none : floor_cache_.front().current();
 }
 
 void SceneTextures::describe_floor_light(contract::FrameBlock& b) const {

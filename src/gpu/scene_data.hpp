@@ -110,6 +110,13 @@ class SceneTextures {
     bool draft = false;
     std::unique_ptr<FloorLightTrace> refining;  // a still's map still taking batches (the current entry only)
     int batches_left = 0;
+    // The map, in the trace while it refines (not copied out each batch).
+    const FloorLightMap& current() const { return refining ? refining->map() : map; }
+    // No more batches: it keeps what it has.
+    void settle() {
+      if (refining) map = refining->release();
+      refining.reset();
+    }
   };
   void refine_floor_light(FloorEntry&, int batches);
   static constexpr size_t kFloorCache = 6;

@@ -612,6 +612,18 @@ FloorLightTrace::~FloorLightTrace() = default;
 
 int FloorLightTrace::batches() const { return state_->batches; }
 const FloorLightMap& FloorLightTrace::map() const { return state_->map; }
+FloorLightMap FloorLightTrace::release() {
+  FloorLightMap m = std::move(state_->map);
+  state_->map = {};  // empty: add_batch does nothing more
+  return m;
+}
+
+FloorLightSettings floor_light_draft(FloorLightSettings s, int photons) {
+  s.photons = std::min(s.photons, photons);
+  s.texel *= 2;
+  s.max_resolution = std::max(1, s.max_resolution / 2);
+  return s;
+}
 
 void FloorLightTrace::add_batch() {
   State& st = *state_;
@@ -661,7 +673,7 @@ void FloorLightTrace::add_batch() {
 FloorLightMap compute_floor_light(const FrameState& f, const FloorLightSettings& s) {
   FloorLightTrace trace(f, s);
   trace.add_batch();
-  return trace.map();
+  return trace.release();
 }
 
 std::vector<double> floor_light_inputs(const FrameState& f) {
@@ -670,7 +682,8 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
   // head settling, stop changing the map once nothing the map shows moves any more.
   auto put = [&k](auto... xs) { (k.push_back(std::round(double(xs) * 1e5)), ...); };
   auto put3 = [&put](const auto& v) { put(v.x, v.y, v.z); };
-  const BackdropSurface& b = scene_geometry(f).backdrop;
+  const SceneGeometry geo = scene_geometry(f);
+  const BackdropSurface& b = geo.backdrop;
   const LightRig emitters = floor_emitters(f);
   put(b.present ? 1 : 0, int(b.kind), b.plane ? 1 : 0, b.z_curve, b.radius, emitters.lights.size(), f.vessels.size());
   const glm::dvec3 sky = f.environment.image ? f.environment.sky.at({0, 1, 0}) : glm::dvec3(0.0);
@@ -678,7 +691,6 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
   for (const AreaLight& l : emitters.lights) {
     for (double x : l.numbers()) put(x);
   }
-  const SceneGeometry geo = scene_geometry(f);
   for (size_t i = 0; i < f.vessels.size(); ++i) {
     const VesselFrame& v = f.vessels[i];
     put3(v.pose.position);

@@ -97,6 +97,11 @@ LightRig floor_emitters(const FrameState&);
 // The irradiance the rig gives floor point p (y = 0) with nothing in between.
 glm::dvec3 unoccluded_floor_irradiance(const LightRig&, const glm::dvec3& p);
 
+// The settings of a draft of `photons` photons while a scene moves: on texels twice as wide
+// (a quarter of the exact open light to evaluate, most of a draft's time, and a draft's
+// few photons spread over fewer, less noisy texels).
+FloorLightSettings floor_light_draft(FloorLightSettings full, int photons);
+
 // The map of the frame (empty when there is no floor, no light or no object).
 FloorLightMap compute_floor_light(const FrameState&, const FloorLightSettings& = {});
 
@@ -115,6 +120,7 @@ class FloorLightTrace {
   void add_batch();
   int batches() const;
   const FloorLightMap& map() const;
+  FloorLightMap release();  // the map, moved out: the trace takes no more batches
 
  private:
   struct State;

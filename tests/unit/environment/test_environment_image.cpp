@@ -150,7 +150,9 @@ TEST_F(EnvironmentImage, AFileThatCannotBeUsedIsRefusedAndChangesNothing) {
       ADD_FAILURE() << "accepted " << bad;
     } catch (const ParamError& e) {
       EXPECT_EQ(e.field, "env.image");
-      if (!bad.empty()) EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
+      if (!bad.empty()) {
+        EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
+      }
     }
     EXPECT_EQ(p.env.image, "studio");  // unchanged
   }
