@@ -22,6 +22,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/pointcloud/ply.cpp
   src/core/pointcloud/point_text.cpp
   src/core/pointcloud/cloud_files.cpp
+  src/core/pointcloud/cloud_viewing.cpp
   src/core/pointcloud/blackbody.cpp
   src/core/pointcloud/glass_heat.cpp
   src/core/pointcloud/gob.cpp

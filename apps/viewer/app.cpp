@@ -439,6 +439,7 @@ void Viewer::restart() {
     timeline_start_ = now_;
   } else {
     sim_ = std::make_unique<SceneSimulation>(editor_.scene());
+    sim_->begin_at(now_);  // a gob begins at its age, not aged by the time the viewer has run
     if (rig_.gamepad) rig_.gamepad->recenter();  // the controller's pose now is "upright"
   }
   sim_->settle_bubbles(4.0);  // drinks that have been standing, as the CLI shows them

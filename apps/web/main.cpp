@@ -10,6 +10,8 @@
 #include "core/params/params.hpp"
 #include "core/params/preset.hpp"
 #include "core/params/timeline.hpp"
+#include "core/pointcloud/cloud_files.hpp"
+#include "core/pointcloud/cloud_viewing.hpp"
 #include "core/scene/scene.hpp"
 #include "core/sim/scene_simulation.hpp"
 #include "core/text/echo.hpp"
@@ -147,7 +149,10 @@ const char* answer_json(const json& j) { return answer(j.dump(-1, ' ', false, js
 double now_s() { return emscripten_get_now() / 1000.0 - (app ? app->t0 : 0); }
 Viewport viewport(double w, double h) { return {std::max(1.0, w), std::max(1.0, h)}; }
 
-enum class Refill { none, selected, all };
+// What a new scene refills: nothing, the selected glass, every glass; or `restart`, a scene
+// from a file: a new simulation from time 0, as `draught render --preset FILE` starts (a
+// gob or a file cloud would otherwise appear as hot as the page's clock has let it cool).
+enum class Refill { none, selected, all, restart };
 
 // A new scene from the page. The drinks keep moving; a new drink or glass is a full one
 // (`refill`); other objects start afresh, their bubbles risen. The selection stays where it
@@ -156,8 +161,9 @@ void use_scene(Scene s, Refill refill) {
   s.selected = std::clamp(app->scene.selected, 0, std::max(0, int(s.objects.size()) - 1));
   app->scene = s;
   if (!app->sim) return;
-  if (app->sim->scene().objects.size() != s.objects.size()) {
+  if (refill == Refill::restart || app->sim->scene().objects.size() != s.objects.size()) {
     app->sim = std::make_unique<SceneSimulation>(s);
+    app->sim->begin_at(now_s());
     app->sim->settle_bubbles(2.0);
     return;
   }
@@ -362,6 +368,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_start(const char* canvas, int preserve,
   try {
     app->scene = resolve_scene_objects(SceneRequest{});
     app->sim = std::make_unique<SceneSimulation>(app->scene);
+    app->sim->begin_at(now_s());
     app->sim->settle_bubbles(2.0);
     app->rig = make_rig("mouse");
     app->renderer = std::make_unique<gpu::Renderer>();
@@ -644,7 +651,13 @@ EMSCRIPTEN_KEEPALIVE const char* draught_select(const char* drink, const char* g
     Scene s = resolve_scene_objects(req);
     app->drink = drink;
     app->glass = glass;
-    use_scene(s, Refill::all);
+    // A scene of point clouds, or of other kinds than now, begins anew (a gob at its age);
+    // a drink or glass changed in the same scene keeps the glasses' motion.
+    const bool same_kinds = s.objects.size() == app->scene.objects.size() &&
+                            std::equal(s.objects.begin(), s.objects.end(), app->scene.objects.begin(),
+                                       [](const SceneObject& a, const SceneObject& b) { return a.kind.index() == b.kind.index(); });
+    const bool clouds = std::any_of(s.objects.begin(), s.objects.end(), [](const SceneObject& o) { return as_cloud(o) != nullptr; });
+    use_scene(s, same_kinds && !clouds ? Refill::all : Refill::restart);
     return answer("");
   } catch (const std::exception& e) {
     return answer(e.what());
@@ -682,7 +695,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_load_preset(const char* text, const cha
       write_file_atomic(path, text);
       SceneRequest req;
       req.preset = path.string();
-      use_scene(resolve_scene_objects(req), Refill::all);
+      use_scene(resolve_scene_objects(req), Refill::restart);
     }
     return answer_json(json{{"error", ""}, {"kind", pr.kind}, {"name", shorten(pr.name)}});
   } catch (const std::exception& e) {
@@ -713,6 +726,38 @@ EMSCRIPTEN_KEEPALIVE const char* draught_load_environment(const char* file, cons
   } catch (const std::exception& e) {
     std::error_code ec;
     std::filesystem::remove(path, ec);
+    return answer_json(json{{"error", e.what()}});
+  }
+}
+
+// A point cloud file from the page's file input (.ply, .xyz, .csv, .txt; its bytes, `size`
+// of them), shown on its own: written to /uploads/clouds/, read and fitted to the view
+// (core/pointcloud/cloud_viewing), and the scene preset beside it resolved as the CLI's
+// --preset resolves it. {"error": "", "points": N, "scale": s}; on error both files are
+// removed and the scene kept.
+EMSCRIPTEN_KEEPALIVE const char* draught_load_cloud(const char* file, const char* bytes, int size) {
+  if (!app) return answer_json(json{{"error", "not started"}});
+  const std::filesystem::path dir = "/uploads/clouds";
+  const std::filesystem::path name = std::filesystem::path(file).filename();
+  const std::filesystem::path path = dir / name, preset = dir / (name.string() + ".scene.json");
+  auto remove_both = [&] {
+    std::error_code ec;
+    std::filesystem::remove(path, ec);
+    std::filesystem::remove(preset, ec);
+  };
+  try {
+    std::filesystem::create_directories(dir);
+    write_file_atomic(path, std::string(bytes, size_t(std::max(size, 0))));
+    const PointCloud cloud = load_point_cloud(path);  // every error names the file and where
+    if (cloud.size() == 0) throw InputError(name.string() + ": expected at least one point, found none");
+    const CloudFit fit = fit_cloud_to_view(cloud);
+    write_file_atomic(preset, cloud_viewing_preset(name.stem().string(), name.string(), fit));
+    SceneRequest req;
+    req.preset = preset.string();
+    use_scene(resolve_scene_objects(req), Refill::restart);
+    return answer_json(json{{"error", ""}, {"points", cloud.size()}, {"scale", fit.scale}});
+  } catch (const std::exception& e) {
+    remove_both();
     return answer_json(json{{"error", e.what()}});
   }
 }

@@ -58,6 +58,9 @@
   // as floats takes about 1.4 x 12 bytes per texel of the heap.
   const kMaxEnvironmentBytes = 64 * 1024 * 1024;
   const kMaxDecalBytes = 80 * 1024 * 1024;  // kMaxPngFileBytes (core/io/image.hpp)
+  // A point cloud file: 128 MiB holds 4M points (the most a cloud may have) of a binary PLY
+  // with radius and temperature; the bytes are copied once into the module's heap.
+  const kMaxCloudBytes = 128 * 1024 * 1024;
   const kMaxValueBytes = 4096;
   const encoder = new TextEncoder();
   // (Text longer than the file limit in characters is over it in bytes too: no need to encode it.)
@@ -139,6 +142,7 @@
       select: fn('draught_select', 'string', ['string', 'string']),
       load: fn('draught_load_preset', 'json', ['string', 'string']),
       loadEnvironment: fn('draught_load_environment', 'json', ['string', 'bytes', 'number']),
+      loadCloud: fn('draught_load_cloud', 'json', ['string', 'bytes', 'number']),
       exportPreset: fn('draught_export_preset', 'json', ['string']),
       loadDecal: fn('draught_load_decal', 'string', ['string', 'number', 'number', 'number']),
       pour: fn('draught_pour', null),
@@ -580,6 +584,32 @@
       }
       refreshValues();
       say(`environment ${name}`);
+      return '';
+    };
+    // A point cloud file (.ply, .xyz, .csv): shown on its own, fitted to the view, as a
+    // scene of one cloud object (its panel rows then edit it; Export saves the scene).
+    $('cloud').addEventListener('change', async (e) => {
+      const file = e.target.files[0];
+      e.target.value = '';
+      if (!file) return;
+      if (file.size > kMaxCloudBytes) return say(`${file.name}: ${mib(file.size)}, larger than the limit of ${mib(kMaxCloudBytes)} for a point cloud; nothing was loaded`, true);
+      page.loadCloud(new Uint8Array(await file.arrayBuffer()), file.name);
+    });
+    page.loadCloud = (bytes, name) => {
+      name = String(name).slice(0, 255);
+      if (bytes.length > kMaxCloudBytes) {
+        const msg = `${name}: ${mib(bytes.length)}, larger than the limit of ${mib(kMaxCloudBytes)} for a point cloud; nothing was loaded`;
+        say(msg, true);
+        return msg;
+      }
+      const r = JSON.parse(api.loadCloud(name, bytes, bytes.length));
+      if (r.error) {
+        say(r.error, true);  // nothing was applied
+        return r.error;
+      }
+      refreshObjects();
+      refreshValues();
+      say(`point cloud ${name}: ${r.points.toLocaleString('en-US')} points, ${+r.scale.toPrecision(3)} m per unit`);
       return '';
     };
     // A decal image: its bytes into the module's heap, written there into the page's file

@@ -257,6 +257,64 @@ test('a decal image from disk goes on the selected glass; a broken one changes n
   await page.selectOption('#drink', 'lager');  // the preset's own values again
 });
 
+// A blob of `n` points in millimetres (x y z radius), deterministic: the page must fit it
+// to the view whatever its units.
+function blobXyz(n, radiusMm) {
+  let seed = 7;
+  const rand = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+  const lines = ['x y z radius'];
+  while (lines.length <= n) {
+    const p = [rand() * 2 - 1, rand() * 2 - 1, rand() * 2 - 1];
+    if (p[0] * p[0] + p[1] * p[1] + p[2] * p[2] > 1) continue;
+    lines.push(`${(p[0] * radiusMm).toFixed(3)} ${(p[1] * radiusMm).toFixed(3)} ${(p[2] * radiusMm).toFixed(3)} ${(radiusMm / 4).toFixed(3)}`);
+  }
+  return Buffer.from(lines.join('\n') + '\n');
+}
+
+test('a point cloud file is shown on its own, fitted to the view; a broken one changes nothing', async () => {
+  const page = await openPage(env);  // its own page: the cloud replaces the scene
+  try {
+    const v0 = await values(page);
+    const { before, noise: n } = await noise(page);
+    const broken = 'ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nend_header\n1 2 3\n4 5\n';
+    await page.setInputFiles('#cloud', { name: 'broken.ply', mimeType: 'application/octet-stream', buffer: Buffer.from(broken) });
+    await page.waitForFunction(() => /broken\.ply/.test(document.getElementById('message').textContent));
+    const m = await message(page);
+    note(m.text);
+    assert.ok(m.error, 'shown as an error');
+    assert.match(m.text, /broken\.ply.*(line|byte)/, 'names the file and where');
+    assert.deepEqual(await values(page), v0, 'nothing applied');
+
+    await page.setInputFiles('#cloud', { name: 'blob.xyz', mimeType: 'text/plain', buffer: blobXyz(300, 20) });
+    await page.waitForFunction(() => /point cloud blob\.xyz/.test(document.getElementById('message').textContent), null, { timeout: 30000 });
+    const ok = await message(page);
+    note(ok.text);
+    assert.ok(!ok.error);
+    assert.match(ok.text, /300 points/);
+    // Points within 20 mm of the centre, grown by their own 5 mm: at most 50 mm across, fitted
+    // to 80 mm (300 random points reach close to the sphere's edge, not onto it).
+    const scale = Number(/([0-9.e-]+) m per unit/.exec(ok.text)[1]);
+    assert.ok(scale >= 0.08 / 50 && scale < 0.08 / 44, `scale ${scale}`);
+    await waitFrames(page, 3);
+    const after = await snapshot(page);
+    const d = difference(before, after);
+    // The hot glass glows in the middle of the picture: the centre's box is bright and warm.
+    const w = after.width, h = after.height;
+    let r = 0, b = 0, k = 0;
+    for (let y = Math.floor(h * 0.4); y < h * 0.6; ++y)
+      for (let x = Math.floor(w * 0.4); x < w * 0.6; ++x, ++k) {
+        r += after.data[4 * (y * w + x)];
+        b += after.data[4 * (y * w + x) + 2];
+      }
+    note(`scene -> cloud ${d.toFixed(1)}, noise ${n.toFixed(2)}; centre red ${(r / k).toFixed(0)}, blue ${(b / k).toFixed(0)}`);
+    assert.ok(d > changed(d, n) && d > 6, `the picture changed: difference ${d.toFixed(2)}`);
+    assert.ok(r / k > 100 && r / k > 1.5 * (b / k), 'the cloud glows orange in the middle');
+    await page.screenshot({ path: path.join(artifacts, 'point-cloud.png') });
+  } finally {
+    await page.context().close();
+  }
+});
+
 test('devicemotion tilts the liquid (rig picks up the gyro)', async () => {
   const page = await desktop();
   await page.selectOption('#drink', 'lager');

@@ -39,7 +39,7 @@ void SceneSimulation::set_scene(const Scene& s) {
                         scene_.objects[i].placement.position == at.position && scene_.objects[i].placement.yaw == at.yaw;
       if (!same) {
         clouds_[i].emplace(c->params, at.position, at.yaw);
-        clouds_[i]->advance_to(time());
+        clouds_[i]->advance_to(time() - clock_origin_);
       }
     } else {
       clouds_[i].reset();
@@ -116,8 +116,16 @@ const CloudSource* SceneSimulation::cloud(int i) const {
   return i >= 0 && i < int(clouds_.size()) && clouds_[size_t(i)] ? &*clouds_[size_t(i)] : nullptr;
 }
 
+void SceneSimulation::begin_at(double t) {
+  if (!std::isfinite(t)) return;
+  for (auto& s : sims_)
+    if (s) s->skip_to(t);
+  trail_time_ = t;
+  clock_origin_ = t;
+}
+
 void SceneSimulation::step_clouds() {
-  const double t = time();
+  const double t = time() - clock_origin_;
   for (auto& c : clouds_)
     if (c) c->advance_to(t);
 }

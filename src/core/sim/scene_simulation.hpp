@@ -33,6 +33,11 @@ class SceneSimulation {
   void select(int object);  // clamped to the objects there are
 
   void settle_bubbles(double seconds);
+  // The scene begins at time t of the caller's clock (an app that loads a scene while its
+  // own clock has run): every object jumps there, and the point clouds' sources count their
+  // time (a gob's turning, a file's cooling, a sequence's frame) from t, not from 0. The
+  // CLI starts at 0 and never calls this.
+  void begin_at(double t);
   // Steps every object to time t: the selected one samples `driver`, the others stand still.
   void advance(InputDriver& driver, double t, double drink_rate = 0);
   // One step: the selected object moves with `m` (in its own stage), the others rest.
@@ -66,6 +71,7 @@ class SceneSimulation {
   std::vector<std::optional<CloudSource>> clouds_;   // one per object; set for point-cloud objects
   glm::dvec2 pointer_{0.0};
   double trail_time_ = 0;  // the clock of a scene without vessels
+  double clock_origin_ = 0;  // begin_at's t: where the clouds' sources count from
   void step_trails(const std::vector<MotionSample>* each, const MotionSample* all);
   void step_clouds();  // each cloud's source to the scene's time
   // A glass that input lets go of (the selection moved on) is set back upright over

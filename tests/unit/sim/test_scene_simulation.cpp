@@ -215,5 +215,32 @@ TEST(SceneSimulation, ReleasedGlassEasesBackUpright) {
   EXPECT_GT(sim.vessel(0)->energy(), 0.0) << "setting it down moves the drink";
 }
 
+// An app whose clock has run (the web page) loads a scene of a gob: begun at its time, the
+// gob is as it is in a scene begun at 0 (as hot, as turned), not aged by the app's clock.
+TEST(SceneSimulation, ASceneBegunLaterCountsItsCloudsTimeFromThere) {
+  const Scene scene = scene_from_preset(parse_preset(R"({"draught_preset": 1, "kind": "scene", "name": "g",
+    "objects": [{"name": "gob", "kind": "pointcloud", "pointcloud": {"count": 600}}]})", "g.json"));
+  struct Still : InputDriver {
+    const char* name() const override { return "still"; }
+    MotionSample sample(double t) override { MotionSample m; m.time = t; return m; }
+  } still;
+  auto mean_kelvin = [](const SceneSimulation& s) {
+    const PointCloud& c = *s.frame().clouds.at(0).points;
+    double sum = 0;
+    for (float k : c.temperature) sum += k;
+    return sum / double(c.size());
+  };
+  SceneSimulation fresh(scene);
+  fresh.advance(still, 0.5);
+  SceneSimulation later(scene);
+  later.begin_at(20.0);
+  later.advance(still, 20.5);
+  EXPECT_NEAR(later.time(), 20.5, 1e-6);
+  EXPECT_NEAR(mean_kelvin(later), mean_kelvin(fresh), 1.0);
+  SceneSimulation aged(scene);  // not begun: its clouds count from 0, twenty seconds of cooling
+  aged.advance(still, 20.5);
+  EXPECT_LT(mean_kelvin(aged), mean_kelvin(fresh) - 20.0);  // (33 K cooler: a gob keeps its heat)
+}
+
 }  // namespace
 }  // namespace draught
