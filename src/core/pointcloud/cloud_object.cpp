@@ -41,8 +41,9 @@ const std::vector<ObjectParamInfo>& point_cloud_param_table() {
       {"ior", 1, 2.5, "", "index of refraction (glass 1.5, a drink 1.34)"},
       {"roughness", 0, 1, "", "GGX roughness of the surface"},
       {"absorption", 0, 1000, "1/m", "Beer-Lambert absorption per metre, [r, g, b]"},
-      {"count", 100, 50000, "", "gob: particles"},
-      {"gob_radius", 0.005, 0.3, "m", "gob: its radius when gathered"},
+      // (The gob's own model, core/pointcloud/gob, takes every value of these ranges.)
+      {"count", 500, 50000, "", "gob: particles"},
+      {"gob_radius", 0.01, 0.2, "m", "gob: its radius when gathered"},
       {"turn", -20, 20, "rad/s", "gob: how fast the blowpipe turns"},
       {"flow", 1e-6, 1e-3, "m^3/s", "stream: volume per second"},
       {"height", 0.01, 2, "m", "stream: the spout above the placement"},
@@ -229,8 +230,10 @@ CloudSource::CloudSource(const PointCloudParams& p, glm::vec3 position, float ya
     case CloudSourceKind::Gob: {
       GobParams g;
       g.count = p.count;
-      g.radius = p.gob_radius;
-      g.blob_radius = p.blob_radius;  // (0: the gob's own choice, replaced below)
+      // (the table's float ends may fall a hair outside the model's double range)
+      g.radius = std::clamp(double(p.gob_radius), 0.01, 0.2);
+      // (0: the gob's own choice, replaced below; a blob wider than the gob's model takes, 5 cm, is held there)
+      g.blob_radius = p.blob_radius > 0 ? std::clamp(double(p.blob_radius), 1e-4, 0.05) : 0.0;
       g.pipe_radius = std::min(g.pipe_radius, 0.5 * g.radius);
       g.pipe_depth = std::min(g.pipe_depth, 0.5 * g.radius);
       g.turn_rate = p.turn;

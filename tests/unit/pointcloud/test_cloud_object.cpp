@@ -30,7 +30,7 @@ TEST(PointCloudObject, EveryMistakeIsNamedWithItsFieldAndWhatWasExpected) {
   EXPECT_TRUE(has(parse_error(R"({"source": "bucket"})"), {"objects[1].pointcloud.source", "\"gob\"", "\"file\""}));
   EXPECT_TRUE(has(parse_error(R"({"source": "file"})"), {"objects[1].pointcloud.file", "missing"}));
   EXPECT_TRUE(has(parse_error(R"({"file": "a.ply"})"), {"objects[1].pointcloud.file", "only a \"file\" source"}));
-  EXPECT_TRUE(has(parse_error(R"({"count": 12.5})"), {"objects[1].pointcloud.count", "whole number", "[100, 50000]"}));
+  EXPECT_TRUE(has(parse_error(R"({"count": 12.5})"), {"objects[1].pointcloud.count", "whole number", "[500, 50000]"}));
   EXPECT_TRUE(has(parse_error(R"({"glow": -1})"), {"objects[1].pointcloud.glow", "[0, 100]", "-1"}));
   EXPECT_TRUE(has(parse_error(R"({"absorption": [1, 2]})"), {"objects[1].pointcloud.absorption", "[r, g, b]"}));
   EXPECT_TRUE(has(parse_error(R"({"material": "lava"})"), {"objects[1].pointcloud.material", "\"molten_glass\""}));
@@ -86,6 +86,23 @@ TEST(PointCloudObject, TheGobTurnsOnItsBlowpipeTheSameEveryTime) {
   ASSERT_EQ(fa[0].points->size(), fb[0].points->size());
   for (std::size_t i = 0; i < fa[0].points->size(); ++i) ASSERT_EQ(fa[0].points->position[i], fb[0].points->position[i]);
   EXPECT_EQ(a.frames()[0].version, fa[0].version);  // asked again at the same time: the same points
+}
+
+// What the table accepts, the gob's model takes: each of the gob's parameters at either
+// end of its range (the others at their defaults) makes a gob, not an error from inside.
+TEST(PointCloudObject, EveryValueTheTableAcceptsMakesAGob) {
+  for (const char* key : {"count", "gob_radius", "turn", "temperature", "blob_radius"})
+    for (bool high : {false, true}) {
+      const ObjectParamInfo* info = nullptr;
+      for (const ObjectParamInfo& row : point_cloud_param_table())
+        if (std::string(row.name) == key) info = &row;
+      ASSERT_NE(info, nullptr) << key;
+      nlohmann::json j = {{"age", 0}};
+      j[key] = high ? info->max : info->min;
+      if (std::string(key) == "count") j[key] = int(high ? info->max : info->min);
+      const PointCloudParams p = parse_point_cloud_params(j, "gob.json", "objects[0].pointcloud");
+      EXPECT_NO_THROW(CloudSource(p, {}, 0)) << key << " = " << j[key];
+    }
 }
 
 class PointCloudFiles : public test::TempDirTest {
