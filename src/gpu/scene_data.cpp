@@ -55,6 +55,11 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
   b.sweep_albedo = glm::vec3(f.backdrop.sweep_albedo);
   b.sky_light = glm::vec3(f.environment.sky.at({0, 1, 0}) / 3.14159265358979);
   for (int i = 0; i < 9; ++i) b.surround_sh[i] = {glm::vec3(f.environment.surround.coef[size_t(i)]), 0.0f};
+  // What heads and haze take: the rig, or an image's brightest patches (core media_light).
+  const MediaLight& media = f.environment.media;
+  b.media_light_count = std::min<int>(int(media.lights.size()), contract::kMaxLights);
+  for (int i = 0; i < b.media_light_count; ++i) b.media_light_radiance[i] = {glm::vec3(media.lights[size_t(i)].radiance), 0.0f};
+  for (int i = 0; i < 9; ++i) b.media_sh[i] = {glm::vec3(media.surround.coef[size_t(i)]), 0.0f};
   b.env_mode = p.env.mode;
   b.strip_intensity = p.env.strip_intensity;
   b.backdrop_glow = p.env.backdrop_glow;
@@ -181,16 +186,18 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.ior = vp.liquid.ior;
   r.haze = vp.liquid.haze;
   r.roughness = vp.liquid.roughness;
-  // Each light as a distant light from the glass's middle: what the head and the haze
+  // Each light the media take (the rig's, or an image's brightest patches: core
+  // media_light) as a distant light from the glass's middle: what the head and the haze
   // receive (small lights far from small glasses: the irradiance barely varies over one).
   const glm::dvec3 middle = vf.pose.position + vf.pose.orientation * glm::dvec3(0, 0.5 * v.height, 0);
-  const int lights = std::min<int>(int(f.lights.lights.size()), contract::kMaxLights);
+  const MediaLight& media = f.environment.media;
+  const int lights = std::min<int>(int(media.lights.size()), contract::kMaxLights);
   // The haze's light (single scattering, isotropic): the mean radiance around it (the sky
   // and the lit backdrop) and a quarter of each light's irradiance over pi, reaching the inside through 0.7 of the mean radius
   // of the drink. The same for every pixel, so here once, not per segment of every path.
-  glm::dvec3 haze_in = mean_radiance(f.environment.surround);
+  glm::dvec3 haze_in = mean_radiance(media.surround);
   for (int i = 0; i < lights; ++i) {
-    const AreaLight& l = f.lights.lights[size_t(i)];
+    const AreaLight& l = media.lights[size_t(i)];
     const glm::dvec3 to = glm::normalize(l.center - middle);
     r.lit_by[i] = {glm::vec3(to), float(l.irradiance_factor(middle, to))};
     haze_in += 0.25 * glm::dvec3(l.radiance) * double(r.lit_by[i].w);

@@ -1,7 +1,8 @@
 // The foam head of a vessel: a volume on the liquid surface up to the head's top (where
 // core/foam puts it), marched only along the stretch of a ray inside it. Beer's-law
-// opacity per step, light derived from single scattering of the studio's lights (each a
-// distant light from the glass's middle: objects.def lit_by) and the diffusion
+// opacity per step, light derived from single scattering of the studio's lights, or of an
+// environment image's brightest patches (each a distant light from the glass's middle:
+// objects.def lit_by, frame.media_light_*; core/environment/media_light) and the diffusion
 // approximation between the head's faces (head_source; no shadow rays), micro-bubble
 // detail from value noise, big
 // bubbles (placed by core: VesselFrame::big_bubbles) as voids with a denser ring around
@@ -120,12 +121,16 @@ HeadLight head_light(Vessel v, ObjectFoam f) {
   h.albedo = f.foam_color;
   h.kappa = sqrt(3.0 * max(1.0 - h.albedo, 0.0) * (1.0 - h.albedo * f.anisotropy));
   h.zb = 2.0 / (3.0 * (1.0 - f.anisotropy));
-  h.top_sky = surround_irradiance(to_world_dir(v, vec3(0.0, 1.0, 0.0))) / PI;
+  // The surroundings besides the lights (frame.media_sh: the surround, less an image's
+  // patches taken as lights), read once per head.
+  vec3 sh[9];
+  for (int i = 0; i < 9; ++i) sh[i] = frame.media_sh[i].rgb;
+  h.top_sky = sh_irradiance(sh, to_world_dir(v, vec3(0.0, 1.0, 0.0))) / PI;
   // The side's light at the four sides and between two of them fixes its quadratic form.
   vec3 u = to_world_dir(v, vec3(1.0, 0.0, 0.0)), w = to_world_dir(v, vec3(0.0, 0.0, 1.0));
-  vec3 eu = surround_irradiance(u) / PI, enu = surround_irradiance(-u) / PI;
-  vec3 ew = surround_irradiance(w) / PI, enw = surround_irradiance(-w) / PI;
-  vec3 euw = surround_irradiance(normalize(u + w)) / PI;
+  vec3 eu = sh_irradiance(sh, u) / PI, enu = sh_irradiance(sh, -u) / PI;
+  vec3 ew = sh_irradiance(sh, w) / PI, enw = sh_irradiance(sh, -w) / PI;
+  vec3 euw = sh_irradiance(sh, normalize(u + w)) / PI;
   h.side_xx = 0.5 * (eu + enu);
   h.side_zz = 0.5 * (ew + enw);
   h.side_x = 0.5 * (eu - enu);
@@ -133,11 +138,12 @@ HeadLight head_light(Vessel v, ObjectFoam f) {
   h.side_xz = 2.0 * (euw - 0.5 * (h.side_xx + h.side_zz) - 0.70710678 * (h.side_x + h.side_z));
   // Under the head, light from all around through the drink: the surroundings' mean
   // radiance (their band-0 harmonic), along the drink's mean chord.
-  h.below = g_surround_sh[0] * (0.282095 / PI) * exp(-v.body.absorption * f.under_chord);
-  h.count = g_light_count;
+  h.below = sh[0] * (0.282095 / PI) * exp(-v.body.absorption * f.under_chord);
+  // The lights: the rig's, or an image's brightest patches (core media_light).
+  h.count = frame.media_light_count;
   for (int i = 0; i < MAX_LIGHTS; ++i) {
     vec4 lit = i < h.count ? object_lit_by(v.row, i) : vec4(0.0, 1.0, 0.0, 0.0);
-    h.key[i] = area_light(i).radiance * lit.w;
+    h.key[i] = frame.media_light_radiance[i].rgb * lit.w;
     h.l[i] = to_local_dir(v, lit.xyz);
   }
   float ior = fetch_object_glass(v.row).glass_ior, f0 = (ior - 1.0) / (ior + 1.0);

@@ -1,5 +1,6 @@
 #include "core/environment/floor_light.hpp"
 
+#include "core/environment/image_patches.hpp"
 #include "core/environment/studio.hpp"
 #include "core/math/basis.hpp"
 
@@ -454,39 +455,16 @@ glm::dvec3 FloorLightMap::sample(double x, double z) const {
 LightRig floor_emitters(const FrameState& f) {
   if (!f.environment.image) return f.lights;
   // The image's patches of the level nearest 32 wide, the brightest on the floor first.
-  const Studio studio(f.params);
-  const EnvironmentMap& map = *f.environment.image;
-  size_t level = 0;
-  while (level + 1 < map.levels.size() && map.levels[level].width > 32) ++level;
-  const HdrImage& img = map.levels[level];
-  struct Patch {
-    double floor_light;  // its irradiance on the floor, mean over the channels
-    glm::dvec3 dir, radiance;
-    double solid_angle;
-  };
-  std::vector<Patch> patches;
-  for (int j = 0; j < img.height / 2; ++j) {  // the upper half: what reaches the floor
-    const double t0 = kPi * j / img.height, t1 = kPi * (j + 1) / img.height;
-    const double solid = (std::cos(t0) - std::cos(t1)) * 2 * kPi / img.width;
-    for (int i = 0; i < img.width; ++i) {
-      const glm::dvec3 dir = studio.world_direction(equirect_direction({(i + 0.5) / img.width, (j + 0.5) / img.height}));
-      const glm::dvec3 l = glm::dvec3(img.at(i, j)) * double(f.params.env.intensity);
-      patches.push_back({mean3(l) * solid * dir.y, dir, l, solid});
-    }
-  }
+  ImagePatches level = image_patches(Studio(f.params), 32, true);
+  std::vector<ImagePatch>& patches = level.patches;
+  const auto floor_light = [](const ImagePatch& p) { return mean3(p.radiance) * p.solid_angle * p.dir.y; };
   const size_t keep = std::min(patches.size(), kImageFloorEmitters);
   std::partial_sort(patches.begin(), patches.begin() + long(keep), patches.end(),
-                    [](const Patch& a, const Patch& b) { return a.floor_light > b.floor_light; });
+                    [&](const ImagePatch& a, const ImagePatch& b) { return floor_light(a) > floor_light(b); });
   LightRig rig;
   rig.aim = f.lights.aim;
-  for (size_t k = 0; k < keep && patches[k].floor_light > 0; ++k) {
-    AreaLight l;
-    l.shape = LightShape::Sphere;
-    l.radius = kImageEmitterDistance * std::sqrt(patches[k].solid_angle / kPi);  // the patch's solid angle
-    l.center = rig.aim + kImageEmitterDistance * patches[k].dir;
-    l.radiance = patches[k].radiance;
-    rig.lights.push_back(l);
-  }
+  for (size_t k = 0; k < keep && floor_light(patches[k]) > 0; ++k)
+    rig.lights.push_back(far_patch_light(patches[k], rig.aim));
   return rig;
 }
 

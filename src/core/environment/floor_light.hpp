@@ -90,7 +90,6 @@ struct FloorLightMap {
 // with its radiance. Their photons change the image's whole, even light on the floor
 // (its spherical harmonics) near the glasses: the shadows of what lights the floor most.
 inline constexpr size_t kImageFloorEmitters = 16;
-inline constexpr double kImageEmitterDistance = 50.0;  // m from the scene's centre
 // The lights whose photons the map traces: the rig's, or an image's patches.
 LightRig floor_emitters(const FrameState&);
 

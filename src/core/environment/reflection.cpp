@@ -1,5 +1,6 @@
 #include "core/environment/reflection.hpp"
 
+#include "core/environment/image_patches.hpp"
 #include "core/environment/sphere_grid.hpp"
 
 #include <cmath>
@@ -13,22 +14,13 @@ namespace {
 // An environment image's glint: its brightest patch (a texel of the level nearest 64 wide,
 // about 6 degrees), the direction to it and the irradiance it gives facing it.
 void image_glint(const Studio& studio, EnvironmentFrame& f) {
-  constexpr double kPi = std::numbers::pi;
-  const EnvironmentMap& map = *studio.image;
-  size_t level = 0;
-  while (level + 1 < map.levels.size() && map.levels[level].width > 64) ++level;
-  const HdrImage& img = map.levels[level];
   double best = 0;
-  for (int j = 0; j < img.height; ++j) {
-    const double t0 = kPi * j / img.height, t1 = kPi * (j + 1) / img.height;
-    const double solid = (std::cos(t0) - std::cos(t1)) * 2 * kPi / img.width;
-    for (int i = 0; i < img.width; ++i) {
-      const glm::dvec3 e = glm::dvec3(img.at(i, j)) * solid * double(studio.env.intensity);
-      if (e.x + e.y + e.z <= best) continue;
-      best = e.x + e.y + e.z;
-      f.glint_dir = glm::vec3(studio.world_direction(equirect_direction({(i + 0.5) / img.width, (j + 0.5) / img.height})));
-      f.glint = glm::vec3(e);
-    }
+  for (const ImagePatch& p : image_patches(studio, 64).patches) {
+    const glm::dvec3 e = p.irradiance();
+    if (e.x + e.y + e.z <= best) continue;
+    best = e.x + e.y + e.z;
+    f.glint_dir = glm::vec3(p.dir);
+    f.glint = glm::vec3(e);
   }
 }
 
@@ -84,6 +76,7 @@ EnvironmentFrame environment_frame(const SceneParams& p, const LightRig& rig, co
   BackdropSurface drawn = backdrop;  // (a transparent picture draws no floor, so none lights)
   drawn.present = backdrop.present && !p.render.transparent;
   f.surround = surround_irradiance(studio, f.sky, rig, drawn, rig.aim);
+  f.media = media_light(studio, rig, f.surround);
   f.image = studio.image;
   f.rotation_cos = float(studio.rotation_cos);
   f.rotation_sin = float(studio.rotation_sin);

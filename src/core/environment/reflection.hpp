@@ -4,6 +4,7 @@
 
 #include "core/environment/backdrop.hpp"
 #include "core/environment/lights.hpp"
+#include "core/environment/media_light.hpp"
 #include "core/environment/sky_irradiance.hpp"
 #include "core/params/params.hpp"
 
@@ -28,6 +29,9 @@ struct EnvironmentFrame {
   // What the heads and the haze are lit by besides the lights themselves: the sky, and the
   // lit backdrop where it hides the sky, seen from the scene's centre (surround_irradiance).
   SkyIrradiance surround;
+  // What the heads and the haze are lit by, split into lights and the rest: the rig and the
+  // surround, or under an image its brightest patches and the surround less them.
+  MediaLight media;
   // env.mode image: the environment and how it is seen (Studio's image, rotation, blur).
   std::shared_ptr<const EnvironmentMap> image;
   float rotation_cos = 1, rotation_sin = 0, blur_lod = 0, intensity = 1;

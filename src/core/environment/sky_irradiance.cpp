@@ -1,5 +1,6 @@
 #include "core/environment/sky_irradiance.hpp"
 
+#include "core/environment/image_patches.hpp"
 #include "core/environment/sphere_grid.hpp"
 
 #include <cmath>
@@ -32,22 +33,15 @@ namespace {
 // texel the mean of those above it), each weighted by its exact solid angle, so a small
 // bright lamp in the image gives its whole light, not what a grid of directions meets.
 SkyIrradiance image_irradiance(const Studio& studio) {
-  constexpr double kPi = std::numbers::pi;
-  const EnvironmentMap& map = *studio.image;
-  size_t level = 0;
-  while (level + 1 < map.levels.size() && map.levels[level].width > 256) ++level;
-  const HdrImage& img = map.levels[level];
+  const HdrImage& img = image_level(*studio.image, kImageProjectionWidth);
   SkyIrradiance s;
-  const double dp = 2 * kPi / img.width, dt = kPi / img.height;
-  for (int j = 0; j < img.height; ++j) {
-    const double weight = (std::cos(j * dt) - std::cos((j + 1) * dt)) * dp * double(studio.env.intensity);
+  for (int j = 0; j < img.height; ++j)
     for (int i = 0; i < img.width; ++i) {
-      const glm::dvec3 d = studio.world_direction(equirect_direction({(i + 0.5) / img.width, (j + 0.5) / img.height}));
-      const glm::dvec3 l = glm::dvec3(img.at(i, j)) * weight;
-      const std::array<double, 9> y = SkyIrradiance::basis(d);
+      const ImagePatch p = image_patch(studio, img, i, j);
+      const glm::dvec3 l = p.irradiance();
+      const std::array<double, 9> y = SkyIrradiance::basis(p.dir);
       for (int k = 0; k < 9; ++k) s.coef[size_t(k)] += l * y[size_t(k)];
     }
-  }
   return s;
 }
 
