@@ -14,7 +14,7 @@ rounds=${2:-5}
 size=${3:-256}
 frames=${4:-15}
 new=build/draught
-scenes="pint-lager nonic-stout wine-red pint-lager-fresh-pour"
+scenes=${DRAUGHT_BENCH_SCENES:-"pint-lager nonic-stout wine-red pint-lager-fresh-pour"}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 # Which scenes the old binary loads: it exits with an error on the first it cannot.
