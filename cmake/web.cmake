@@ -49,6 +49,7 @@ set(web_gpu
   "${DRAUGHT_ROOT}/src/gpu/scene_data.cpp"
   "${DRAUGHT_ROOT}/src/gpu/decal_textures.cpp"
   "${DRAUGHT_ROOT}/src/gpu/matcap_texture.cpp"
+  "${DRAUGHT_ROOT}/src/gpu/reflection_panoramas.cpp"
   "${DRAUGHT_ROOT}/src/gpu/cloud_textures.cpp"
   "${DRAUGHT_ROOT}/src/gpu/condensation_textures.cpp"
   "${DRAUGHT_ROOT}/src/gpu/renderer.cpp"

@@ -34,6 +34,7 @@ struct BenchScene {
   double at = 0;
   bool flight = false;  // the tasting flight (four glasses) seen with request.camera
   bool general = false;  // drawn with the general (several-object) shader path
+  bool objects = false;  // a scene preset's every object (resolve_scene_objects)
 };
 
 // The tasting flight of tests/gpu (pilsner, amber ale in a tulip, stout in a nonic,
@@ -390,6 +391,12 @@ int bench(int frames, const std::vector<int>& sizes, const std::vector<std::stri
       {"pint-lager-flight-camera", {"lager", "pint", {"camera.auto_frame=false"}, {"eye=0,0.17,0.8", "target=0,0.1,0", "vfov=26"}}},
       {"flight", {"", "", {}, {"eye=0,0.17,0.8", "target=0,0.1,0", "vfov=26"}}, nullptr, 0, true},
       {"flight-angle", {"", "", {}, {"eye=0.62,0.26,0.5", "target=-0.01,0.09,0", "vfov=30"}}, nullptr, 0, true},
+      // The shipped flight from the same angle, and with env.reflections (its four glasses'
+      // panoramas drawn every frame, 256 x 128 each: the rate 0).
+      {"flight-preset-angle", {"flight", "", {}, {"eye=0.62,0.26,0.5", "target=-0.01,0.09,0", "vfov=30"}}, nullptr, 0,
+       false, false, true},
+      {"flight-reflections", {"flight", "", {"env.reflections=true"}, {"eye=0.62,0.26,0.5", "target=-0.01,0.09,0", "vfov=30"}},
+       nullptr, 0, false, false, true},
       // The screen (issue 12): the shipped clip on a card behind the pint, and as the
       // background (the AR view); the frame is the same, so nothing is uploaded per frame.
       {"pint-lager-screen-card", {"screen-lager", "", {}, {}}},
@@ -409,6 +416,8 @@ int bench(int frames, const std::vector<int>& sizes, const std::vector<std::stri
     FrameState f;
     if (s.flight) {
       f = make_frame(flight(s.request.camera));
+    } else if (s.objects) {
+      f = make_frame(resolve_scene_objects(s.request));
     } else {
       Params p = resolve_scene(s.request, &log);
       if (verbose) std::fprintf(stderr, "%s", log.c_str());

@@ -22,6 +22,10 @@
 #include "lib/environment/backdrop.glsl"
 #include "lib/environment/floor.glsl"
 #include "lib/output/tonemap.glsl"
+#ifndef REFLECTIONS
+#define REFLECTIONS 0
+#endif
+#include "lib/environment/reflections.glsl"
 #ifndef DECALS
 #define DECALS 0
 #endif
@@ -68,9 +72,10 @@ struct Look {
   bool backdrop;   // from the air: the backdrop can be seen (inside a glass or drink, where
                    // the way out is not traced, the lights and the sky only)
   bool mirrored;   // a reflection off a glass: its backdrop as a glass mirrors it
+  int obj;         // the glass it reflects off, for its panorama (env.reflections); -1: none
 };
 
-Look no_look() { return Look(vec3(0.0), vec3(0.0, 1.0, 0.0), vec3(0.0), 0.0, false, false); }
+Look no_look() { return Look(vec3(0.0), vec3(0.0, 1.0, 0.0), vec3(0.0), 0.0, false, false, -1); }
 
 // Where the path's own ray meets the backdrop, shaded once after the path loop (its light
 // map, the glasses' shadows, the contact: heavier than a reflection's backdrop, and one
@@ -86,6 +91,14 @@ struct LitBackdrop {
 // the picture is all that lies behind and through the glass; the rig's lights show only
 // in reflections off the glass and the liquid from outside (lib/environment/screen.glsl).
 void look_out(Look l, inout vec3 radiance, inout LitBackdrop lit) {
+#if REFLECTIONS
+  // A glass with a panorama of its surroundings (env.reflections) mirrors that: the other
+  // objects too (lib/environment/reflections.glsl).
+  if (l.mirrored && l.obj >= 0 && l.obj < frame.reflections_count) {
+    radiance += l.w * reflections_seen(l.obj, l.d, l.rough);
+    return;
+  }
+#endif
   BackdropSurface b = backdrop_surface();
   b.present = b.present && l.backdrop;
   float tb, tl;
@@ -212,11 +225,11 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
     // out and leaves bent.
     vec3 r = reflect(path.d, c.n);
     if (path.medium == MEDIUM_AIR) {
-      if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true);
+      if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true, h.obj);
     } else {
       vec3 out_dir;
       vec3 tr = reflected_light(v, g, h.m, path.medium, below, pl, to_local_dir(v, r), to_local_dir(v, c.n), out_dir);
-      look = Look(p, to_world_dir(v, out_dir), path.thr * c.F * tr, rough, false, false);
+      look = Look(p, to_world_dir(v, out_dir), path.thr * c.F * tr, rough, false, false, -1);
 #if DECALS
       if (decal.metal) {  // the metal's reflection takes the same way out
         decal_look *= tr;
@@ -293,8 +306,8 @@ void shade_droplet(inout Path path, Hit h, bool transparent, out Look look) {
   float rough = frame.droplet_roughness;
   if (c.F < 1.0) {
     vec3 r = reflect(path.d, c.n);
-    if (inside) look = Look(p, r, path.thr * c.F * chord, rough, false, false);
-    else if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true);
+    if (inside) look = Look(p, r, path.thr * c.F * chord, rough, false, false, -1);
+    else if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true, -1);
     path.thr *= 1.0 - c.F;
   }
   go_on(path, h, c, p);
@@ -343,8 +356,8 @@ void shade_cloud(inout Path path, Hit h, bool transparent, out Look look) {
   float rough = frame.cloud_hi[k].w;
   if (c.F < 1.0) {
     vec3 r = reflect(path.d, c.n);
-    if (inside) look = Look(p, r, path.thr * c.F * chord, rough, false, false);
-    else if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true);
+    if (inside) look = Look(p, r, path.thr * c.F * chord, rough, false, false, -1);
+    else if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true, -1);
     path.thr *= 1.0 - c.F;
     if (max3(g_cloud_attrs.yzw) > 0.0) path.thr *= g_cloud_attrs.yzw;
   }
@@ -411,7 +424,7 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
       Look look;
       bool leaves = h.m == M_NONE;
       if (leaves) {
-        look = Look(path.o, path.d, path.thr, 0.0, path.medium == MEDIUM_AIR, false);
+        look = Look(path.o, path.d, path.thr, 0.0, path.medium == MEDIUM_AIR, false, -1);
         if (transparent) {
           float m = min(path.thr.r, min(path.thr.g, path.thr.b));
           see_through = m;
@@ -629,6 +642,10 @@ void main() {
     frag_color = vec4(float(g_cost), float(g_foam_steps), float(g_bounds_entered), 1.0);
     return;
   }
+#endif
+#if PANORAMA
+  frag_color = vec4(max(radiance, vec3(0.0)), 1.0);  // linear radiance, into u_reflections
+  return;
 #endif
   vec3 c = radiance * frame.exposure;
   c = frame.tonemap == 1 ? aces_filmic(c) : c;

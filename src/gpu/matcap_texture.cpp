@@ -1,5 +1,7 @@
 #include "gpu/matcap_texture.hpp"
 
+#include "gpu/framebuffer.hpp"
+
 #include "generated/frame.hpp"
 
 #include <GLES3/gl3.h>
@@ -90,11 +92,8 @@ bool MatCapBackground::begin_drawing(int width, int height) {
     glGenFramebuffers(1, &fbo_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex_, 0);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {  // no half-float targets
+    if (!framebuffer_complete_or_free(fbo_, tex_)) {  // no half-float targets
       usable_ = false;
-      glDeleteFramebuffers(1, &fbo_);
-      glDeleteTextures(1, &tex_);
-      fbo_ = tex_ = 0;
       return false;
     }
     width_ = width;

@@ -3,6 +3,7 @@
 #include "core/bubbles/bubble_view.hpp"
 #include "gpu/decal_textures.hpp"
 #include "gpu/matcap_texture.hpp"
+#include "gpu/reflection_panoramas.hpp"
 #include "gpu/cloud_textures.hpp"
 #include "gpu/condensation_textures.hpp"
 #include "gpu/program.hpp"
@@ -78,7 +79,8 @@ void bind_interface(const Program& program, const std::string& what) {
                                        contract::kScreenSampler, contract::kMatCapSampler,
                                        contract::kMatCapBackgroundSampler, contract::kCloudPointsSampler,
                                        contract::kCloudAttrsSampler, contract::kCloudNodesSampler,
-                                       contract::kCondensationBeadsSampler, contract::kCondensationFogSampler})
+                                       contract::kCondensationBeadsSampler, contract::kCondensationFogSampler,
+                                       contract::kReflectionsSampler})
     if (GLint at = glGetUniformLocation(program.id(), s.name); at >= 0) glUniform1i(at, s.unit);
 }
 }  // namespace
@@ -102,6 +104,8 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kMatCapBackdrop) frag = with_define(std::move(frag), "MATCAP_BACKDROP");
   if (variant & kMatCapCached) frag = with_define(std::move(frag), "MATCAP_CACHED");
   if (variant & kMatCapBackgroundOnly) frag = with_define(std::move(frag), "MATCAP_BACKGROUND_ONLY");
+  if (variant & kPanorama) frag = with_define(std::move(frag), "PANORAMA");
+  if (variant & kReflections) frag = with_define(std::move(frag), "REFLECTIONS");
   if (const int held = (variant >> kHeldShift) & kHeldMask)
     frag = with_define(std::move(frag), "HELD_OBJECTS", std::to_string(held));
   auto program = std::make_unique<Program>(vert, frag);
@@ -117,6 +121,7 @@ Renderer::Renderer(const std::filesystem::path& shader_dir) : shader_dir_(shader
   screen_ = std::make_unique<ScreenTexture>();
   matcap_ = std::make_unique<MatCapTexture>();
   matcap_background_ = std::make_unique<MatCapBackground>();
+  reflections_ = std::make_unique<ReflectionPanoramas>();
   clouds_ = std::make_unique<CloudTextures>();
   condensation_ = std::make_unique<CondensationTextures>();
   glGenVertexArrays(1, &vao_);
@@ -197,6 +202,8 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   // The MatCap pass marches no drink: waves (its surface is the plane) and heads (a layer)
   // need no variant of it. It marches droplets and point clouds (seen as lenses).
   if (matcap) variant = (variant & ~(kWaves | kFoam)) | kMatCap;
+  // env.reflections: the glasses' surroundings first, from inside each (the full tier's).
+  else if (debug == DebugView::None && draw_reflections(f, block, variant)) variant |= kReflections;
   const std::vector<contract::ObjectRecord> records = matcap ? textures_->records() : std::vector<contract::ObjectRecord>{};
   if (matcap && debug == DebugView::None && matcap_background(f, block, records, width, height, variant))
     variant |= kMatCapCached;
@@ -273,6 +280,46 @@ PixelRect objects_on_screen(const std::vector<contract::ObjectRecord>& vessels, 
   const int x0 = std::max(0, int(std::floor(lo.x)) - 2), x1 = std::min(width, int(std::ceil(hi.x)) + 2);
   const int y0 = std::max(0, height - int(std::ceil(hi.y)) - 2), y1 = std::min(height, height - int(std::floor(lo.y)) + 2);
   return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+}
+
+bool Renderer::draw_reflections(const FrameState& f, contract::FrameBlock& block, int variant) {
+  const int layers = reflections_->layers_for(f);
+  if (layers == 0) return false;
+  if (reflections_->due(f, layers)) {
+    GLint target = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
+    const bool ready = reflections_->prepare(std::clamp(f.params.env.reflections_size, 32, 1024), layers);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+    if (!ready) return false;
+    // The picture's block, its camera at each glass's middle, that glass left out; a
+    // panorama sees no panoramas (one bounce) and no bubbles (sprites of the picture).
+    contract::FrameBlock pano = block;
+    pano.viewport_size = {reflections_->width(), reflections_->height()};
+    pano.viewport_inv = {1.0f / reflections_->width(), 1.0f / reflections_->height()};
+    pano.reflections_count = 0;
+    const int v = (variant & ~kDebug) | kPanorama;
+    auto& program = programs_[v];
+    if (!program) program = build_program(v);
+    glUseProgram(program->id());
+    glBindVertexArray(vao_);
+    for (int k = 0; k < layers; ++k) {
+      pano.cam_eye = glm::vec3(vessel_middle(f.vessels[size_t(k)]));
+      pano.exclude_object = k;
+      glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof pano, &pano);
+      reflections_->begin_layer(k);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    reflections_->finish(f);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+  }
+  block.reflections_count = reflections_->layers();
+  block.reflections_max_lod = reflections_->max_lod();
+  block.reflections_texels_per_radian = float(reflections_->width() / (2.0 * 3.14159265358979));
+  block.exclude_object = -1;
+  glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof block, &block);
+  glViewport(0, 0, block.viewport_size.x, block.viewport_size.y);
+  reflections_->bind();
+  return true;
 }
 
 bool Renderer::matcap_background(const FrameState& f, const contract::FrameBlock& block,

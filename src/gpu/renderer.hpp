@@ -27,6 +27,7 @@ class MatCapBackground;
 class Program;
 class SceneTextures;
 class ScreenTexture;
+class ReflectionPanoramas;
 
 // A part of a picture in GL's window coordinates (x, y from the bottom-left).
 struct PixelRect {
@@ -100,6 +101,8 @@ class Renderer {
   // The MatCap tier's lit sphere and its background (render.tier matcap; gpu/matcap_texture).
   const MatCapTexture& matcap_texture() const { return *matcap_; }
   const MatCapBackground& matcap_background() const { return *matcap_background_; }
+  // env.reflections' panoramas of the glasses' surroundings (gpu/reflection_panoramas).
+  const ReflectionPanoramas& reflection_panoramas() const { return *reflections_; }
   // Scenes of up to kMaxHeldObjects objects are drawn with a shader variant that holds
   // every object's records per pixel (object loops resolved at compile time; the same
   // pictures, much faster on llvmpipe). Four: a tasting flight; every held object costs
@@ -126,8 +129,14 @@ class Renderer {
     kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kScreenCard = 32, kScreenBackground = 64,
     kSphereLights = 128, kPaintedSky = 256, kDroplets = 512, kMatCap = 1024, kMatCapBackdrop = 2048,
     kMatCapCached = 4096, kHeldShift = 13, kHeldMask = 7, kClouds = 1 << 16,  // (held objects: bits 13-15)
-    kCondensation = 1 << 17, kMatCapBackgroundOnly = 1 << 18
+    kCondensation = 1 << 17, kMatCapBackgroundOnly = 1 << 18,
+    // kPanorama: a glass's surroundings for env.reflections (gpu/reflection_panoramas);
+    // kReflections: the picture looking its glasses' reflections up there.
+    kPanorama = 1 << 19, kReflections = 1 << 20
   };
+  // env.reflections: draws the panoramas this frame needs into reflections_ (the block
+  // as the picture's, its camera moved into each glass); true when the picture has them.
+  bool draw_reflections(const FrameState&, contract::FrameBlock&, int variant);
   // The MatCap tier's background, drawn when it is not the one of this frame; false when
   // it cannot be kept (no float targets, a screen whose frames it does not follow).
   bool matcap_background(const FrameState&, const contract::FrameBlock&, const std::vector<contract::ObjectRecord>&,
@@ -142,6 +151,7 @@ class Renderer {
   std::unique_ptr<ScreenTexture> screen_;    // u_screen
   std::unique_ptr<MatCapTexture> matcap_;    // u_matcap
   std::unique_ptr<MatCapBackground> matcap_background_;  // u_matcap_background
+  std::unique_ptr<ReflectionPanoramas> reflections_;     // u_reflections
   CloudScene cloud_scene_;                   // the point clouds' trees and texel arrays
   std::unique_ptr<CloudTextures> clouds_;    // u_cloud_points, u_cloud_attrs, u_cloud_nodes
   std::unique_ptr<CondensationTextures> condensation_;  // u_condensation_beads, u_condensation_fog

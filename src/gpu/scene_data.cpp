@@ -77,6 +77,7 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
   b.tonemap = p.render.tonemap;
   b.ground = p.env.ground;
   b.transparent = p.render.transparent;
+  b.exclude_object = -1;  // (the PANORAMA variant's: gpu/reflection_panoramas)
   b.floor_a = p.env.floor_a;
   b.debug_view = int(debug);
   b.floor_b = p.env.floor_b;
@@ -189,7 +190,7 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   // Each light the media take (the rig's, or an image's brightest patches: core
   // media_light) as a distant light from the glass's middle: what the head and the haze
   // receive (small lights far from small glasses: the irradiance barely varies over one).
-  const glm::dvec3 middle = vf.pose.position + vf.pose.orientation * glm::dvec3(0, 0.5 * v.height, 0);
+  const glm::dvec3 middle = vessel_middle(vf);
   const MediaLight& media = f.environment.media;
   const int lights = std::min<int>(int(media.lights.size()), contract::kMaxLights);
   // The haze's light (single scattering, isotropic): the mean radiance around it (the sky

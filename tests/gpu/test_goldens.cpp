@@ -30,6 +30,10 @@ struct GoldenCase {
 };
 
 FrameState flight_front() { return make_frame(flight_scene(FlightView::StraightOn)); }
+// The flight from the angle with env.reflections: the glasses mirror each other.
+FrameState flight_reflections() {
+  return make_frame(flight_scene(FlightView::AtAnAngle, {"env.reflections=true"}));
+}
 FrameState flight_angle() { return make_frame(flight_scene(FlightView::AtAnAngle)); }
 // The droplets' trail stretched over the pint behind it (presets/timelines/droplets-trail.json
 // in its scene of objects: a lager and a droplets object).
@@ -168,6 +172,7 @@ INSTANTIATE_TEST_SUITE_P(
         GoldenCase{"pint_lager_screen", {"screen-lager", "", {}, {}}, 160, 160, 3, 0.002, 64},
         GoldenCase{"flight", {}, 256, 128, 3, 0.002, 64, nullptr, 0, flight_front},
         GoldenCase{"flight_angle", {}, 192, 144, 3, 0.002, 64, nullptr, 0, flight_angle},
+        GoldenCase{"flight_reflections", {}, 192, 144, 3, 0.002, 64, nullptr, 0, flight_reflections},
         // Decals (docs/DECALS.md): an enamel wordmark on the front; the same on the back,
         // seen mirrored through the drink and, at its top, hidden by the head; a crest on
         // a tulip's bowl; a metallic band at a flute's rim, bent by the rim bead; frosted

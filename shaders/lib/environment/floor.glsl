@@ -40,7 +40,7 @@ Hit hit_floor(vec3 o, vec3 d, float tmin) {
     for (int i = 0; i < OBJECT_COUNT; ++i) {
       ObjectBounds b = bounds_of(i);
       vec3 rel = p - b.bound_base;
-      if (dot(rel, rel) > b.bound_radius * b.bound_radius) continue;
+      if (object_excluded(i) || dot(rel, rel) > b.bound_radius * b.bound_radius) continue;
       FloorView v = floor_view(b, p);
       if (abs(v.along) < 1e-5 && length(v.across) <= body_of(i).foot_radius) return no_hit();
     }

@@ -368,7 +368,7 @@ bool meets_head(vec3 o, vec3 d, float t_end) {
   for (int i = 0; i < OBJECT_COUNT; ++i) {
     Vessel v = load_vessel(i);
     float t0 = 0.0, t1 = t_end;  // (foam_interval keeps to the glass's bounds)
-    meets = meets || (v.shape.has_head != 0 && foam_interval(v, fetch_object_foam(i), to_local_point(v, o), to_local_dir(v, d), t0, t1));
+    meets = meets || (v.shape.has_head != 0 && !object_excluded(i) && foam_interval(v, fetch_object_foam(i), to_local_point(v, o), to_local_dir(v, d), t0, t1));
   }
   return meets;
 }
@@ -384,7 +384,7 @@ void foam_along(vec3 o, vec3 d, float t_end, inout vec3 radiance, inout vec3 thr
     float next_t0 = INF, next_t1 = INF;
     bool more = false;
     for (int i = 0; i < OBJECT_COUNT; ++i) {
-      if (!object_in_reach(i, o, d, done, t_end) || load_vessel(i).shape.has_head == 0) continue;
+      if (object_excluded(i) || !object_in_reach(i, o, d, done, t_end) || load_vessel(i).shape.has_head == 0) continue;
       Vessel v = load_vessel(i);
       float t0 = done, t1 = t_end;
       if (!foam_interval(v, fetch_object_foam(i), to_local_point(v, o), to_local_dir(v, d), t0, t1)) continue;

@@ -26,6 +26,19 @@
 #define OBJECT_COUNT frame.object_count
 #endif
 
+// The PANORAMA variant renders one glass's surroundings from inside it (env.reflections):
+// every object loop leaves that glass out (its surfaces, its head, its foot on the floor).
+#ifndef PANORAMA
+#define PANORAMA 0
+#endif
+bool object_excluded(int i) {
+#if PANORAMA
+  return i == frame.exclude_object;
+#else
+  return false;
+#endif
+}
+
 // A surface along a ray. n: glass surfaces point out of the glass, the liquid surface
 // and the floor up; in the vessel's frame inside lib/vessel, in the world after
 // object_hit. obj: the object (row), -1 for the floor and for no hit.

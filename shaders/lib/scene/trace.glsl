@@ -56,7 +56,7 @@ int next_candidate(Search s, vec3 o, vec3 d, int medium, int obj, out float entr
   float first = INF;
   for (int i = 0; i < OBJECT_COUNT; ++i) {
     vec2 tr;
-    if (!object_span(i, o, d, tr) || tr.y < s.tmin) continue;
+    if (object_excluded(i) || !object_span(i, o, d, tr) || tr.y < s.tmin) continue;
     float e = max(tr.x, s.tmin);
     bool untested = e > s.after_t0 || (e == s.after_t0 && i > s.after_row);
     if (!untested || e > s.best.t) continue;

@@ -240,6 +240,13 @@ std::vector<ParamDesc> make_object_and_env_rows() {
       ROW(SceneParams, env, intensity, Float, 0.0f, 100.0f, "", "Multiplies env.image's radiance"),
       ROW(SceneParams, env, blur, Float, 0.0f, 45.0f, "deg",
           "Blurs env.image as seen directly and in sharp reflections (the angle of the blur)"),
+      ROW(SceneParams, env, reflections, Bool, 0.0f, 1.0f, "",
+          "Glasses reflect the scene around them: each glass's surroundings (the other objects, the floor, the "
+          "lights, the sky) rendered from its middle into a panorama its outer reflections look up"),
+      ROW(SceneParams, env, reflections_size, Int, 32.0f, 1024.0f, "px",
+          "env.reflections: the panoramas' width (their height is half): sharper reflections for more time"),
+      ROW(SceneParams, env, reflections_rate, Float, 0.0f, 240.0f, "1/s",
+          "env.reflections: how often the panoramas are rendered again, per second of scene time (0: every frame)"),
       ROW(SceneParams, env, color, Color, 0.0f, 100.0f, "", "Radiance of the constant environment"),
       ROW(SceneParams, env, sky_top, Color, 0.0f, 100.0f, "", "Studio sky colour at the zenith"),
       ROW(SceneParams, env, sky_horizon, Color, 0.0f, 100.0f, "", "Studio sky colour at the horizon"),

@@ -89,6 +89,11 @@ struct EnvParams {
   float rotation = 0.0f;            // degrees about +y
   float intensity = 1.0f;
   float blur = 0.0f;                // degrees
+  // Scene reflections: each glass's surroundings rendered from its middle into a panorama
+  // its outer reflections look up (gpu/reflection_panoramas; docs/ENVIRONMENTS.md).
+  bool reflections = false;
+  int reflections_size = 256;    // the panoramas' width in texels (height half)
+  float reflections_rate = 0.0f;  // renders per second of scene time; 0: every frame
   // The studio's sky is dim: the rig's lights light the picture, the sky only fills.
   glm::vec3 sky_top{0.02f, 0.021f, 0.023f};
   glm::vec3 sky_horizon{0.03f, 0.03f, 0.03f};

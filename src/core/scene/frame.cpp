@@ -174,6 +174,10 @@ FrameState assemble_frame(const SceneParams& scene, std::vector<VesselFrame> ves
   return f;
 }
 
+glm::dvec3 vessel_middle(const VesselFrame& v) {
+  return v.pose.position + v.pose.orientation * glm::dvec3(0, 0.5 * v.vessel.height, 0);
+}
+
 glm::dvec3 scene_aim(const std::vector<VesselFrame>& vessels) {
   if (vessels.empty()) return glm::dvec3(0.0);
   glm::dvec2 lo(1e30), hi(-1e30);

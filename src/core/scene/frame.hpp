@@ -65,6 +65,11 @@ struct FrameState {
   std::vector<CloudFrame> clouds;       // the point clouds (at most kMaxClouds), their points in the world
 };
 
+// The middle of a glass as it stands now (its pose): halfway up its axis. Where the head
+// and the haze take their lights from, and where a glass's surroundings are seen from
+// (env.reflections' panoramas).
+glm::dvec3 vessel_middle(const VesselFrame&);
+
 // The scene's centre the studio's lights (and the sweep) are placed around: the middle of
 // the glasses' placements across the floor, at half the tallest glass's height. Placements,
 // not poses: a glass tipped by the hand does not move the lights.

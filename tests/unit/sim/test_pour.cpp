@@ -58,7 +58,9 @@ TEST(Pour, TheLevelRisesAsTheStreamArrivesAndTheVolumeAddsUp) {
     }
     // What left the spout is in the glass or still falling.
     ASSERT_LE(sim.fraction() * cavity, poured * (1 + 1e-9) + 1e-15);
-    if (t > seconds + 0.5) ASSERT_TRUE(streams.empty()) << "the last of the stream has landed, t = " << t;
+    if (t > seconds + 0.5) {
+      ASSERT_TRUE(streams.empty()) << "the last of the stream has landed, t = " << t;
+    }
   }
   EXPECT_TRUE(stream_seen);
   EXPECT_NEAR(sim.fraction(), double(p.liquid.fill), 1e-12) << "all that was poured is in the glass";

@@ -1,0 +1,154 @@
+// env.reflections (gpu/reflection_panoramas, lib/environment/reflections.glsl): each
+// glass's surroundings rendered from its middle without it; reflections off a glass's
+// outside look there, so glasses mirror each other. Furnace: in an even world with
+// nothing that absorbs, the flight stays invisible with its panoramas on. A glass's
+// panorama shows its neighbours, not itself. Only the glasses change in the picture,
+// and the rate decides when the panoramas are drawn again.
+#include "color_difference.hpp"
+#include "gpu_fixture.hpp"
+
+#include "gpu/reflection_panoramas.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace draught::test {
+namespace {
+
+std::vector<std::string> with_reflections(std::vector<std::string> sets, bool on) {
+  sets.push_back(std::string("env.reflections=") + (on ? "true" : "false"));
+  return sets;
+}
+
+// Level 0 of a panorama at direction d (bilinear as the picture reads it is not needed:
+// the nearest texel).
+glm::vec3 panorama_at(const gpu::ReflectionPanoramas& p, const std::vector<float>& px, glm::dvec3 d) {
+  const glm::dvec2 st = gpu::panorama_st(glm::normalize(d));
+  const int x = std::clamp(int(st.x * p.width()), 0, p.width() - 1), y = std::clamp(int(st.y * p.height()), 0, p.height() - 1);
+  const float* t = &px[(size_t(y) * size_t(p.width()) + size_t(x)) * 4];
+  return {t[0], t[1], t[2]};
+}
+
+TEST(ReflectionPanoramas, TheMappingAndItsInverseAgree) {
+  for (glm::dvec3 d : {glm::dvec3(1, 0, 0), glm::dvec3(0, 0, -1), glm::dvec3(0.3, 0.8, 0.2), glm::dvec3(-0.5, -0.7, 0.1)}) {
+    d = glm::normalize(d);
+    EXPECT_NEAR(glm::length(gpu::panorama_dir(gpu::panorama_st(d)) - d), 0.0, 1e-12);
+  }
+  EXPECT_NEAR(gpu::panorama_st({0, -1, 0}).y, 0.0, 1e-12);  // the first row drawn looks straight down
+  EXPECT_NEAR(gpu::panorama_st({0, 0, -1}).x, 0.5, 1e-12);  // the middle looks along -z, as an image's
+}
+
+TEST(ReflectionPanoramas, AnEvenWorldKeepsTheFlightInvisible) {
+  // The furnace of tests/gpu/test_furnace.cpp for the flight, heads and drinks clear: every
+  // panorama is the even world, so the reflections looked up there are too.
+  const std::vector<std::string> furnace = {
+      "env.mode=constant", "env.floor=false", "env.color=0.5,0.4,0.3", "light.power=0", "strips.power=0",
+      "backlight.power=0", "render.tonemap=none", "render.exposure=1", "glass.absorption=0,0,0", "liquid.srm=0",
+      "liquid.ebc=0", "liquid.absorption=0,0,0", "liquid.haze=0", "bubbles.carbonation=0", "render.max_events=24",
+      "foam.height=0", "condensation.enabled=false"};
+  Gpu& g = gpu_instance();
+  const FrameState f = make_frame(flight_scene(FlightView::AtAnAngle, with_reflections(furnace, true)));
+  ASSERT_TRUE(f.params.env.reflections);
+  const Image img = g.renderer->render(f, 96, 64);
+  ASSERT_EQ(g.renderer->reflection_panoramas().layers(), 4);
+  const glm::vec3 env(0.5f, 0.4f, 0.3f);
+  double worst = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(srgb8_to_linear(img.px(x, y)[c]) / env[c] - 1.0));
+  std::printf("flight in the furnace with reflections: worst pixel %.4f of the world\n", worst);
+  EXPECT_LT(worst, 0.02);
+  // And the panoramas themselves: the even world everywhere, no glass (its own left out).
+  const gpu::ReflectionPanoramas& p = g.renderer->reflection_panoramas();
+  for (int k = 0; k < 4; ++k) {
+    const std::vector<float> px = p.read(k);
+    double off = 0;
+    for (size_t i = 0; i < px.size(); i += 4)
+      for (int c = 0; c < 3; ++c) off = std::max(off, std::fabs(double(px[i + size_t(c)]) / env[c] - 1.0));
+    EXPECT_LT(off, 0.02) << "panorama " << k;
+  }
+}
+
+TEST(ReflectionPanoramas, AGlassSeesItsNeighboursNotItself) {
+  Gpu& g = gpu_instance();
+  // The pilsner (x = -0.18) looks along +x at the amber ale (x = -0.06) in the flight; in a
+  // scene of the pilsner alone it sees the studio there. Away from the row (-x, +z) both
+  // see the studio alike: the pilsner itself is not in its own panorama.
+  Scene flight = flight_scene(FlightView::StraightOn, {"env.reflections=true"});
+  const FrameState all = make_frame(flight);
+  g.renderer->render(all, 64, 48);
+  const gpu::ReflectionPanoramas& p = g.renderer->reflection_panoramas();
+  ASSERT_EQ(p.layers(), 4);
+  const std::vector<float> with_others = p.read(0);
+  Scene alone = flight;
+  alone.objects.resize(1);
+  g.renderer->render(make_frame(alone), 64, 48);
+  ASSERT_EQ(p.layers(), 1);
+  const std::vector<float> by_itself = p.read(0);
+  const glm::dvec3 towards_ale(1, -0.05, 0), away(-1, 0.1, 0.6);
+  const glm::vec3 ale = panorama_at(p, with_others, towards_ale), studio = panorama_at(p, by_itself, towards_ale);
+  std::printf("towards the ale: with it (%.3f %.3f %.3f), without (%.3f %.3f %.3f)\n", ale.r, ale.g, ale.b, studio.r,
+              studio.g, studio.b);
+  EXPECT_GT(ale.r, 1.3f * ale.b);           // the amber drink
+  EXPECT_LT(ale.b, 0.7f * studio.b);        // darker than the white studio there
+  const glm::vec3 a = panorama_at(p, with_others, away), b = panorama_at(p, by_itself, away);
+  EXPECT_NEAR(a.g, b.g, 0.03f * b.g + 1e-3f);
+}
+
+TEST(ReflectionPanoramas, OnlyTheGlassesChangeAndTheyMirrorEachOther) {
+  Gpu& g = gpu_instance();
+  const FrameState off = make_frame(flight_scene(FlightView::AtAnAngle, {"env.reflections=false"}));
+  const FrameState on = make_frame(flight_scene(FlightView::AtAnAngle, {"env.reflections=true"}));
+  const int w = 160, h = 110;
+  const Image a = g.renderer->render(off, w, h), b = g.renderer->render(on, w, h);
+  const gpu::DebugImage first = g.renderer->render_debug(on, w, h, gpu::DebugView::Material);
+  const auto background = [&](int x, int y) {
+    const int m = int(first.px(x, y)[1]);
+    return m == int(contract::Material::None) || m == int(contract::Material::Floor);
+  };
+  int background_changed = 0, glass_changed = 0, glass = 0;
+  for (int y = 1; y + 1 < h; ++y)
+    for (int x = 1; x + 1 < w; ++x) {
+      int diff = 0;
+      for (int c = 0; c < 3; ++c) diff = std::max(diff, std::abs(int(a.px(x, y)[c]) - int(b.px(x, y)[c])));
+      bool around = true;  // (a pixel at a glass's edge takes some of the glass: supersampled)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) around = around && background(x + dx, y + dy);
+      if (around) {
+        if (diff > 0) ++background_changed;
+      } else if (!background(x, y)) {
+        ++glass;
+        if (diff > 8) ++glass_changed;
+      }
+    }
+  std::printf("reflections: %d of %d glass pixels changed by more than 8 levels; background changed: %d\n",
+              glass_changed, glass, background_changed);
+  // (The rising bubbles are sprites over the picture and see no reflections.)
+  EXPECT_EQ(background_changed, 0);
+  EXPECT_GT(glass_changed, glass / 50);
+}
+
+TEST(ReflectionPanoramas, TheRateDecidesWhenTheyAreDrawnAgain) {
+  Gpu& g = gpu_instance();
+  Scene s = flight_scene(FlightView::StraightOn, {"env.reflections=true", "env.reflections_rate=2"});
+  FrameState f = make_frame(s);
+  const gpu::ReflectionPanoramas& p = g.renderer->reflection_panoramas();
+  f.time = 10.05;
+  g.renderer->render(f, 32, 24);
+  const int first = p.draws();
+  f.time = 10.3;  // the same half second
+  g.renderer->render(f, 32, 24);
+  EXPECT_EQ(p.draws(), first);
+  f.time = 10.6;  // the next
+  g.renderer->render(f, 32, 24);
+  EXPECT_EQ(p.draws(), first + 4);
+  f.params.env.reflections_rate = 0;  // every frame
+  g.renderer->render(f, 32, 24);
+  g.renderer->render(f, 32, 24);
+  EXPECT_EQ(p.draws(), first + 12);
+}
+
+}  // namespace
+}  // namespace draught::test
