@@ -743,6 +743,23 @@ test('flight: a click and the picker select the second glass; a drag tilts it al
     assert.equal((await objects(page)).selected, 1, 'the drag kept the selection');
     assert.ok(d1 > changed(d1, n1), `the second glass changed: ${d1.toFixed(2)} (noise ${n1.toFixed(2)})`);
     assert.ok(d1 > 3 * Math.max(d0, n0, 0.5), `the second glass changed much more than the first: ${d1.toFixed(2)} vs ${d0.toFixed(2)}`);
+
+    // Scene reflections in WebGL2 (env.reflections: each glass's panorama drawn into a
+    // half-float array texture): the stout's glass mirrors the hefeweizen beside it, so
+    // its box changes well above its own motion, and the page keeps drawing, no error.
+    const box2 = regions[2].box;
+    const r0 = await snapshot(page);
+    await waitFrames(page, 3);
+    const r1 = await snapshot(page);
+    const nr = blockDifference(r0, r1, box2);
+    assert.equal(await page.evaluate(() => window.draught.api.setParam('env.reflections', 'true')), '');
+    await waitFrames(page, 4);
+    const mirrored = await snapshot(page);
+    const dr = blockDifference(r1, mirrored, box2);
+    note(`reflections: the stout's glass ${dr.toFixed(2)} (noise ${nr.toFixed(2)})`);
+    await page.screenshot({ path: path.join(artifacts, 'flight-reflections.png') });
+    assert.ok(dr > changed(dr, nr), `the stout's glass mirrors its neighbours: ${dr.toFixed(2)} (noise ${nr.toFixed(2)})`);
+    assert.deepEqual(page.draughtLog.filter((l) => l.startsWith('pageerror')), []);
   } finally {
     await page.context().close();
   }
