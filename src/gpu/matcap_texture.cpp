@@ -77,6 +77,16 @@ bool MatCapBackground::ready(const void* key, size_t bytes, int width, int heigh
          std::equal(key_.begin(), key_.end(), static_cast<const unsigned char*>(key));
 }
 
+bool MatCapBackground::held(const void* key, size_t bytes, int width, int height) {
+  const auto* k = static_cast<const unsigned char*>(key);
+  const bool same = width == offered_width_ && height == offered_height_ && offered_.size() == bytes &&
+                    std::equal(offered_.begin(), offered_.end(), k);
+  offered_.assign(k, k + bytes);
+  offered_width_ = width;
+  offered_height_ = height;
+  return same;
+}
+
 bool MatCapBackground::begin_drawing(int width, int height) {
   if (!usable_) return false;
   if (width != width_ || height != height_ || !fbo_) {

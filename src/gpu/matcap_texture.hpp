@@ -51,6 +51,10 @@ class MatCapBackground {
   // to be read; else the caller draws it into the bound target (begin_drawing) and calls
   // done. False from ready() and begin_drawing() alike when float targets are refused.
   bool ready(const void* key, size_t bytes, int width, int height) const;
+  // Whether the view of `key` was also the last one offered (so it has held for a frame);
+  // remembers it. A view seen once is drawn with its background inline: a moving camera
+  // would pay a whole background pass and its copy every frame for nothing.
+  bool held(const void* key, size_t bytes, int width, int height);
   bool begin_drawing(int width, int height);  // binds its framebuffer
   void done(const void* key, size_t bytes);
   void bind() const;
@@ -62,6 +66,8 @@ class MatCapBackground {
   int width_ = 0, height_ = 0, draws_ = 0;
   bool usable_ = true;
   std::vector<unsigned char> key_;
+  std::vector<unsigned char> offered_;  // the last view offered (held)
+  int offered_width_ = 0, offered_height_ = 0;
 };
 
 }  // namespace draught::gpu

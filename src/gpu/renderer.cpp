@@ -207,11 +207,13 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   const std::vector<contract::ObjectRecord> records = matcap ? textures_->records() : std::vector<contract::ObjectRecord>{};
   if (matcap && debug == DebugView::None && matcap_background(f, block, records, width, height, variant))
     variant |= kMatCapCached;
-  // The MatCap tier with its background kept: only the part of the screen where the
-  // objects' bounds lie runs the pass; the rest is the background alone (what the pass
-  // gives a line that meets no object's bounds, for a fraction of the cost).
-  const PixelRect part =
-      variant & kMatCapCached ? objects_on_screen(records, block, width, height) : PixelRect{0, 0, width, height};
+  // The MatCap tier: only the part of the screen where the objects' bounds lie runs the
+  // pass; the rest is the background alone (what the pass gives a line that meets no
+  // object's bounds, for a fraction of the cost), read from the kept background, or
+  // shaded inline where the view is new (a moving camera: one background per pixel, no
+  // pass of its own and no copy).
+  const PixelRect part = matcap && debug == DebugView::None ? objects_on_screen(records, block, width, height)
+                                                            : PixelRect{0, 0, width, height};
   const bool whole = part.x <= 0 && part.y <= 0 && part.x + part.w >= width && part.y + part.h >= height;
   glBindVertexArray(vao_);
   if (!whole) {
@@ -339,10 +341,12 @@ bool Renderer::matcap_background(const FrameState& f, const contract::FrameBlock
     const auto* b = reinterpret_cast<const unsigned char*>(part);
     key.insert(key.end(), b, b + sizeof part);
   }
+  const bool held = matcap_background_->held(key.data(), key.size(), width, height);
   if (matcap_background_->ready(key.data(), key.size(), width, height)) {
     matcap_background_->bind();
     return true;
   }
+  if (!held) return false;  // a view seen once (a moving camera): its background inline
   GLint target = 0;
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
   const bool drawn = matcap_background_->begin_drawing(width, height);

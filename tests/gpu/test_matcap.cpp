@@ -251,19 +251,36 @@ TEST(MatCapTier, AStillFrameBakesAndUploadsOnce) {
   EXPECT_EQ(g.renderer->matcap_texture().uploads(), uploads + 1);
 }
 
-TEST(MatCapTier, TheBackgroundIsDrawnOncePerView) {
+TEST(MatCapTier, TheBackgroundIsKeptOncePerHeldViewAndAMovingCameraDrawsItInline) {
   Gpu& g = gpu_instance();
-  const FrameState f = matcap_tier(pint_front());
+  FrameState f = matcap_tier(pint_front());
+  f.camera.eye.y += 0.003f;  // a view no other test draws
   gpu::RenderTarget target(48, 48, false);
+  const int before = g.renderer->matcap_background().draws();
+  g.renderer->draw(f, 48, 48);  // seen once: inline
+  EXPECT_EQ(g.renderer->matcap_background().draws(), before);
+  g.renderer->draw(f, 48, 48);  // held for a frame: kept
+  EXPECT_EQ(g.renderer->matcap_background().draws(), before + 1);
   g.renderer->draw(f, 48, 48);
-  const int draws = g.renderer->matcap_background().draws();
   g.renderer->draw(f, 48, 48);
-  g.renderer->draw(f, 48, 48);
-  EXPECT_EQ(g.renderer->matcap_background().draws(), draws);
+  EXPECT_EQ(g.renderer->matcap_background().draws(), before + 1);
+  // (render draws at its own supersampled size: a view seen once, then held.)
+  const Image inline_picture = g.renderer->render(f, 48, 48);
+  const Image kept_picture = g.renderer->render(f, 48, 48);
+  EXPECT_EQ(g.renderer->matcap_background().draws(), before + 2);
+  int worst = 0;
+  for (size_t i = 0; i < inline_picture.rgba.size(); ++i)
+    worst = std::max(worst, std::abs(int(inline_picture.rgba[i]) - int(kept_picture.rgba[i])));
+  EXPECT_LE(worst, 1) << "inline and kept backgrounds are the same picture (half floats kept)";
+  // A camera that moves every frame: a new view each frame, none kept, none drawn.
   FrameState moved = f;
-  moved.camera.eye.x += 0.01f;  // another view: drawn again
-  g.renderer->draw(moved, 48, 48);
-  EXPECT_EQ(g.renderer->matcap_background().draws(), draws + 1);
+  for (int i = 1; i <= 4; ++i) {
+    moved.camera.eye.x = f.camera.eye.x + 0.002f * float(i);
+    g.renderer->draw(moved, 48, 48);
+  }
+  EXPECT_EQ(g.renderer->matcap_background().draws(), before + 2);
+  g.renderer->draw(moved, 48, 48);  // it stops: kept again
+  EXPECT_EQ(g.renderer->matcap_background().draws(), before + 3);
 }
 
 // Every matcap.* number at its minimum and its maximum: a picture with no black hole (a NaN
