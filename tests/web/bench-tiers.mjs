@@ -1,0 +1,73 @@
+// A benchmark, not a test (nothing is asserted, CTest does not run it): the default pint of
+// lager in the full tier and in the MatCap tier (issue 11, docs/MATCAP.md) on the web page
+// in headless chromium on SwiftShader, with the camera still and with it moving.
+// `node bench-tiers.mjs [runs] [seconds] [WxH]` after scripts/build-web.sh
+// (scripts/test-web.sh installs playwright-core).
+//
+// Method: the canvas pinned at W x H CSS pixels and render scale 1 (?size=WxH&scale=1),
+// auto-framing off and the camera where the preset frames it; "moving": every 16 ms the
+// page's camera.eye steps 2 mm to one side and back (a new view each frame: the MatCap
+// tier keeps no background). 4 s of warm-up (the shaders compile), then `runs` runs of
+// `seconds` each: frames drawn over the wall time. The four states one after another in
+// one browser; prints each run, the medians and the ratios full / MatCap.
+import { start, openPage } from './lib.mjs';
+
+const runs = Number(process.argv[2] || 3);
+const seconds = Number(process.argv[3] || 6);
+const size = process.argv[4] || '400x300';
+if (!(runs >= 1 && seconds > 0 && /^\d+x\d+$/.test(size))) {
+  console.error('usage: node bench-tiers.mjs [runs >= 1] [seconds > 0] [WxH]');
+  process.exit(2);
+}
+
+const median = (v) => {
+  const s = [...v].sort((a, b) => a - b), n = s.length;
+  return n % 2 ? s[(n - 1) / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
+};
+
+const env = await start();
+const ms = {};
+try {
+  console.log(`chromium ${env.browser.version()}, SwiftShader (lib.mjs flags); ${size} CSS px at scale 1; ${runs} runs of ${seconds} s after 4 s of warm-up`);
+  for (const [tier, moving] of [['full', false], ['matcap', false], ['full', true], ['matcap', true]]) {
+    const page = await openPage(env, { query: `size=${size}&scale=1` });
+    try {
+      await page.selectOption('#drink', 'lager');
+      await page.waitForTimeout(1000);
+      const eye = await page.evaluate(() => JSON.parse(window.draught.api.values())['camera.eye']);
+      for (const [path, value] of [['camera.auto_frame', 'false'], ['camera.eye', eye], ['render.tier', tier]]) {
+        const refused = await page.evaluate(([p, v]) => window.draught.setParam(p, v), [path, value]);
+        if (refused) throw new Error(`${path}: ${refused}`);
+      }
+      if (moving) {
+        await page.evaluate((eye) => {
+          const [x, y, z] = eye.split(',').map(Number);
+          let side = 0;
+          window.benchCamera = setInterval(() => {
+            side ^= 1;
+            window.draught.setParam('camera.eye', `${x + 0.002 * side},${y},${z}`);
+          }, 16);
+        }, eye);
+      }
+      await page.waitForTimeout(4000);
+      const fps = [];
+      for (let i = 0; i < runs; ++i) {
+        const f0 = await page.evaluate(() => ({ frames: window.draught.frames(), t: performance.now() }));
+        await page.waitForTimeout(seconds * 1000);
+        const f1 = await page.evaluate(() => ({ frames: window.draught.frames(), t: performance.now() }));
+        fps.push((1000 * (f1.frames - f0.frames)) / (f1.t - f0.t));
+      }
+      const st = await page.evaluate(() => window.draught.status());
+      const key = `${tier}${moving ? ', camera moving' : ''}`;
+      ms[key] = 1000 / median(fps);
+      console.log(`${key.padEnd(22)} ${st.width}x${st.height} tier ${st.tier}: fps ${fps.map((f) => f.toFixed(1)).join(' ')}; ` +
+                  `median ${median(fps).toFixed(2)} fps (${ms[key].toFixed(0)} ms a frame; the module's CPU part ${st.cpu_ms.toFixed(1)} ms)`);
+    } finally {
+      await page.context().close();
+    }
+  }
+  console.log(`full / MatCap: camera still ${(ms['full'] / ms['matcap']).toFixed(1)}x, ` +
+              `camera moving ${(ms['full, camera moving'] / ms['matcap, camera moving']).toFixed(1)}x`);
+} finally {
+  await env.close();
+}
