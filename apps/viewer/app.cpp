@@ -158,6 +158,7 @@ class Viewer {
     FloorLightSettings floor;
     floor.photons = kFloorPhotonsInteractive;
     renderer_.set_floor_light(floor, true, kFloorPhotonsInteractive / 5);
+    renderer_.set_moving_drafts(true);  // the MatCap tier's background while things move
     applied_revision_ = editor_.revision();
     restart();
   }

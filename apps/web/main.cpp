@@ -282,6 +282,7 @@ void set_web_floor_light(gpu::Renderer& r) {
   s.threads = 1;
   s.photons = kFloorPhotonsStill / 10;
   r.set_floor_light(s, true, kFloorPhotonsStill / 100);
+  r.set_moving_drafts(true);  // the MatCap tier's background while things move
 }
 
 // The context is back, empty: programs, buffers and textures are built again (the renderer

@@ -346,7 +346,10 @@ void main() {
     alpha = clamp(1.0 - m, 0.0, 1.0);
     radiance += (thr - vec3(m)) * sky_light();
   } else {
-#ifdef MATCAP_CACHED
+#if defined(MATCAP_CACHED) && defined(MATCAP_CACHED_SMALL)
+    // Drawn smaller while things move (MatCapBackground::kMovingScale), read between its texels.
+    radiance += thr * texture(u_matcap_background, gl_FragCoord.xy * frame.viewport_inv).rgb;
+#elif defined(MATCAP_CACHED)
     radiance += thr * texelFetch(u_matcap_background, ivec2(gl_FragCoord.xy), 0).rgb;  // drawn once for this view
 #else
     radiance += thr * seen_straight(frame.cam_eye, dir);

@@ -70,6 +70,8 @@ void MatCapTexture::bind() const {
 MatCapBackground::~MatCapBackground() {
   if (fbo_) glDeleteFramebuffers(1, &fbo_);
   if (tex_) glDeleteTextures(1, &tex_);
+  if (fbo_small_) glDeleteFramebuffers(1, &fbo_small_);
+  if (tex_small_) glDeleteTextures(1, &tex_small_);
 }
 
 bool MatCapBackground::ready(const void* key, size_t bytes, int width, int height) const {
@@ -84,7 +86,43 @@ bool MatCapBackground::held(const void* key, size_t bytes, int width, int height
   offered_.assign(k, k + bytes);
   offered_width_ = width;
   offered_height_ = height;
+  new_views_ = same ? 0 : new_views_ + 1;
   return same;
+}
+
+bool MatCapBackground::begin_drawing_small(int width, int height) {
+  if (!usable_) return false;
+  if (width != small_width_ || height != small_height_ || !fbo_small_) {
+    if (fbo_small_) glDeleteFramebuffers(1, &fbo_small_);
+    if (tex_small_) glDeleteTextures(1, &tex_small_);
+    glGenTextures(1, &tex_small_);
+    glActiveTexture(GL_TEXTURE0 + contract::kMatCapBackgroundSampler.unit);
+    glBindTexture(GL_TEXTURE_2D, tex_small_);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA16F, width, height);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);  // read between texels
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glActiveTexture(GL_TEXTURE0);
+    glGenFramebuffers(1, &fbo_small_);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_small_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex_small_, 0);
+    if (!framebuffer_complete_or_free(fbo_small_, tex_small_)) {
+      usable_ = false;
+      return false;
+    }
+    small_width_ = width;
+    small_height_ = height;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_small_);
+  ++small_draws_;
+  return true;
+}
+
+void MatCapBackground::bind_small() const {
+  glActiveTexture(GL_TEXTURE0 + contract::kMatCapBackgroundSampler.unit);
+  glBindTexture(GL_TEXTURE_2D, tex_small_);
+  glActiveTexture(GL_TEXTURE0);
 }
 
 bool MatCapBackground::begin_drawing(int width, int height) {

@@ -55,6 +55,16 @@ class MatCapBackground {
   // remembers it. A view seen once is drawn with its background inline: a moving camera
   // would pay a whole background pass and its copy every frame for nothing.
   bool held(const void* key, size_t bytes, int width, int height);
+  // Whether the last two views offered were both new: the camera (or a glass) is moving.
+  // Then the background is drawn kMovingScale times smaller each way into a second
+  // texture (begin_drawing_small, bind_small) and read with linear filtering: a
+  // sixteenth of the shading, a softer background only while things move (the sweep,
+  // the sky and the lights change slowly across the picture).
+  static constexpr int kMovingScale = 4;
+  bool moving() const { return new_views_ >= 2; }
+  bool begin_drawing_small(int width, int height);  // binds its framebuffer; width, height: the smaller size
+  void bind_small() const;
+  int small_draws() const { return small_draws_; }  // (tests)
   bool begin_drawing(int width, int height);  // binds its framebuffer
   void done(const void* key, size_t bytes);
   void bind() const;
@@ -68,6 +78,9 @@ class MatCapBackground {
   std::vector<unsigned char> key_;
   std::vector<unsigned char> offered_;  // the last view offered (held)
   int offered_width_ = 0, offered_height_ = 0;
+  int new_views_ = 0;  // new views offered in a row
+  unsigned fbo_small_ = 0, tex_small_ = 0;
+  int small_width_ = 0, small_height_ = 0, small_draws_ = 0;
 };
 
 }  // namespace draught::gpu

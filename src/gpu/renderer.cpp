@@ -103,6 +103,7 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kPaintedSky) frag = with_define(std::move(frag), "PAINTED_SKY");
   if (variant & kMatCapBackdrop) frag = with_define(std::move(frag), "MATCAP_BACKDROP");
   if (variant & kMatCapCached) frag = with_define(std::move(frag), "MATCAP_CACHED");
+  if (variant & kMatCapSmall) frag = with_define(std::move(frag), "MATCAP_CACHED_SMALL");
   if (variant & kMatCapBackgroundOnly) frag = with_define(std::move(frag), "MATCAP_BACKGROUND_ONLY");
   if (variant & kPanorama) frag = with_define(std::move(frag), "PANORAMA");
   if (variant & kReflections) frag = with_define(std::move(frag), "REFLECTIONS");
@@ -205,8 +206,7 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   // env.reflections: the glasses' surroundings first, from inside each (the full tier's).
   else if (debug == DebugView::None && draw_reflections(f, block, variant)) variant |= kReflections;
   const std::vector<contract::ObjectRecord> records = matcap ? textures_->records() : std::vector<contract::ObjectRecord>{};
-  if (matcap && debug == DebugView::None && matcap_background(f, block, records, width, height, variant))
-    variant |= kMatCapCached;
+  if (matcap && debug == DebugView::None) variant |= matcap_background(f, block, records, width, height, variant);
   // The MatCap tier: only the part of the screen where the objects' bounds lie runs the
   // pass; the rest is the background alone (what the pass gives a line that meets no
   // object's bounds, for a fraction of the cost), read from the kept background, or
@@ -324,10 +324,10 @@ bool Renderer::draw_reflections(const FrameState& f, contract::FrameBlock& block
   return true;
 }
 
-bool Renderer::matcap_background(const FrameState& f, const contract::FrameBlock& block,
-                                 const std::vector<contract::ObjectRecord>& records, int width, int height, int variant) {
+int Renderer::matcap_background(const FrameState& f, const contract::FrameBlock& block,
+                                const std::vector<contract::ObjectRecord>& records, int width, int height, int variant) {
   // A transparent picture has no background; a screen's frames change without the block.
-  if (f.params.render.transparent || f.screen.mode != ScreenMode::Off || !matcap_background_->usable()) return false;
+  if (f.params.render.transparent || f.screen.mode != ScreenMode::Off || !matcap_background_->usable()) return 0;
   // What the background depends on: the block (camera, size, surroundings), the
   // environment image, and where the glasses stand (their contact on the floor).
   std::vector<unsigned char> key(sizeof block + sizeof(void*));
@@ -344,26 +344,47 @@ bool Renderer::matcap_background(const FrameState& f, const contract::FrameBlock
   const bool held = matcap_background_->held(key.data(), key.size(), width, height);
   if (matcap_background_->ready(key.data(), key.size(), width, height)) {
     matcap_background_->bind();
-    return true;
+    return kMatCapCached;
   }
-  if (!held) return false;  // a view seen once (a moving camera): its background inline
+  // A view seen once: its background inline (a still's first frame, as sharp as kept); a
+  // second new view in a row (things move): on a picture a quarter as wide and high
+  // (MatCapBackground::kMovingScale), a sixteenth of the work.
+  const bool moving = moving_drafts_ && !held && matcap_background_->moving();
+  if (!held && !moving) return 0;
   GLint target = 0;
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
-  const bool drawn = matcap_background_->begin_drawing(width, height);
+  constexpr int s = MatCapBackground::kMovingScale;
+  const int hw = (width + s - 1) / s, hh = (height + s - 1) / s;
+  const bool drawn = moving ? matcap_background_->begin_drawing_small(hw, hh) : matcap_background_->begin_drawing(width, height);
   if (drawn) {
-    const int v = (variant & ~(kDecals | kMatCapCached | kDroplets | kClouds | kCondensation)) | kMatCapBackdrop;
+    const int v = (variant & ~(kDecals | kMatCapCached | kMatCapSmall | kDroplets | kClouds | kCondensation)) | kMatCapBackdrop;
     auto& program = programs_[v];
     if (!program) program = build_program(v);
     glUseProgram(program->id());
     glBindVertexArray(vao_);
-    glViewport(0, 0, width, height);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    matcap_background_->done(key.data(), key.size());
+    if (moving) {  // the same view on the smaller picture
+      contract::FrameBlock small = block;
+      small.viewport_size = {hw, hh};
+      small.viewport_inv = {1.0f / float(hw), 1.0f / float(hh)};
+      glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof small, &small);
+      glViewport(0, 0, hw, hh);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof block, &block);
+    } else {
+      glViewport(0, 0, width, height);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      matcap_background_->done(key.data(), key.size());
+    }
   }
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
   glViewport(0, 0, width, height);
-  if (drawn) matcap_background_->bind();
-  return drawn;
+  if (!drawn) return 0;
+  if (moving) {
+    matcap_background_->bind_small();
+    return kMatCapCached | kMatCapSmall;
+  }
+  matcap_background_->bind();
+  return kMatCapCached;
 }
 
 void Renderer::draw_bubbles(const FrameState& f, int width, int height) {

@@ -114,6 +114,10 @@ class Renderer {
   // takes the unoccluded light); draft_photons > 0: drafts while the scene moves, the full
   // budget once it holds still (SceneTextures::set_floor_light).
   void set_floor_light(const FloorLightSettings&, bool on = true, int draft_photons = 0);
+  // Interactive apps (the viewer, the web page): while things move, the MatCap tier's
+  // background is drawn smaller and read between its texels (MatCapBackground::moving).
+  // Off (the CLI, tests): every frame's background is as sharp as a still's.
+  void set_moving_drafts(bool on) { moving_drafts_ = on; }
 
  private:
   void draw_bubbles(const FrameState&, int width, int height);
@@ -132,14 +136,19 @@ class Renderer {
     kCondensation = 1 << 17, kMatCapBackgroundOnly = 1 << 18,
     // kPanorama: a glass's surroundings for env.reflections (gpu/reflection_panoramas);
     // kReflections: the picture looking its glasses' reflections up there.
-    kPanorama = 1 << 19, kReflections = 1 << 20
+    kPanorama = 1 << 19, kReflections = 1 << 20,
+    // kMatCapSmall: with kMatCapCached, the background read from its smaller picture
+    // (drawn while things move: MatCapBackground::moving).
+    kMatCapSmall = 1 << 21
   };
   // env.reflections: draws the panoramas this frame needs into reflections_ (the block
   // as the picture's, its camera moved into each glass); true when the picture has them.
   bool draw_reflections(const FrameState&, contract::FrameBlock&, int variant);
-  // The MatCap tier's background, drawn when it is not the one of this frame; false when
-  // it cannot be kept (no float targets, a screen whose frames it does not follow).
-  bool matcap_background(const FrameState&, const contract::FrameBlock&, const std::vector<contract::ObjectRecord>&,
+  // The MatCap tier's background: the variant bits that read it (kMatCapCached, with
+  // kMatCapSmall while things move), drawing it when it is not the one of this frame; 0
+  // when the pass shades it inline (a view seen once, no float targets, a screen whose
+  // frames it does not follow, a transparent picture).
+  int matcap_background(const FrameState&, const contract::FrameBlock&, const std::vector<contract::ObjectRecord>&,
                          int width, int height, int variant);
   std::unique_ptr<Program> build_program(int variant) const;
 
@@ -158,6 +167,7 @@ class Renderer {
   unsigned bubble_vao_ = 0, bubble_vbo_ = 0;
   unsigned vao_ = 0, ubo_ = 0;
   bool held_objects_ = true;
+  bool moving_drafts_ = false;
 };
 
 // Turns a debug image into a picture a person can read (grey depth, RGB normals,

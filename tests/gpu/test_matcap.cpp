@@ -251,7 +251,7 @@ TEST(MatCapTier, AStillFrameBakesAndUploadsOnce) {
   EXPECT_EQ(g.renderer->matcap_texture().uploads(), uploads + 1);
 }
 
-TEST(MatCapTier, TheBackgroundIsKeptOncePerHeldViewAndAMovingCameraDrawsItInline) {
+TEST(MatCapTier, TheBackgroundIsKeptOncePerHeldViewAndDrawnSmallerWhileMoving) {
   Gpu& g = gpu_instance();
   FrameState f = matcap_tier(pint_front());
   f.camera.eye.y += 0.003f;  // a view no other test draws
@@ -272,15 +272,40 @@ TEST(MatCapTier, TheBackgroundIsKeptOncePerHeldViewAndAMovingCameraDrawsItInline
   for (size_t i = 0; i < inline_picture.rgba.size(); ++i)
     worst = std::max(worst, std::abs(int(inline_picture.rgba[i]) - int(kept_picture.rgba[i])));
   EXPECT_LE(worst, 1) << "inline and kept backgrounds are the same picture (half floats kept)";
-  // A camera that moves every frame: a new view each frame, none kept, none drawn.
+  // A camera that moves every frame: a new view each frame, none kept; from the second
+  // new view in a row, in an interactive app's renderer, the background is drawn smaller.
+  g.renderer->set_moving_drafts(true);
   FrameState moved = f;
+  const int small = g.renderer->matcap_background().small_draws();
   for (int i = 1; i <= 4; ++i) {
     moved.camera.eye.x = f.camera.eye.x + 0.002f * float(i);
     g.renderer->draw(moved, 48, 48);
   }
   EXPECT_EQ(g.renderer->matcap_background().draws(), before + 2);
+  EXPECT_EQ(g.renderer->matcap_background().small_draws(), small + 3);
   g.renderer->draw(moved, 48, 48);  // it stops: kept again
   EXPECT_EQ(g.renderer->matcap_background().draws(), before + 3);
+  // The smaller background is the same picture, softer: a moving frame against the same
+  // view held.
+  moved.camera.eye.x += 0.002f;
+  g.renderer->render(moved, 48, 48);  // a new view (inline)
+  moved.camera.eye.x += 0.002f;
+  const Image softer = g.renderer->render(moved, 48, 48);  // a second in a row: smaller
+  const Image sharp = g.renderer->render(moved, 48, 48);   // held: kept whole
+  double sum = 0;
+  for (size_t i = 0; i < softer.rgba.size(); ++i) sum += std::abs(int(softer.rgba[i]) - int(sharp.rgba[i]));
+  const double mean = sum / double(softer.rgba.size());
+  std::printf("smaller background while moving: mean difference %.3f levels\n", mean);
+  EXPECT_GT(g.renderer->matcap_background().small_draws(), small + 3);
+  EXPECT_LT(mean, 1.0);
+  // The CLI's and the tests' renderer draws every frame's background whole.
+  g.renderer->set_moving_drafts(false);
+  const int small_now = g.renderer->matcap_background().small_draws();
+  for (int i = 0; i < 3; ++i) {
+    moved.camera.eye.x += 0.002f;
+    g.renderer->draw(moved, 48, 48);
+  }
+  EXPECT_EQ(g.renderer->matcap_background().small_draws(), small_now);
 }
 
 // Every matcap.* number at its minimum and its maximum: a picture with no black hole (a NaN

@@ -5,9 +5,9 @@
 // (scripts/test-web.sh installs playwright-core).
 //
 // Method: the canvas pinned at W x H CSS pixels and render scale 1 (?size=WxH&scale=1),
-// auto-framing off and the camera where the preset frames it; "moving": every 16 ms the
-// page's camera.eye steps 2 mm to one side and back (a new view each frame: the MatCap
-// tier keeps no background). 4 s of warm-up (the shaders compile), then `runs` runs of
+// auto-framing off and the camera where the preset frames it; "moving": at every animation
+// frame the page's camera.eye steps 2 mm to one side and back (a new view each frame: the
+// MatCap tier keeps no background). 4 s of warm-up (the shaders compile), then `runs` runs of
 // `seconds` each: frames drawn over the wall time. The four states one after another in
 // one browser; prints each run, the medians and the ratios full / MatCap.
 import { start, openPage } from './lib.mjs';
@@ -43,10 +43,12 @@ try {
         await page.evaluate((eye) => {
           const [x, y, z] = eye.split(',').map(Number);
           let side = 0;
-          window.benchCamera = setInterval(() => {
+          const step = () => {  // once per animation frame: each picture a new view
             side ^= 1;
             window.draught.setParam('camera.eye', `${x + 0.002 * side},${y},${z}`);
-          }, 16);
+            requestAnimationFrame(step);
+          };
+          requestAnimationFrame(step);
         }, eye);
       }
       await page.waitForTimeout(4000);
