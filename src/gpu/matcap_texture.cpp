@@ -93,21 +93,8 @@ bool MatCapBackground::held(const void* key, size_t bytes, int width, int height
 bool MatCapBackground::begin_drawing_small(int width, int height) {
   if (!usable_) return false;
   if (width != small_width_ || height != small_height_ || !fbo_small_) {
-    if (fbo_small_) glDeleteFramebuffers(1, &fbo_small_);
-    if (tex_small_) glDeleteTextures(1, &tex_small_);
-    glGenTextures(1, &tex_small_);
-    glActiveTexture(GL_TEXTURE0 + contract::kMatCapBackgroundSampler.unit);
-    glBindTexture(GL_TEXTURE_2D, tex_small_);
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA16F, width, height);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);  // read between texels
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glActiveTexture(GL_TEXTURE0);
-    glGenFramebuffers(1, &fbo_small_);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_small_);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex_small_, 0);
-    if (!framebuffer_complete_or_free(fbo_small_, tex_small_)) {
+    // (read between its texels)
+    if (!make_half_float_target(fbo_small_, tex_small_, width, height, contract::kMatCapBackgroundSampler.unit, GL_LINEAR)) {
       usable_ = false;
       return false;
     }
@@ -128,20 +115,8 @@ void MatCapBackground::bind_small() const {
 bool MatCapBackground::begin_drawing(int width, int height) {
   if (!usable_) return false;
   if (width != width_ || height != height_ || !fbo_) {
-    if (fbo_) glDeleteFramebuffers(1, &fbo_);
-    if (tex_) glDeleteTextures(1, &tex_);
-    glGenTextures(1, &tex_);
-    glActiveTexture(GL_TEXTURE0 + contract::kMatCapBackgroundSampler.unit);
-    glBindTexture(GL_TEXTURE_2D, tex_);
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA16F, width, height);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glActiveTexture(GL_TEXTURE0);
-    glGenFramebuffers(1, &fbo_);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex_, 0);
-    if (!framebuffer_complete_or_free(fbo_, tex_)) {  // no half-float targets
-      usable_ = false;
+    if (!make_half_float_target(fbo_, tex_, width, height, contract::kMatCapBackgroundSampler.unit, GL_NEAREST)) {
+      usable_ = false;  // no half-float targets
       return false;
     }
     width_ = width;

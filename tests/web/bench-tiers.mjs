@@ -10,20 +10,9 @@
 // MatCap tier keeps no background). 4 s of warm-up (the shaders compile), then `runs` runs of
 // `seconds` each: frames drawn over the wall time. The four states one after another in
 // one browser; prints each run, the medians and the ratios full / MatCap.
-import { start, openPage } from './lib.mjs';
+import { benchArgs, framesPerSecond, median, openPage, start } from './lib.mjs';
 
-const runs = Number(process.argv[2] || 3);
-const seconds = Number(process.argv[3] || 6);
-const size = process.argv[4] || '400x300';
-if (!(runs >= 1 && seconds > 0 && /^\d+x\d+$/.test(size))) {
-  console.error('usage: node bench-tiers.mjs [runs >= 1] [seconds > 0] [WxH]');
-  process.exit(2);
-}
-
-const median = (v) => {
-  const s = [...v].sort((a, b) => a - b), n = s.length;
-  return n % 2 ? s[(n - 1) / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
-};
+const { runs, seconds, size } = benchArgs('bench-tiers.mjs', { runs: 3, seconds: 6 });
 
 const env = await start();
 const ms = {};
@@ -52,13 +41,7 @@ try {
         }, eye);
       }
       await page.waitForTimeout(4000);
-      const fps = [];
-      for (let i = 0; i < runs; ++i) {
-        const f0 = await page.evaluate(() => ({ frames: window.draught.frames(), t: performance.now() }));
-        await page.waitForTimeout(seconds * 1000);
-        const f1 = await page.evaluate(() => ({ frames: window.draught.frames(), t: performance.now() }));
-        fps.push((1000 * (f1.frames - f0.frames)) / (f1.t - f0.t));
-      }
+      const fps = await framesPerSecond(page, runs, seconds);
       const st = await page.evaluate(() => window.draught.status());
       const key = `${tier}${moving ? ', camera moving' : ''}`;
       ms[key] = 1000 / median(fps);

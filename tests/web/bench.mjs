@@ -10,20 +10,9 @@
 // runs of `seconds` each: frames drawn (window.draught.frames) over the wall time between
 // them. Prints each run and the median. Each scene in the full tier and in the MatCap tier
 // (render.tier matcap: where a slow device's adaptive quality falls).
-import { start, openPage } from './lib.mjs';
+import { benchArgs, framesPerSecond, median, openPage, start } from './lib.mjs';
 
-const runs = Number(process.argv[2] || 5);
-const seconds = Number(process.argv[3] || 8);
-const size = process.argv[4] || '400x300';
-if (!(runs >= 1 && seconds > 0 && /^\d+x\d+$/.test(size))) {
-  console.error('usage: node bench.mjs [runs >= 1] [seconds > 0] [WxH]');
-  process.exit(2);
-}
-
-const median = (v) => {
-  const s = [...v].sort((a, b) => a - b), n = s.length;
-  return n % 2 ? s[(n - 1) / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
-};
+const { runs, seconds, size } = benchArgs('bench.mjs', { runs: 5, seconds: 8 });
 
 const env = await start();
 try {
@@ -51,13 +40,7 @@ try {
         }, 16);
       });
       await page.waitForTimeout(4000);
-      const fps = [];
-      for (let i = 0; i < runs; ++i) {
-        const f0 = await page.evaluate(() => ({ frames: window.draught.frames(), t: performance.now() }));
-        await page.waitForTimeout(seconds * 1000);
-        const f1 = await page.evaluate(() => ({ frames: window.draught.frames(), t: performance.now() }));
-        fps.push((1000 * (f1.frames - f0.frames)) / (f1.t - f0.t));
-      }
+      const fps = await framesPerSecond(page, runs, seconds);
       const st = await page.evaluate(() => window.draught.status());
       const moved = await page.evaluate(() => window.draught.droplets());
       const spread = Math.max(...moved.spheres.map((s) => Math.hypot(s[0] - moved.spheres[0][0], s[1] - moved.spheres[0][1])));

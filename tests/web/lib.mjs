@@ -127,3 +127,34 @@ export function stats(img) {
   }
   return { mean: sum / (img.data.length / 4), min, max };
 }
+
+// ---- for the benchmarks (bench*.mjs) ----
+
+// `node BENCH.mjs [runs] [seconds] [WxH]`, with these defaults; exits with a usage line
+// on anything else.
+export function benchArgs(name, { runs = 3, seconds = 5, size = '400x300' } = {}) {
+  const r = Number(process.argv[2] || runs), s = Number(process.argv[3] || seconds), z = process.argv[4] || size;
+  if (!(r >= 1 && s > 0 && /^\d+x\d+$/.test(z))) {
+    console.error(`usage: node ${name} [runs >= 1] [seconds > 0] [WxH]`);
+    process.exit(2);
+  }
+  return { runs: r, seconds: s, size: z };
+}
+
+export const median = (v) => {
+  const s = [...v].sort((a, b) => a - b), n = s.length;
+  return n % 2 ? s[(n - 1) / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
+};
+
+// Frames the page draws per second: `runs` runs of `seconds` each, frames counted over the
+// wall time between them.
+export async function framesPerSecond(page, runs, seconds) {
+  const fps = [];
+  for (let i = 0; i < runs; ++i) {
+    const f0 = await page.evaluate(() => ({ frames: window.draught.frames(), t: performance.now() }));
+    await page.waitForTimeout(seconds * 1000);
+    const f1 = await page.evaluate(() => ({ frames: window.draught.frames(), t: performance.now() }));
+    fps.push((1000 * (f1.frames - f0.frames)) / (f1.t - f0.t));
+  }
+  return fps;
+}
