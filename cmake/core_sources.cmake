@@ -1,5 +1,6 @@
-# The one list of core sources, shared by the native build (CMakeLists.txt) and the web
-# build (cmake/web.cmake). Paths are relative to the repository root. Core has no GL.
+# The one list of core sources, and the one of the renderer's, shared by the native build
+# (CMakeLists.txt) and the web build (cmake/web.cmake). Paths are relative to the
+# repository root. Core has no GL.
 set(DRAUGHT_CORE_SOURCES
   src/core/params/params.cpp
   src/core/params/json_input.cpp
@@ -77,8 +78,24 @@ set(DRAUGHT_CORE_SOURCES
   src/core/input/device_motion.cpp
   src/core/input/combined.cpp
 )
-# The same list as absolute paths, for builds whose source dir is not the root.
-set(DRAUGHT_CORE_SOURCES_ABS "")
-foreach(src ${DRAUGHT_CORE_SOURCES})
-  list(APPEND DRAUGHT_CORE_SOURCES_ABS "${CMAKE_CURRENT_LIST_DIR}/../${src}")
+# The renderer's sources that both builds share (the native one adds the EGL context,
+# src/gpu/context.cpp; the web one has WebGL2's).
+set(DRAUGHT_GPU_SOURCES
+  src/gpu/shader_source.cpp
+  src/gpu/program.cpp
+  src/gpu/scene_data.cpp
+  src/gpu/decal_textures.cpp
+  src/gpu/renderer.cpp
+  src/gpu/screen_texture.cpp
+  src/gpu/matcap_texture.cpp
+  src/gpu/reflection_panoramas.cpp
+  src/gpu/cloud_textures.cpp
+  src/gpu/condensation_textures.cpp
+)
+# The same lists as absolute paths, for builds whose source dir is not the root.
+foreach(list DRAUGHT_CORE_SOURCES DRAUGHT_GPU_SOURCES)
+  set(${list}_ABS "")
+  foreach(src ${${list}})
+    list(APPEND ${list}_ABS "${CMAKE_CURRENT_LIST_DIR}/../${src}")
+  endforeach()
 endforeach()

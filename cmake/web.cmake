@@ -43,17 +43,7 @@ include("${CMAKE_CURRENT_LIST_DIR}/core_sources.cmake")
 set(web_core ${DRAUGHT_CORE_SOURCES_ABS})
 # (Clang 14, Emscripten 3.1.6's compiler, cannot capture structured bindings in lambdas;
 # src/ spells such captures out: [&, &key = key].)
-set(web_gpu
-  "${DRAUGHT_ROOT}/src/gpu/shader_source.cpp"
-  "${DRAUGHT_ROOT}/src/gpu/program.cpp"
-  "${DRAUGHT_ROOT}/src/gpu/scene_data.cpp"
-  "${DRAUGHT_ROOT}/src/gpu/decal_textures.cpp"
-  "${DRAUGHT_ROOT}/src/gpu/matcap_texture.cpp"
-  "${DRAUGHT_ROOT}/src/gpu/reflection_panoramas.cpp"
-  "${DRAUGHT_ROOT}/src/gpu/cloud_textures.cpp"
-  "${DRAUGHT_ROOT}/src/gpu/condensation_textures.cpp"
-  "${DRAUGHT_ROOT}/src/gpu/renderer.cpp"
-  "${DRAUGHT_ROOT}/src/gpu/screen_texture.cpp")
+set(web_gpu ${DRAUGHT_GPU_SOURCES_ABS})
 include("${CMAKE_CURRENT_LIST_DIR}/shaders.cmake")
 draught_embed_shaders(web_embedded)
 

@@ -5,6 +5,7 @@
 #include "core/math/basis.hpp"
 
 #include "core/foam/head_volume.hpp"
+#include "core/math/channels.hpp"
 #include "core/math/random.hpp"
 #include "core/reference/bodies.hpp"
 #include "core/reference/media.hpp"
@@ -31,7 +32,6 @@ constexpr int kLanes = 4;      // fixed accumulation buffers: the sum does not d
 constexpr int kMaxEvents = 64;
 constexpr double kKernelScale = 2.0;  // texels per unit of the cubic B-spline (radius 2 units: 4 texels, 1 cm)
 
-double mean3(const glm::dvec3& v) { return (v.x + v.y + v.z) / 3.0; }
 double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 
 // The cubic B-spline (support [-2, 2], a partition of unity over integer shifts).
@@ -375,7 +375,7 @@ std::vector<int> photon_counts(const LightRig& emitters, const std::vector<Targe
         sum += cos_l * c.solid_angle;
       }
       const double proj_area = light.shape == LightShape::Sphere ? kPi * light.radius * light.radius : light.area();
-      flux[l * G + g] = mean3(light.radiance) * proj_area * sum / double(pts.size());
+      flux[l * G + g] = channel_mean(light.radiance) * proj_area * sum / double(pts.size());
       total += flux[l * G + g];
     }
   }
@@ -457,7 +457,7 @@ LightRig floor_emitters(const FrameState& f) {
   // The image's patches of the level nearest 32 wide, the brightest on the floor first.
   ImagePatches level = image_patches(Studio(f.params), 32, true);
   std::vector<ImagePatch>& patches = level.patches;
-  const auto floor_light = [](const ImagePatch& p) { return mean3(p.radiance) * p.solid_angle * p.dir.y; };
+  const auto floor_light = [](const ImagePatch& p) { return channel_mean(p.radiance) * p.solid_angle * p.dir.y; };
   const size_t keep = std::min(patches.size(), kImageFloorEmitters);
   std::partial_sort(patches.begin(), patches.begin() + long(keep), patches.end(),
                     [&](const ImagePatch& a, const ImagePatch& b) { return floor_light(a) > floor_light(b); });

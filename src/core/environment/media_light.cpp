@@ -2,18 +2,13 @@
 
 #include "core/environment/image_patches.hpp"
 #include "core/environment/sphere_grid.hpp"
+#include "core/math/channels.hpp"
 #include "generated/constants.hpp"
 
 #include <algorithm>
 #include <cstdlib>
 
 namespace draught {
-
-namespace {
-
-double mean3(const glm::dvec3& v) { return (v.x + v.y + v.z) / 3.0; }
-
-}  // namespace
 
 MediaLight media_light(const Studio& studio, const LightRig& rig, const SkyIrradiance& surround) {
   MediaLight m;
@@ -27,12 +22,12 @@ MediaLight media_light(const Studio& studio, const LightRig& rig, const SkyIrrad
   std::vector<ImagePatch>& patches = level.patches;
   double power = 0, solid = 0;
   for (const ImagePatch& p : patches) {
-    power += mean3(p.irradiance());
+    power += channel_mean(p.irradiance());
     solid += p.solid_angle;
   }
   const double mean_radiance = solid > 0 ? power / solid : 0.0;
   std::sort(patches.begin(), patches.end(), [](const ImagePatch& a, const ImagePatch& b) {
-    return mean3(a.irradiance()) > mean3(b.irradiance());
+    return channel_mean(a.irradiance()) > channel_mean(b.irradiance());
   });
   std::vector<const ImagePatch*> taken;
   const auto beside = [&](const ImagePatch& p) {
@@ -49,7 +44,7 @@ MediaLight media_light(const Studio& studio, const LightRig& rig, const SkyIrrad
   const int rx = std::max(1, fine.width / level.width), ry = std::max(1, fine.height / level.height);
   for (const ImagePatch& p : patches) {
     if (taken.size() == size_t(contract::kMaxLights)) break;
-    if (!(mean3(p.radiance) > kMediaPatchContrast * mean_radiance)) break;  // the rest are dimmer still
+    if (!(channel_mean(p.radiance) > kMediaPatchContrast * mean_radiance)) break;  // the rest are dimmer still
     if (beside(p)) continue;  // (a lamp across two texels is one light and a little glow)
     taken.push_back(&p);
     ImagePatch light = p;
@@ -59,7 +54,7 @@ MediaLight media_light(const Studio& studio, const LightRig& rig, const SkyIrrad
       for (int i = p.i * rx; i < (p.i + 1) * rx; ++i) {
         const ImagePatch t = image_patch(studio, fine, i, j);
         e += t.irradiance();
-        towards += mean3(t.irradiance()) * t.dir;
+        towards += channel_mean(t.irradiance()) * t.dir;
         solid_angle += t.solid_angle;
         const std::array<double, 9> y = SkyIrradiance::basis(t.dir);
         for (size_t k = 0; k < 9; ++k) m.surround.coef[k] -= t.irradiance() * (y[k] * kCosineBand[k]);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/foam/head_volume.hpp"
+#include "core/math/channels.hpp"
 #include "core/math/random.hpp"
 
 #include <glm/glm.hpp>
@@ -18,7 +19,6 @@ namespace draught {
 // sampling: a channel picks the distance, the three channels' mean density weights it.
 inline bool liquid_free_flight(const glm::dvec3& absorption, const glm::dvec3& haze, double t_end, glm::dvec3& thr,
                                double& t_scatter, Rng& rng) {
-  const auto mean3 = [](const glm::dvec3& v) { return (v.x + v.y + v.z) / 3.0; };
   const glm::dvec3 sigma_t = absorption + haze;
   if (std::max(haze.x, std::max(haze.y, haze.z)) <= 0) {
     thr *= glm::exp(-sigma_t * t_end);
@@ -28,12 +28,12 @@ inline bool liquid_free_flight(const glm::dvec3& absorption, const glm::dvec3& h
   const double t = sigma_t[c] > 0 ? -std::log(1 - rng.uniform()) / sigma_t[c] : std::numeric_limits<double>::infinity();
   if (t < t_end) {
     const glm::dvec3 tr = glm::exp(-sigma_t * t);
-    thr *= tr * haze / mean3(sigma_t * tr);
+    thr *= tr * haze / channel_mean(sigma_t * tr);
     t_scatter = t;
     return false;
   }
   const glm::dvec3 tr = glm::exp(-sigma_t * t_end);
-  thr *= tr / mean3(tr);
+  thr *= tr / channel_mean(tr);
   return true;
 }
 

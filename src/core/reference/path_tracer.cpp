@@ -6,6 +6,7 @@
 #include "core/environment/studio.hpp"
 #include "core/foam/head_volume.hpp"
 #include "core/math/basis.hpp"
+#include "core/math/channels.hpp"
 #include "core/math/random.hpp"
 #include "core/output/tonemap.hpp"
 #include "core/reference/bodies.hpp"
@@ -35,7 +36,6 @@ constexpr double kEps = 1e-7;  // where a path starts again past the surface it 
 constexpr double kFrostBackscatter = 0.2;
 
 double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
-double mean3(const glm::dvec3& v) { return (v.x + v.y + v.z) / 3.0; }
 
 // Henyey-Greenstein: phase value for the cosine between the incoming travel direction
 // and the scattered one, and a sample of it.
@@ -427,7 +427,7 @@ class Tracer {
     for (size_t i = 0; i < lights_.size(); ++i) {
       const AreaLight& l = lights_[i];
       const glm::dvec3 towards = glm::length(n) > 0 ? n : glm::normalize(l.center - p);
-      prob[i] = mean3(l.radiance) * l.irradiance_factor(p, towards);
+      prob[i] = channel_mean(l.radiance) * l.irradiance_factor(p, towards);
       sum += prob[i];
     }
     if (!(sum > 0)) return false;

@@ -16,7 +16,7 @@
 #include "core/params/preset.hpp"
 #include "core/scene/frame.hpp"
 
-#include "test_common.hpp"
+#include "environment/image_scene_test.hpp"
 
 #include <gtest/gtest.h>
 
@@ -29,29 +29,19 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-class EnvironmentImage : public test::TempDirTest {
+class EnvironmentImage : public test::ImageSceneTest {
  protected:
-  EnvironmentImage() : TempDirTest("draught-env-image") {}
+  EnvironmentImage() : ImageSceneTest("draught-env-image") {}
 
   // A 64 x 32 image of `base` with one bright texel in direction `bright` (image space).
   std::string write_image(const std::string& name, glm::vec3 base, glm::dvec3 bright = {0, 0, 0},
                           glm::vec3 value = glm::vec3(0)) {
-    HdrImage img{64, 32, std::vector<glm::vec3>(64 * 32, base)};
+    std::vector<glm::ivec2> texels;
     if (glm::length(bright) > 0) {
       const glm::dvec2 uv = equirect_uv(glm::normalize(bright));
-      const int x = std::min(63, int(uv.x * 64)), y = std::min(31, int(uv.y * 32));
-      img.rgb[size_t(y) * 64 + size_t(x)] = value;
+      texels.push_back({std::min(kWidth - 1, int(uv.x * kWidth)), std::min(kHeight - 1, int(uv.y * kHeight))});
     }
-    const auto path = dir_ / name;
-    write_radiance_hdr(path, img);
-    return path.string();
-  }
-
-  SceneParams image_scene(const std::string& file) {
-    SceneParams p = default_params();
-    set_param(p, *find_param("env.mode"), std::string("image"));
-    set_param(p, *find_param("env.image"), file);
-    return p;
+    return ImageSceneTest::write_image(name, base, texels, value);
   }
 };
 

@@ -7,7 +7,7 @@
 #include "core/params/preset.hpp"
 #include "core/scene/frame.hpp"
 
-#include "test_common.hpp"
+#include "environment/image_scene_test.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,20 +19,13 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-class MediaLightTest : public test::TempDirTest {
+class MediaLightTest : public test::ImageSceneTest {
  protected:
-  MediaLightTest() : TempDirTest("draught-media-light") {}
+  MediaLightTest() : ImageSceneTest("draught-media-light") {}
 
-  // A 64 x 32 image of `base` with `value` at the texels (x, y) listed.
+  // The default scene under a 64 x 32 image of `base` with `value` at the texels listed.
   SceneParams image_scene(glm::vec3 base, std::vector<glm::ivec2> bright = {}, glm::vec3 value = glm::vec3(0)) {
-    HdrImage img{64, 32, std::vector<glm::vec3>(64 * 32, base)};
-    for (glm::ivec2 t : bright) img.rgb[size_t(t.y) * 64 + size_t(t.x)] = value;
-    const auto path = dir_ / ("image" + std::to_string(count_++) + ".hdr");
-    write_radiance_hdr(path, img);
-    SceneParams p = default_params();
-    set_param(p, *find_param("env.mode"), std::string("image"));
-    set_param(p, *find_param("env.image"), path.string());
-    return p;
+    return ImageSceneTest::image_scene(write_image("image" + std::to_string(count_++) + ".hdr", base, bright, value));
   }
   int count_ = 0;
 };
