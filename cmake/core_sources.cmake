@@ -26,6 +26,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/pointcloud/cloud_viewing.cpp
   src/core/pointcloud/blackbody.cpp
   src/core/pointcloud/glass_heat.cpp
+  src/core/pointcloud/glow_light.cpp
   src/core/pointcloud/gob.cpp
   src/core/pointcloud/bvh.cpp
   src/core/pointcloud/field.cpp

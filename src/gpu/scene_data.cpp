@@ -1,6 +1,7 @@
 #include "gpu/scene_data.hpp"
 
 #include "core/pointcloud/blackbody.hpp"
+#include "core/pointcloud/glow_light.hpp"
 
 #include "core/foam/head_volume.hpp"
 #include "core/scene/camera.hpp"
@@ -135,6 +136,9 @@ void pack_clouds(const FrameState& f, const CloudScene& clouds, contract::FrameB
     b.cloud_hi[i] = glm::vec4(r.hi, c.roughness);
     b.cloud_absorption[i] = glm::vec4(c.absorption, c.temperature);
     b.cloud_glow[i] = glm::vec4(float(c.glow * kGlowPerNit), c.glow_depth > 0 ? 1.0f / c.glow_depth : 0.0f, 0.0f, 0.0f);
+    const GlowSphere glow = cloud_glow_sphere(c);
+    b.cloud_glow_sphere[i] = glm::vec4(glm::vec3(glow.centre), float(glow.radius));
+    b.cloud_glow_radiance[i] = glm::vec4(glm::vec3(glow.radiance), 0.0f);
   }
 }
 

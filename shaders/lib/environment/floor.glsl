@@ -84,10 +84,22 @@ vec3 backdrop_faded(BackdropSurface bd, vec3 c, vec3 d, float dist) {
 #endif
 }
 
+// The light hot clouds cast on the backdrop at p (normal n): each glowing cloud a sphere
+// of even radiance (frame.cloud_glow_*, core/pointcloud/glow_light), nothing in between.
+vec3 clouds_glow_irradiance(vec3 p, vec3 n) {
+  vec3 e = vec3(0.0);
+  for (int k = 0; k < MAX_CLOUDS; ++k) {  // (in every pass that draws the backdrop: the MatCap tier's too)
+    if (k >= frame.cloud_count) break;
+    vec4 s = frame.cloud_glow_sphere[k];
+    if (s.w > 0.0) e += frame.cloud_glow_radiance[k].rgb * sphere_irradiance_factor(s.xyz, s.w, p, n);
+  }
+  return e;
+}
+
 // The backdrop at p (world, normal n), seen along d from `dist` away: albedo / pi times the
 // light it receives, the rig's direct light (one texel of the backdrop's light map; on the
-// floor through the traced map's shadows and caustics) and the surround's (the sky and the
-// paper's own bounce, seen from the scene's centre) around the feet.
+// floor through the traced map's shadows and caustics), the surround's (the sky and the
+// paper's own bounce, seen from the scene's centre) around the feet, and hot clouds' glow.
 vec3 shade_backdrop(vec3 p, vec3 n, vec3 d, float dist) {
   BackdropSurface bd = backdrop_surface();
   vec3 e = surround_irradiance(n) * floor_contact(p) + floor_direct_light(p, n);
@@ -96,6 +108,7 @@ vec3 shade_backdrop(vec3 p, vec3 n, vec3 d, float dist) {
   // core floor_emitters) change it on the floor.
   if (n.y > 0.999) e *= floor_light_factor(p);
 #endif
+  e += clouds_glow_irradiance(p, n);
   return backdrop_faded(bd, albedo(bd, p) / PI * e, d, dist);
 }
 
@@ -104,7 +117,7 @@ vec3 shade_backdrop(vec3 p, vec3 n, vec3 d, float dist) {
 // reflection.
 vec3 shade_backdrop_mirrored(vec3 p, vec3 n, vec3 d, float dist) {
   BackdropSurface bd = backdrop_surface();
-  vec3 c = albedo(bd, p) / PI * (surround_irradiance(n) + rig_irradiance_far(p, n, g_light_count));
+  vec3 c = albedo(bd, p) / PI * (surround_irradiance(n) + rig_irradiance_far(p, n, g_light_count) + clouds_glow_irradiance(p, n));
   return backdrop_faded(bd, c, d, dist);
 }
 

@@ -102,19 +102,23 @@ void clipped_edge(vec3 a, vec3 b, float ha, float hb, vec3 n, inout float sum, i
 // radiance, with nothing in between (pi times the form factor): a rect's polygon clipped
 // to the surface's hemisphere (Lambert), a sphere by Snyder's formula, the horizon
 // included. Zero behind a rect. Twin of AreaLight::irradiance_factor.
+// A sphere of unit radiance (centre c, radius r) by Snyder's formula, the horizon
+// included. Twin of sphere_irradiance_factor in core/environment/lights.
+float sphere_irradiance_factor(vec3 c, float r, vec3 x, vec3 n) {
+  vec3 w = c - x;
+  float d2 = dot(w, w);
+  if (d2 <= r * r) return PI;
+  float sin2 = r * r / d2, cos_t = dot(n, w) * inversesqrt(d2);
+  if (cos_t * cos_t > sin2) return PI * sin2 * max(cos_t, 0.0);
+  float sin_t = sqrt(max(0.0, 1.0 - cos_t * cos_t));
+  float xx = sqrt(1.0 / sin2 - 1.0);
+  float y = clamp(-xx * cos_t / max(sin_t, 1e-12), -1.0, 1.0);
+  float s = sin_t * sqrt(1.0 - y * y);
+  return max(0.0, (cos_t * acos(y) - xx * s) * sin2 + atan(s / xx));
+}
+
 float irradiance_factor(AreaLight l, vec3 x, vec3 n) {
-  if (l.sphere) {
-    vec3 w = l.center - x;
-    float d2 = dot(w, w);
-    if (d2 <= l.radius * l.radius) return PI;
-    float sin2 = l.radius * l.radius / d2, cos_t = dot(n, w) * inversesqrt(d2);
-    if (cos_t * cos_t > sin2) return PI * sin2 * max(cos_t, 0.0);
-    float sin_t = sqrt(max(0.0, 1.0 - cos_t * cos_t));
-    float xx = sqrt(1.0 / sin2 - 1.0);
-    float y = clamp(-xx * cos_t / max(sin_t, 1e-12), -1.0, 1.0);
-    float s = sin_t * sqrt(1.0 - y * y);
-    return max(0.0, (cos_t * acos(y) - xx * s) * sin2 + atan(s / xx));
-  }
+  if (l.sphere) return sphere_irradiance_factor(l.center, l.radius, x, n);
   if (dot(x - l.center, l.normal) <= 0.0) return 0.0;  // behind the softbox
   vec3 c0 = normalize(l.center - l.half_u - l.half_v - x), c1 = normalize(l.center + l.half_u - l.half_v - x);
   vec3 c2 = normalize(l.center + l.half_u + l.half_v - x), c3 = normalize(l.center - l.half_u + l.half_v - x);

@@ -10,8 +10,9 @@
 // core/reference/bodies for the droplets and clouds). A photon that meets an object adds
 // its power where it reaches the floor and subtracts it where its straight line would have
 // reached it, so the map is exact far from the objects and its noise stays near them.
-// Rising and big bubbles are ignored (the head is taken without its big bubbles), as are a
-// hot blob's own glow and light the head scatters. The picture's twin reads the map as a
+// Rising and big bubbles are ignored (the head is taken without its big bubbles), as is
+// light the head scatters; a hot blob's own glow is not traced here (the picture adds it
+// as a sphere's light: core/pointcloud/glow_light). The picture's twin reads the map as a
 // texture: shaders/lib/environment/floor_light.glsl.
 #pragma once
 

@@ -55,21 +55,23 @@ bool AreaLight::intersect(const glm::dvec3& o, const glm::dvec3& d, double tmin,
          std::fabs(glm::dot(q, half_v)) <= glm::dot(half_v, half_v);
 }
 
+double sphere_irradiance_factor(const glm::dvec3& center, double radius, const glm::dvec3& x, const glm::dvec3& n) {
+  // Snyder, "Area light sources for real-time graphics" (1996): a sphere of angular
+  // radius sigma at angle theta from the normal, clipped by the horizon.
+  const glm::dvec3 w = center - x;
+  const double d2 = glm::dot(w, w);
+  if (d2 <= radius * radius) return kPi;
+  const double sin2 = radius * radius / d2, cos_t = glm::dot(n, w) / std::sqrt(d2);
+  if (cos_t * cos_t > sin2) return kPi * sin2 * std::max(cos_t, 0.0);
+  const double sin_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t));
+  const double xx = std::sqrt(1 / sin2 - 1);
+  const double y = std::clamp(-xx * cos_t / std::max(sin_t, 1e-12), -1.0, 1.0);
+  const double s = sin_t * std::sqrt(1 - y * y);
+  return std::max(0.0, (cos_t * std::acos(y) - xx * s) * sin2 + std::atan(s / xx));
+}
+
 double AreaLight::irradiance_factor(const glm::dvec3& x, const glm::dvec3& n) const {
-  if (shape == LightShape::Sphere) {
-    // Snyder, "Area light sources for real-time graphics" (1996): a sphere of angular
-    // radius sigma at angle theta from the normal, clipped by the horizon.
-    const glm::dvec3 w = center - x;
-    const double d2 = glm::dot(w, w);
-    if (d2 <= radius * radius) return kPi;
-    const double sin2 = radius * radius / d2, cos_t = glm::dot(n, w) / std::sqrt(d2);
-    if (cos_t * cos_t > sin2) return kPi * sin2 * std::max(cos_t, 0.0);
-    const double sin_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t));
-    const double xx = std::sqrt(1 / sin2 - 1);
-    const double y = std::clamp(-xx * cos_t / std::max(sin_t, 1e-12), -1.0, 1.0);
-    const double s = sin_t * std::sqrt(1 - y * y);
-    return std::max(0.0, (cos_t * std::acos(y) - xx * s) * sin2 + std::atan(s / xx));
-  }
+  if (shape == LightShape::Sphere) return sphere_irradiance_factor(center, radius, x, n);
   if (glm::dot(x - center, normal) <= 0) return 0;  // behind the softbox
   // The rect's corners seen from x, clipped to the surface's upper hemisphere
   // (Sutherland-Hodgman against the plane n . v = 0).

@@ -54,6 +54,12 @@ struct AreaLight {
   void sample_point(double u1, double u2, glm::dvec3& p, glm::dvec3& n) const;
 };
 
+// The irradiance a sphere of unit radiance gives point x of a surface of unit normal n
+// (Snyder's formula, the horizon included; pi inside the sphere): AreaLight's for a
+// sphere, and a hot cloud's glow (core/pointcloud/glow_light). Twin of
+// sphere_irradiance_factor in shaders/lib/environment/lights.glsl.
+double sphere_irradiance_factor(const glm::dvec3& center, double radius, const glm::dvec3& x, const glm::dvec3& n);
+
 // The light of one row group (light, strips, backlight) placed around the scene's centre
 // `aim`: `distance` along `direction`, facing `aim`, its width level (a rect's height runs
 // up the world's y as far as its tilt allows). `mirror_x` mirrors it across x = aim.x.

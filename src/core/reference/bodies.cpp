@@ -2,8 +2,8 @@
 
 #include "core/droplets/field.hpp"
 #include "core/math/random.hpp"
-#include "core/pointcloud/blackbody.hpp"
 #include "core/pointcloud/cloud_object.hpp"
+#include "core/pointcloud/glow_light.hpp"
 #include "core/reference/optics.hpp"
 
 #include <algorithm>
@@ -14,13 +14,6 @@ namespace draught {
 namespace {
 
 double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
-
-// A blackbody's radiance in cd/m^2 of luminance, as the picture's table gives it.
-glm::dvec3 glow_table(double kelvin) {
-  static const std::vector<glm::vec4> table =
-      blackbody_table(contract::kBlackbodyEntries, contract::kBlackbodyMinK, contract::kBlackbodyMaxK);
-  return blackbody_table_lookup(table, contract::kBlackbodyMinK, contract::kBlackbodyMaxK, kelvin);
-}
 
 }  // namespace
 
@@ -85,8 +78,7 @@ void MarchedBodies::chord(MediumKind medium, int obj, double t, double kelvin, g
   }
   const CloudFrame& cf = frame_.clouds[size_t(obj)];
   if (!(kelvin > 0)) kelvin = cf.temperature;
-  const double kappa =
-      cf.glow_depth > 0 ? std::clamp((kelvin - 700.0) / 400.0, 0.0, 1.0) / double(cf.glow_depth) : 0.0;
+  const double kappa = hot_glass_extinction(kelvin, double(cf.glow_depth));
   const double hot = std::exp(-kappa * t);
   if (cf.glow > 0 && hot < 1) L += thr * (1 - hot) * double(cf.glow) * kGlowPerNit * glow_table(kelvin);
   thr *= glm::exp(-glm::dvec3(cf.absorption) * t) * hot;
