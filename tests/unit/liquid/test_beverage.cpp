@@ -196,7 +196,7 @@ TEST(Beverage, TheFirstColourGivenWins) {
 }
 
 TEST(Beverage, ShippedBeersDarkenWithTheirColour) {
-  // Lager (3.5 SRM) < hefeweizen (12 EBC) < amber ale (13 SRM) < stout (40 SRM).
+  // Lager (3.5 SRM) < hefeweizen (14 EBC) < amber ale (13 SRM) < stout (40 SRM).
   const glm::vec3 lager = liquid_absorption(drink("lager")), weizen = liquid_absorption(drink("hefeweizen")),
                   ale = liquid_absorption(drink("amber-ale")), stout = liquid_absorption(drink("stout"));
   EXPECT_GT(drink("hefeweizen").ebc, 0.0f);
