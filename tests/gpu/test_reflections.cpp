@@ -2,17 +2,22 @@
 // glass's surroundings rendered from its middle without it; reflections off a glass's
 // outside look there, so glasses mirror each other. Furnace: in an even world with
 // nothing that absorbs, the flight stays invisible with its panoramas on. A glass's
-// panorama shows its neighbours, not itself. Only the glasses change in the picture,
-// and the rate decides when the panoramas are drawn again.
+// panorama shows its neighbours, not itself, in the studio and in the AR view (a camera
+// picture as the background). Only the glasses change in the picture, and the rate
+// decides when the panoramas are drawn again.
 #include "color_difference.hpp"
 #include "gpu_fixture.hpp"
 
+#include "core/io/image.hpp"
 #include "gpu/reflection_panoramas.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+
+#include <unistd.h>
 
 namespace draught::test {
 namespace {
@@ -95,6 +100,55 @@ TEST(ReflectionPanoramas, AGlassSeesItsNeighboursNotItself) {
   EXPECT_LT(ale.b, 0.7f * studio.b);        // darker than the white studio there
   const glm::vec3 a = panorama_at(p, with_others, away), b = panorama_at(p, by_itself, away);
   EXPECT_NEAR(a.g, b.g, 0.03f * b.g + 1e-3f);
+}
+
+TEST(ReflectionPanoramas, InTheARViewTheGlassesMirrorEachOtherToo) {
+  // screen.mode=background: a phone's camera picture is the whole background, no floor.
+  // The pilsner's panorama still shows the amber ale beside it, and away from the row the
+  // same surroundings as the pilsner's alone (the picture, read where the AR view reads
+  // that direction).
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("draught-gpu-ar-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  Image pic{16, 9, std::vector<std::uint8_t>(16 * 9 * 4, 255)};
+  for (int y = 0; y < 9; ++y)
+    for (int x = 0; x < 16; ++x) {
+      std::uint8_t* q = pic.px(x, y);
+      q[0] = std::uint8_t(90 + 5 * x), q[1] = 160, q[2] = std::uint8_t(120 + 10 * y);
+    }
+  write_png(dir / "camera.png", pic);
+  Gpu& g = gpu_instance();
+  const std::vector<std::string> ar = {"screen.mode=background", "screen.source=" + (dir / "camera.png").string()};
+  Scene flight = flight_scene(FlightView::StraightOn, with_reflections(ar, true));
+  const FrameState all = make_frame(flight);
+  const Image with_panoramas = g.renderer->render(all, 64, 48);
+  const gpu::ReflectionPanoramas& p = g.renderer->reflection_panoramas();
+  ASSERT_EQ(p.layers(), 4);
+  const std::vector<float> with_others = p.read(0);
+  for (float v : with_others) ASSERT_TRUE(std::isfinite(v));
+  Scene alone = flight;
+  alone.objects.resize(1);
+  g.renderer->render(make_frame(alone), 64, 48);
+  const std::vector<float> by_itself = p.read(0);
+  const glm::dvec3 towards_ale(1, -0.05, 0), away(-1, 0.1, 0.6);
+  const glm::vec3 ale = panorama_at(p, with_others, towards_ale), open = panorama_at(p, by_itself, towards_ale);
+  const glm::vec3 a = panorama_at(p, with_others, away), b = panorama_at(p, by_itself, away);
+  std::printf("AR: towards the ale (%.3f %.3f %.3f), alone (%.3f %.3f %.3f); away (%.3f %.3f %.3f), alone (%.3f %.3f %.3f)\n",
+              ale.r, ale.g, ale.b, open.r, open.g, open.b, a.r, a.g, a.b, b.r, b.g, b.b);
+  // The ale is there: a dark drink against the picture, as in the AR view itself (an amber
+  // drink absorbs the picture's blue-green behind it).
+  EXPECT_LT(ale.g, 0.5f * open.g);
+  EXPECT_GT(ale.r, ale.g);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(a[k], b[k], 0.03f * b[k] + 1e-3f);
+  // And the picture differs from the same view without panoramas only on the glasses'
+  // outsides (the background is the camera's picture either way).
+  const Image without = g.renderer->render(make_frame(flight_scene(FlightView::StraightOn, with_reflections(ar, false))), 64, 48);
+  int changed = 0;
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 64; ++x)
+      for (int c = 0; c < 3; ++c) changed += std::abs(int(with_panoramas.px(x, y)[c]) - int(without.px(x, y)[c])) > 8;
+  EXPECT_GT(changed, 0);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(ReflectionPanoramas, OnlyTheGlassesChangeAndTheyMirrorEachOther) {
