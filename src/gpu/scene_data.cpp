@@ -1,6 +1,5 @@
 #include "gpu/scene_data.hpp"
 
-#include "core/pointcloud/blackbody.hpp"
 #include "core/pointcloud/glow_light.hpp"
 
 #include "core/foam/head_volume.hpp"
@@ -123,8 +122,7 @@ bool has_head(const VesselFrame& v) { return v.has_liquid && v.foam.thickness > 
 
 void pack_clouds(const FrameState& f, const CloudScene& clouds, contract::FrameBlock& b) {
   // The glow's table: the same for every frame (the shader interpolates it in 1/T).
-  static const std::vector<glm::vec4> table =
-      blackbody_table(contract::kBlackbodyEntries, contract::kBlackbodyMinK, contract::kBlackbodyMaxK);
+  const std::vector<glm::vec4>& table = picture_blackbody_table();
   for (int i = 0; i < contract::kBlackbodyEntries; ++i) b.blackbody[i] = table[size_t(i)];
   const std::vector<CloudRange>& ranges = clouds.ranges();
   b.cloud_count = int(std::min({f.clouds.size(), ranges.size(), size_t(contract::kMaxClouds)}));

@@ -2,6 +2,7 @@
 // the gob held low over the marver (presets/scenes/gob-marver.json) lights the floor under
 // it as the reference path tracer finds it, where paths from the floor meet the glowing
 // body; a gob without glow leaves the floor as the rig alone lights it.
+#include "color_difference.hpp"
 #include "gpu_fixture.hpp"
 
 #include "core/pointcloud/glow_light.hpp"
@@ -9,19 +10,14 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <cstdio>
 
 namespace draught::test {
 namespace {
 
-double linear(std::uint8_t v) {
-  const double c = v / 255.0;
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
 double pixel_linear(const Image& img, int x, int y) {
   const std::uint8_t* p = img.px(x, y);
-  return (linear(p[0]) + linear(p[1]) + linear(p[2])) / 3.0;
+  return (srgb8_to_linear(p[0]) + srgb8_to_linear(p[1]) + srgb8_to_linear(p[2])) / 3.0;
 }
 
 TEST(CloudGlow, TheFloorUnderAHotGobIsLitAsTheReferenceFindsIt) {

@@ -9,10 +9,14 @@
 
 namespace draught {
 
-glm::dvec3 glow_table(double kelvin) {
+const std::vector<glm::vec4>& picture_blackbody_table() {
   static const std::vector<glm::vec4> table =
       blackbody_table(contract::kBlackbodyEntries, contract::kBlackbodyMinK, contract::kBlackbodyMaxK);
-  return blackbody_table_lookup(table, contract::kBlackbodyMinK, contract::kBlackbodyMaxK, kelvin);
+  return table;
+}
+
+glm::dvec3 glow_table(double kelvin) {
+  return blackbody_table_lookup(picture_blackbody_table(), contract::kBlackbodyMinK, contract::kBlackbodyMaxK, kelvin);
 }
 
 double hot_glass_extinction(double kelvin, double glow_depth) {

@@ -10,6 +10,8 @@
 
 #include <glm/glm.hpp>
 
+#include <vector>
+
 namespace draught {
 
 struct GlowSphere {
@@ -19,8 +21,11 @@ struct GlowSphere {
   bool empty() const { return !(radius > 0) || !(radiance.x + radiance.y + radiance.z > 0); }
 };
 
-// The blackbody's radiance in cd/m^2 of luminance at `kelvin`, as the picture's table
-// (the Frame block's blackbody) gives it: blackbody_table_lookup of that table.
+// The picture's blackbody table (the Frame block's `blackbody`: contract::kBlackbodyEntries
+// from kBlackbodyMinK to kBlackbodyMaxK), built once.
+const std::vector<glm::vec4>& picture_blackbody_table();
+// The blackbody's radiance in cd/m^2 of luminance at `kelvin`, as that table gives it
+// (blackbody_table_lookup, what the shader does).
 glm::dvec3 glow_table(double kelvin);
 // Hot glass's visible extinction (1/m) at `kelvin`: 0 at 700 K rising to 1 / glow_depth
 // at 1100 K and above (0 without a glow depth). Twin of the shader's (lib/pointcloud).
