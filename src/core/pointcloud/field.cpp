@@ -208,15 +208,16 @@ float box_entry(glm::vec3 lo, glm::vec3 hi, glm::vec3 o, glm::vec3 inv, float tm
 }
 
 // One point's share: adds its kernel (and gradient) at p; returns the kernel.
-float add_point(glm::vec4 c, glm::vec3 p, CloudSample& s) {
-  const glm::vec3 q = p - glm::vec3(c);
-  const float inv_r2 = 1.0f / (c.w * c.w), u = glm::dot(q, q) * inv_r2;
+float add_point(glm::vec3 centre, float inv_r2, glm::vec3 p, CloudSample& s) {
+  const glm::vec3 q = p - centre;
+  const float u = glm::dot(q, q) * inv_r2;
   if (u >= 1.0f) return 0.0f;
   const float w = 1.0f - u;
   s.f += w * w * w;
   s.grad += (-6.0f * w * w * inv_r2) * q;
   return w * w * w;
 }
+float add_point(glm::vec4 c, glm::vec3 p, CloudSample& s) { return add_point(glm::vec3(c), 1.0f / (c.w * c.w), p, s); }
 
 // The span of o + t d (d unit) in point c's support; false when it misses.
 bool support_span(glm::vec4 c, glm::vec3 o, glm::vec3 d, float& t0, float& t1) {
@@ -233,7 +234,8 @@ bool support_span(glm::vec4 c, glm::vec3 o, glm::vec3 d, float& t0, float& t1) {
 struct TreeQueries {
   const CloudTexels& tx;
   const CloudRef& c;
-  CloudSample field(glm::vec3 p, glm::vec4* attrs) const {
+  void focus(float, float) const {}
+  CloudSample field(glm::vec3 p, float /*t on the march's ray*/, glm::vec4* attrs) const {
     CloudSample s;
     glm::vec4 a(0.0f);
     int stack[kCloudMaxDepth + 1];
@@ -302,11 +304,94 @@ struct TreeQueries {
   }
 };
 
+// Queries along one ray through the tree. The supports that cross a window of the ray
+// (kWindowSteps steps) are gathered by one traversal of the tree against the window's
+// segment, with their spans on the ray; the march focuses on one step at a time, and the
+// samples in that step (its end, a dip, the bisections) sum the window's supports whose
+// spans overlap the step. A support that holds a sample point crosses the window and the
+// step, and the gather walks the leaves in the point query's order, so a sample sums the
+// same points in the same order as TreeQueries::field (the GLSL twin's per-sample query)
+// and gets the same value: what is saved is the traversals, one per window instead of
+// one per sample.
+struct TreeRayQueries {
+  static constexpr float kWindowSteps = 4.0f;
+  struct Span {
+    int i;
+    float t0, t1;
+  };
+  const CloudTexels& tx;
+  const CloudRef& c;
+  glm::vec3 o, d, inv;
+  float pad;  // a thousandth of a step: rounding in the spans cannot drop a support
+  mutable float wa = INFINITY, wb = -INFINITY, fa = INFINITY, fb = -INFINITY;
+  struct Focused {
+    glm::vec3 centre;
+    float inv_r2;  // as add_point takes it
+    int i;
+  };
+  mutable std::vector<Span> window;
+  mutable std::vector<Focused> focused;
+  TreeRayQueries(const CloudTexels& t, const CloudRef& r, glm::vec3 o_, glm::vec3 d_)
+      : tx(t), c(r), o(o_), d(d_), inv(1.0f / d_), pad(1e-3f * kCloudStepFraction * r.min_support) {}
+
+  void gather(float a, float b) const {
+    window.clear();
+    wa = a;
+    wb = b;
+    const float pa = a - pad, pb = b + pad;
+    int stack[kCloudMaxDepth + 1];
+    int sp = 0;
+    stack[sp++] = c.root;
+    while (sp > 0) {
+      const int n = stack[--sp];
+      const NodeTexels nd = node_texels(tx, n);
+      if (box_entry(nd.a, nd.b, o, inv, pa, pb) == INFINITY) continue;
+      const int index = int(nd.a.w), count = int(nd.b.w);
+      if (count > 0) {
+        for (int i = index; i < index + count; ++i) {
+          float t0, t1;
+          if (support_span(point_texel(tx, i), o, d, t0, t1) && t1 >= pa && t0 <= pb) window.push_back({i, t0, t1});
+        }
+      } else {
+        stack[sp++] = index;
+        stack[sp++] = n + 1;
+      }
+    }
+  }
+  // The samples to come lie in [a, b].
+  void focus(float a, float b) const {
+    if (!(a >= wa && b <= wb)) gather(a, std::max(b, a + kWindowSteps * kCloudStepFraction * c.min_support));
+    fa = a;
+    fb = b;
+    focused.clear();
+    for (const Span& s : window)
+      if (s.t1 >= a - pad && s.t0 <= b + pad) {
+        const glm::vec4 c4 = point_texel(tx, s.i);
+        focused.push_back({glm::vec3(c4), 1.0f / (c4.w * c4.w), s.i});
+      }
+  }
+  CloudSample field(glm::vec3 p, float t, glm::vec4* attrs) const {
+    if (!(t >= fa && t <= fb)) focus(t, t);
+    CloudSample s;
+    glm::vec4 a(0.0f);
+    for (const Focused& f : focused) {
+      const float k = add_point(f.centre, f.inv_r2, p, s);
+      if (attrs && k > 0.0f) a += k * attr_texel(tx, f.i);
+    }
+    if (attrs) *attrs = s.f > 0.0f ? a / s.f : glm::vec4(0.0f);
+    return s;
+  }
+  float next_entry(glm::vec3 o_, glm::vec3 d_, float tmin, float limit) const {
+    return TreeQueries{tx, c}.next_entry(o_, d_, tmin, limit);
+  }
+};
+
 // Queries by looping over every point of the cloud (the benchmark's baseline).
 struct AllPointQueries {
   const CloudTexels& tx;
   const CloudRange& range;
-  CloudSample field(glm::vec3 p, glm::vec4* attrs) const {
+  void focus(float, float) const {}
+  CloudSample field(glm::vec3 p, float /*t on the march's ray*/, glm::vec4* attrs) const {
     CloudSample s;
     glm::vec4 a(0.0f);
     for (int i = range.first_point; i < range.first_point + range.point_count; ++i) {
@@ -369,7 +454,7 @@ std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::v
   const float h = kCloudStepFraction * c.min_support, sgn = inside ? -1.0f : 1.0f;
   CloudHit hit;
   auto sample = [&](float t, float& slope) {
-    const CloudSample s = q.field(o + t * d, nullptr);
+    const CloudSample s = q.field(o + t * d, t, nullptr);
     ++hit.queries;
     slope = sgn * -glm::dot(s.grad, d);
     return s.f == 0.0f && !inside ? INFINITY : sgn * (c.threshold - s.f);  // INFINITY: in no support
@@ -391,6 +476,7 @@ std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::v
       slope = 0.0f;
     }
     const float next = std::min(t + h, t1);
+    q.focus(t, next);  // this step's samples lie in [t, next]
     float sn;
     float gn = sample(next, sn);
     const float gv = gn == INFINITY ? c.threshold : gn;
@@ -429,7 +515,7 @@ std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::v
     // budget): the path leaves where it is, straight on, rather than being lost inside.
     hit.t = t;
     glm::vec4 attrs;
-    q.field(o + hit.t * d, &attrs);
+    q.field(o + hit.t * d, hit.t, &attrs);
     hit.n = -d;
     hit.attrs = attrs;
     return hit;
@@ -441,7 +527,7 @@ std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::v
   // would cross back at once).
   hit.t = ga - gb > 0.0f ? std::clamp(a + (b - a) * (ga / (ga - gb)), a, b) : b;
   glm::vec4 attrs;
-  const CloudSample s = q.field(o + hit.t * d, &attrs);
+  const CloudSample s = q.field(o + hit.t * d, hit.t, &attrs);
   ++hit.queries;
   hit.n = glm::length(s.grad) > 0.0f ? -glm::normalize(s.grad) : glm::vec3(0.0f);
   hit.attrs = attrs;
@@ -454,13 +540,13 @@ CloudRef cloud_ref(const CloudRange& r, float threshold) { return {r.root, thres
 
 CloudSample cloud_field(const CloudTexels& tx, const CloudRef& c, glm::vec3 p) {
   if (c.root < 0) return {};
-  return TreeQueries{tx, c}.field(p, nullptr);
+  return TreeQueries{tx, c}.field(p, 0.0f, nullptr);
 }
 
 glm::vec4 cloud_attrs(const CloudTexels& tx, const CloudRef& c, glm::vec3 p) {
   if (c.root < 0) return glm::vec4(0.0f);
   glm::vec4 a;
-  TreeQueries{tx, c}.field(p, &a);
+  TreeQueries{tx, c}.field(p, 0.0f, &a);
   return a;
 }
 
@@ -496,7 +582,7 @@ std::vector<int> cloud_supports_crossed(const CloudTexels& tx, const CloudRef& c
 
 std::optional<CloudHit> march_cloud(const CloudTexels& tx, const CloudRef& c, glm::vec3 o, glm::vec3 d, float tmin,
                                     float tmax, bool inside) {
-  return march(TreeQueries{tx, c}, c, o, d, tmin, tmax, inside);
+  return march(TreeRayQueries{tx, c, o, d}, c, o, d, tmin, tmax, inside);
 }
 
 std::optional<CloudHit> march_cloud_all_points(const CloudTexels& tx, const CloudRef& c, const CloudRange& range,

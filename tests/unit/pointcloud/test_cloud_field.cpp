@@ -136,6 +136,31 @@ TEST(PointCloudField, SparsePointsToo) {
   EXPECT_GT(s.hits, 300);
 }
 
+// The march through the tree gathers each window's supports once and sums them per
+// sample; the all-points loop sums every point per sample: the same hits.
+TEST(PointCloudField, WindowedMarchEqualsTheAllPointsLoop) {
+  const Prepared p = prepare(blob(1500, 0.004f, kCentre, 6), 4);
+  const CloudRef ref = cloud_ref(p.range);
+  std::mt19937 rng(41);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  int hits = 0;
+  for (int k = 0; k < 1000; ++k) {
+    const glm::vec3 d = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)));
+    const bool inside = k % 4 == 0;
+    const glm::vec3 o = inside ? kCentre + 0.005f * glm::vec3(u(rng), u(rng), u(rng))
+                               : kCentre + 0.03f * glm::vec3(u(rng), u(rng), u(rng)) - 0.2f * d;
+    const auto a = march_cloud(p.tx, ref, o, d, 0.0f, 1.0f, inside);
+    const auto b = march_cloud_all_points(p.tx, ref, p.range, o, d, 0.0f, 1.0f, inside);
+    ASSERT_EQ(bool(a), bool(b)) << "ray " << k;
+    if (!a) continue;
+    ++hits;
+    EXPECT_LE(std::abs(a->t - b->t), 1e-6f) << "ray " << k;
+    EXPECT_GE(glm::dot(a->n, b->n), 0.99999f) << "ray " << k;
+    EXPECT_EQ(a->steps, b->steps) << "ray " << k;
+  }
+  EXPECT_GT(hits, 400);
+}
+
 // The same points built with other leaf sizes and in shuffled order: the same hits.
 TEST(PointCloudField, IndependentOfTheTree) {
   const PointCloud c = blob(1500, 0.004f, kCentre, 5);
