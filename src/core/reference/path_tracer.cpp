@@ -263,6 +263,15 @@ class Tracer {
         // [0, 1) for Fresnel's choice; from the air, u >= F already refracts.
         if (medium != MediumKind::Air) u = (u - share) / std::max(1 - share, 1e-12);
       }
+      if (u >= F && h.m == Material::GlassBottom && on_floor(p)) {
+        // Out through a foot's underside where it stands on the floor: the path meets the
+        // floor at once (its intersection lies within kEps, so the search would miss it).
+        if (!floor_under_foot(p, m.ior(MediumKind::Glass), thr, ray, rng)) break;
+        if (!roulette(thr, surfaces + scatters, rng)) break;
+        sees_lights = false;
+        mis.pdf = -1;
+        continue;
+      }
       sees_lights = fresnel_turn(ray, n, n1, n2, F, u, next, h.object, medium, obj);
       mis.pdf = -1;
     }
@@ -372,6 +381,37 @@ class Tracer {
       }
     }
     return e;
+  }
+
+  // Whether p lies on the floor (a foot's underside standing on it).
+  bool on_floor(const glm::dvec3& p) const {
+    if (!geo_.backdrop.present || !(std::fabs(p.y) < 1e-6)) return false;
+    double t;
+    glm::dvec3 n;
+    return geo_.backdrop.intersect(p + glm::dvec3(0.0, 1e-4, 0.0), glm::dvec3(0.0, -1.0, 0.0), 0.0, t, n) &&
+           n.y > 0.999 && t < 2e-4;
+  }
+
+  // A path that left a glass through its foot's underside onto the floor at p (Lambertian,
+  // the thin air between them): it bounces off the floor, and back off the underside by
+  // Fresnel's choice, until it crosses into the foot again (ray: up into the glass, still
+  // in the glass it came from). No light is sampled there: the glass above blocks every
+  // light's straight way (visibility), so their light arrives along the paths. The
+  // photons of the floor's light map land the same way (core/environment/floor_light).
+  // False when the path ends there (its light spent).
+  bool floor_under_foot(const glm::dvec3& p, double glass_ior, glm::dvec3& thr, Ray& ray, Rng& rng) const {
+    const glm::dvec3 up(0.0, 1.0, 0.0), albedo = geo_.backdrop.albedo(p);
+    for (int bounce = 0; bounce < 64; ++bounce) {
+      thr *= albedo;  // cosine-weighted bounce: albedo / pi x cos / pdf = albedo
+      if (!(std::max({thr.x, thr.y, thr.z}) > 1e-6)) return false;
+      const double cos_t = std::sqrt(rng.uniform());
+      const glm::dvec3 d = around(up, cos_t, 2 * kPi * rng.uniform());
+      if (rng.uniform() < fresnel_dielectric(cos_t, 1.0, glass_ior)) continue;  // back to the floor
+      ray.o = p;
+      ray.d = glm::normalize(*refract_dir(d, -up, 1.0 / glass_ior));
+      return true;
+    }
+    return false;
   }
 
   // The nearest light front along the ray before `t` (updated), or -1.

@@ -216,6 +216,34 @@ TEST(ReferencePathTracer, ASphereLightGivesTheFloorItsIrradiance) {
   expect_floor_irradiance(int(LightShape::Sphere), {0.6f, 0.5f, 0.2f}, 0.4f);
 }
 
+// The floor seen straight down through an empty pint's thick base, in even light: a path
+// leaves the base's underside onto the floor it stands on (within a hair of it, where a
+// search from that point finds nothing), so it sees the floor (albedo 0.5, lit by the sky
+// through the non-absorbing glass: half the sky's radiance), not the sky below it (the
+// whole radiance: 2x).
+TEST(ReferencePathTracer, TheFloorIsSeenThroughAFootStandingOnIt) {
+  Params p = furnace_params();
+  p.liquid.fill = 0;
+  p.env.floor = true;
+  p.env.backdrop = int(Backdrop::Checker);
+  p.env.floor_a = p.env.floor_b = glm::vec3(0.5f);
+  p.env.ground = kEnv;
+  p.camera.auto_frame = false;
+  p.camera.eye = {0.0f, 0.4f, 0.001f};
+  p.camera.target = {0.0f, 0.0f, 0.0f};  // down the empty glass, through its base
+  p.camera.vfov = 5;
+  ReferenceSettings s;
+  s.samples = 400;
+  s.threads = 2;
+  s.max_surfaces = 1024;
+  const RadianceImage img = render_reference(make_frame(p), 2, 2, s);
+  glm::dvec3 mean(0.0);
+  for (const glm::dvec3& c : img.pixels) mean += c / double(img.pixels.size());
+  // (The checker's fade into the ground with distance, a guard against aliasing at the
+  // horizon, is not applied under a foot.)
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(mean[i], 0.5 * kEnv[i], 0.05 * kEnv[i]) << "channel " << i;
+}
+
 // A light seen directly shows its radiance; from behind, a softbox is not seen.
 TEST(ReferencePathTracer, ALightSeenDirectlyHasItsRadiance) {
   Params p = furnace_params();
