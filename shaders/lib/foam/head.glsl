@@ -106,13 +106,27 @@ struct HeadLight {
   vec3 top_key;
 };
 
+// The part of a light's irradiance on a face (falling at cosine mu0) that the single
+// scattering term (head_source's `single`) sends back out through that face, in a
+// half-space of white foam: its exitance 2 pi a E integral of p(theta) mu / (mu0 + mu) dmu
+// over the outgoing hemisphere, over E. For isotropic scattering exactly
+// (1 - mu0 ln(1 + 1/mu0)) / 2 (0.153 at normal incidence, 1/2 at grazing); for g != 0 that
+// times Henyey-Greenstein's backward share over isotropic's 1/2 (an approximation; every
+// preset has g = 0). The diffusion's face takes the light less this part: a white head
+// under a light then sends back what it receives, not that and its single scattering too.
+float single_exitance(float mu0, float g) {
+  if (mu0 <= 0.0) return 0.0;
+  float back = abs(g) < 1e-3 ? 0.5 : (1.0 - g) / (2.0 * g) * ((1.0 + g) / sqrt(1.0 + g * g) - 1.0);
+  return (1.0 - mu0 * log(1.0 + 1.0 / mu0)) * back;
+}
+
 // The light along a ray of direction d (local) through the head.
 void head_along(inout HeadLight h, Vessel v, ObjectFoam f, vec3 d) {
   h.top_key = vec3(0.0);
   for (int i = 0; i < MAX_LIGHTS; ++i) {
     h.key_phase[i] = h.key[i] * hg_phase(dot(h.l[i], d), f.anisotropy);
     h.cos_top[i] = dot(v.liquid.plane_normal, h.l[i]);
-    h.top_key += h.key[i] * max(h.cos_top[i], 0.0);
+    h.top_key += h.key[i] * max(h.cos_top[i], 0.0) * (1.0 - single_exitance(h.cos_top[i], f.anisotropy));
   }
 }
 
@@ -192,7 +206,7 @@ vec3 head_source(Vessel v, ObjectFoam f, HeadLight h, vec3 d, vec3 p, float heig
     float cos_t = h.cos_top[i], cos_s = dot(across, h.l[i].xz);
     float direct = max(cos_t > 0.0 ? exp(-tau_t / cos_t) : 0.0, cos_s > 0.0 ? h.wall * exp(-tau_s / cos_s) : 0.0);
     single += h.key_phase[i] * direct;
-    side_key += h.key[i] * max(cos_s, 0.0);
+    side_key += h.key[i] * max(cos_s, 0.0) * (1.0 - single_exitance(cos_s, f.anisotropy));
   }
   // Diffusion between the faces: each face's incoming radiance (a light's irradiance
   // counted as a diffuse pi L) held at its extrapolated boundary, the field the sum of
