@@ -230,6 +230,41 @@ bool support_span(glm::vec4 c, glm::vec3 o, glm::vec3 d, float& t0, float& t1) {
   return true;
 }
 
+// Depth first through the tree from `root`, in the shader's order (a node's first child,
+// n + 1, before its second): `enter(node)` decides whether to go into a node, `leaf(i)`
+// sees each point texel of the leaves entered.
+template <class Enter, class Leaf>
+void walk_tree(const CloudTexels& tx, int root, Enter enter, Leaf leaf) {
+  int stack[kCloudMaxDepth + 1];
+  int sp = 0;
+  stack[sp++] = root;
+  while (sp > 0) {
+    const int n = stack[--sp];
+    const NodeTexels nd = node_texels(tx, n);
+    if (!enter(nd)) continue;
+    const int index = int(nd.a.w), count = int(nd.b.w);
+    if (count > 0) {
+      for (int i = index; i < index + count; ++i) leaf(i);
+    } else {
+      stack[sp++] = index;
+      stack[sp++] = n + 1;
+    }
+  }
+}
+
+// Each point whose support the segment [a, b] of o + t d (d unit, inv = 1 / d) crosses:
+// found(i, t0, t1), its span on the ray.
+template <class Found>
+void supports_on_segment(const CloudTexels& tx, int root, glm::vec3 o, glm::vec3 d, glm::vec3 inv, float a, float b,
+                         Found found) {
+  walk_tree(
+      tx, root, [&](const NodeTexels& nd) { return box_entry(nd.a, nd.b, o, inv, a, b) != INFINITY; },
+      [&](int i) {
+        float t0, t1;
+        if (support_span(point_texel(tx, i), o, d, t0, t1) && t1 >= a && t0 <= b) found(i, t0, t1);
+      });
+}
+
 // Queries through the tree (the shader's way).
 struct TreeQueries {
   const CloudTexels& tx;
@@ -238,24 +273,12 @@ struct TreeQueries {
   CloudSample field(glm::vec3 p, float /*t on the march's ray*/, glm::vec4* attrs) const {
     CloudSample s;
     glm::vec4 a(0.0f);
-    int stack[kCloudMaxDepth + 1];
-    int sp = 0;
-    stack[sp++] = c.root;
-    while (sp > 0) {
-      const int n = stack[--sp];
-      const NodeTexels nd = node_texels(tx, n);
-      if (!in_box(nd, p)) continue;
-      const int index = int(nd.a.w), count = int(nd.b.w);
-      if (count > 0) {
-        for (int i = index; i < index + count; ++i) {
+    walk_tree(
+        tx, c.root, [&](const NodeTexels& nd) { return in_box(nd, p); },
+        [&](int i) {
           const float k = add_point(point_texel(tx, i), p, s);
           if (attrs && k > 0.0f) a += k * attr_texel(tx, i);
-        }
-      } else {
-        stack[sp++] = index;
-        stack[sp++] = n + 1;
-      }
-    }
+        });
     if (attrs) *attrs = s.f > 0.0f ? a / s.f : glm::vec4(0.0f);
     return s;
   }
@@ -338,25 +361,8 @@ struct TreeRayQueries {
     window.clear();
     wa = a;
     wb = b;
-    const float pa = a - pad, pb = b + pad;
-    int stack[kCloudMaxDepth + 1];
-    int sp = 0;
-    stack[sp++] = c.root;
-    while (sp > 0) {
-      const int n = stack[--sp];
-      const NodeTexels nd = node_texels(tx, n);
-      if (box_entry(nd.a, nd.b, o, inv, pa, pb) == INFINITY) continue;
-      const int index = int(nd.a.w), count = int(nd.b.w);
-      if (count > 0) {
-        for (int i = index; i < index + count; ++i) {
-          float t0, t1;
-          if (support_span(point_texel(tx, i), o, d, t0, t1) && t1 >= pa && t0 <= pb) window.push_back({i, t0, t1});
-        }
-      } else {
-        stack[sp++] = index;
-        stack[sp++] = n + 1;
-      }
-    }
+    supports_on_segment(tx, c.root, o, d, inv, a - pad, b + pad,
+                        [&](int i, float t0, float t1) { window.push_back({i, t0, t1}); });
   }
   // The samples to come lie in [a, b].
   void focus(float a, float b) const {
@@ -559,24 +565,7 @@ std::vector<int> cloud_supports_crossed(const CloudTexels& tx, const CloudRef& c
                                         float tmin, float tmax) {
   std::vector<int> out;
   if (c.root < 0) return out;
-  const glm::vec3 inv = 1.0f / d;
-  std::vector<int> stack{c.root};
-  while (!stack.empty()) {
-    const int n = stack.back();
-    stack.pop_back();
-    const NodeTexels nd = node_texels(tx, n);
-    if (box_entry(nd.a, nd.b, o, inv, tmin, tmax) == INFINITY) continue;
-    const int index = int(nd.a.w), count = int(nd.b.w);
-    if (count > 0) {
-      for (int i = index; i < index + count; ++i) {
-        float t0, t1;
-        if (support_span(point_texel(tx, i), o, d, t0, t1) && t1 >= tmin && t0 <= tmax) out.push_back(i);
-      }
-    } else {
-      stack.push_back(index);
-      stack.push_back(n + 1);
-    }
-  }
+  supports_on_segment(tx, c.root, o, d, 1.0f / d, tmin, tmax, [&](int i, float, float) { out.push_back(i); });
   return out;
 }
 
