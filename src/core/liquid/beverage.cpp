@@ -68,9 +68,9 @@ double beer_absorbance(double srm, double nm) {
   return srm / kSrmPerA430 * (0.02465 * std::exp(-x / 17.591) + 0.97535 * std::exp(-x / 82.122));
 }
 
-glm::vec3 srm_to_absorption(float srm) {
+glm::vec3 srm_to_absorption(float srm, double metres) {
   if (srm <= 0.0f) return glm::vec3(0.0f);
-  return spectrum_to_absorption([srm](double nm) { return beer_absorbance(srm, nm); });
+  return spectrum_to_absorption([srm](double nm) { return beer_absorbance(srm, nm); }, metres);
 }
 
 double wine_absorbance(const glm::vec3& a, double nm) {
@@ -84,15 +84,15 @@ double wine_absorbance(const glm::vec3& a, double nm) {
   return a[1] * std::exp(-x * x / two_s2);
 }
 
-glm::vec3 wine_to_absorption(const glm::vec3& a420_520_620) {
+glm::vec3 wine_to_absorption(const glm::vec3& a420_520_620, double metres) {
   if (a420_520_620 == glm::vec3(0.0f)) return glm::vec3(0.0f);
-  return spectrum_to_absorption([a420_520_620](double nm) { return wine_absorbance(a420_520_620, nm); });
+  return spectrum_to_absorption([a420_520_620](double nm) { return wine_absorbance(a420_520_620, nm); }, metres);
 }
 
-glm::vec3 liquid_absorption(const LiquidParams& l) {
-  if (l.ebc > 0) return srm_to_absorption(float(ebc_to_srm(l.ebc)));
-  if (l.srm > 0) return srm_to_absorption(l.srm);
-  if (l.wine.x > 0 || l.wine.y > 0 || l.wine.z > 0) return wine_to_absorption(l.wine);
+glm::vec3 liquid_absorption(const LiquidParams& l, double metres) {
+  if (l.ebc > 0) return srm_to_absorption(float(ebc_to_srm(l.ebc)), metres);
+  if (l.srm > 0) return srm_to_absorption(l.srm, metres);
+  if (l.wine.x > 0 || l.wine.y > 0 || l.wine.z > 0) return wine_to_absorption(l.wine, metres);
   return l.absorption;
 }
 

@@ -55,14 +55,17 @@ glm::vec3 spectrum_to_absorption(const std::function<double(double)>& absorbance
 double ebc_to_srm(double ebc);
 // deLange's average beer: absorbance of 1 cm at `nm` for a beer of this SRM.
 double beer_absorbance(double srm, double nm);
-glm::vec3 srm_to_absorption(float srm);
+glm::vec3 srm_to_absorption(float srm, double metres = kColourPathMetres);
 
 // A wine's absorbance of 1 cm at `nm` from its A420, A520, A620 (per cm).
 double wine_absorbance(const glm::vec3& a420_520_620, double nm);
-glm::vec3 wine_to_absorption(const glm::vec3& a420_520_620);
+glm::vec3 wine_to_absorption(const glm::vec3& a420_520_620, double metres = kColourPathMetres);
 
 // The absorption the renderer uses. The first colour given wins: liquid.ebc > 0, then
-// liquid.srm > 0, then liquid.wine (any absorbance > 0), else liquid.absorption.
-glm::vec3 liquid_absorption(const LiquidParams&);
+// liquid.srm > 0, then liquid.wine (any absorbance > 0), else liquid.absorption. Exact
+// at `metres` of the drink: a glassful's path by default; a thin stream of it passes
+// light over a path of its own thickness, where the glassful's coefficients would make a
+// red wine orange (its channels' spectra are far from flat).
+glm::vec3 liquid_absorption(const LiquidParams&, double metres = kColourPathMetres);
 
 }  // namespace draught

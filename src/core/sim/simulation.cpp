@@ -91,7 +91,6 @@ namespace {
 constexpr double kSpoutAboveRim = 0.12;    // m
 constexpr double kSpoutBehind = 0.35;      // of the rim's radius, towards -z
 constexpr double kSpoutSpeed = 0.12;       // m/s forwards (+z) as the liquid leaves the spout
-constexpr double kSpillSpeed = 0.15;       // m/s outwards as the drink leaves the rim
 std::uint64_t stream_version() {
   static std::uint64_t counter = std::uint64_t(1) << 40;  // apart from the cloud objects' versions
   return ++counter;
@@ -134,7 +133,10 @@ std::vector<CloudFrame> Simulation::streams() const {
     f.glow = 0;
     f.ior = params_.liquid.ior;
     f.roughness = params_.liquid.roughness;
-    f.absorption = liquid_absorption(params_.liquid);
+    // The drink's colour over the stream's own thickness: the mean chord of a round stream
+    // (pi/2 of its radius), which its blobs draw about 1.5 times as wide as continuity.
+    const double chord = std::clamp(0.5 * M_PI * 1.5 * (*s)->stream.rope_radius(), 1e-3, kColourPathMetres);
+    f.absorption = liquid_absorption(params_.liquid, chord);
     out.push_back(std::move(f));
   }
   return out;
@@ -169,9 +171,12 @@ void Simulation::step_streams(double dt, double spilled_before) {
   if (spill_) {
     GlassStream& s = *spill_;
     // The rim is lowest against the surface's normal, opposite its lean (glass frame).
-    const glm::dvec3 out(-std::cos(azimuth_), 0, -std::sin(azimuth_));
-    const glm::dvec3 lip = world(glm::dvec3(0, vessel_.height, 0) + (vessel_.rim_major + vessel_.rim_minor) * out);
-    s.stream.set_origin(lip, motion_.pose.orientation * (kSpillSpeed * out));
+    StreamLip lip;
+    lip.centre = world(glm::dvec3(0, vessel_.height, 0));
+    lip.up = glm::normalize(motion_.pose.orientation * glm::dvec3(0, 1, 0));
+    lip.outward = glm::normalize(motion_.pose.orientation * glm::dvec3(-std::cos(azimuth_), 0, -std::sin(azimuth_)));
+    lip.radius = vessel_.rim_major + vessel_.rim_minor;
+    s.stream.set_lip(lip);
     s.stream.set_flow(s.stream.time(), spilled / dt);
     s.stream.advance(dt);
     s.version = stream_version();
