@@ -104,6 +104,13 @@ void look_out(Look l, inout vec3 radiance, inout LitBackdrop lit) {
   float tb, tl;
   vec3 nb;
   bool on_backdrop = intersect(b, l.o, l.d, 0.0, tb, nb);
+  // A path out through a foot's or a base's underside starts on the floor, a rounding
+  // above or below it: it meets the floor there (as the reference's floor_under_foot).
+  if (b.present && !on_backdrop && l.d.y < 0.0 && abs(l.o.y) < 1e-5 && (b.plane || l.o.z >= b.z_curve)) {
+    on_backdrop = true;
+    tb = 0.0;
+    nb = vec3(0.0, 1.0, 0.0);
+  }
   vec4 light = lights_seen(l.o, l.d, l.rough, tb, tl);
 #if defined(SCREEN) && SCREEN == 2
   on_backdrop = false;  // (no floor in front of the picture)
