@@ -431,7 +431,11 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
       Look look;
       bool leaves = h.m == M_NONE;
       if (leaves) {
-        look = Look(path.o, path.d, path.thr, 0.0, path.medium == MEDIUM_AIR, false, -1);
+        // Out of events, a path in glass or a drink (held in a rim or a wall by total
+        // internal reflection) looks on along its ray at the backdrop too, not only at the
+        // sky: the studio's sky behind the sweep is dark, and rims came out as black rings
+        // where the reference shows a light one with the drink's colour in it.
+        look = Look(path.o, path.d, path.thr, 0.0, path.medium == MEDIUM_AIR || !in_events, false, -1);
         if (transparent) {
           float m = min(path.thr.r, min(path.thr.g, path.thr.b));
           see_through = m;
