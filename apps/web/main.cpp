@@ -275,12 +275,13 @@ EM_BOOL on_context_lost(int, const void*, void*) {
 }
 
 // The floor's shadows on the page: one thread (no workers), drafts while something moves,
-// a tenth of a still's photons once it holds still, in ten batches over as many frames (a
-// batch costs about a draft: no frame stalls on the whole).
+// a still's photons (the CLI's) once it holds still, in a hundred batches over as many
+// frames (a batch costs about a draft: no frame stalls on the whole; two seconds at 60
+// frames a second). With a tenth of them the page's floor stayed blotched with grey.
 void set_web_floor_light(gpu::Renderer& r) {
   FloorLightSettings s;
   s.threads = 1;
-  s.photons = kFloorPhotonsStill / 10;
+  s.photons = kFloorPhotonsStill;
   r.set_floor_light(s, true, kFloorPhotonsStill / 100);
   r.set_moving_drafts(true);  // the MatCap tier's background while things move
 }
