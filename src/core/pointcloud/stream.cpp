@@ -212,9 +212,11 @@ void PourStream::emit_over_lip(double t0, double t1, double q_max) {
   shape->close = p_.capillary > 0
                      ? std::pow(1.5 * sh.half_width / std::sqrt(2 * p_.capillary * p_.gravity / (d0 * v0)), 2.0 / 3.0)
                      : 1e9;
-  // Slices spaced as a spout's would be for one strip's share of the flow.
+  // Slices spaced as a spout's would be for the whole flow: where the sheet is open its
+  // strips are drawn at least 0.8 of their spacing across, wider than this along; once
+  // closed, the rope is the whole flow's.
   const double v_max = fastest_speed(v0, middle.y);
-  const double r_min = std::sqrt(q_max * shape->share[kAcross / 2] / (M_PI * v_max));
+  const double r_min = std::sqrt(q_max / (M_PI * v_max));
   const int slices = std::clamp(static_cast<int>(std::ceil(kStep * v_max / (p_.overlap * r_min))), 1, kMaxPerStep);
   const glm::dvec3 e2 = glm::normalize(glm::cross(lip.outward, side));
   emit_slices(t0, t1, slices, middle, v0 * lip.outward, side, e2, shape);
