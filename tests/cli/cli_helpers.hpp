@@ -132,7 +132,12 @@ inline std::vector<std::string> list_tree(const fs::path& dir) {
   std::vector<std::string> out;
   std::error_code ec;
   if (!fs::exists(dir, ec)) return out;
-  for (auto& e : fs::recursive_directory_iterator(dir, ec)) out.push_back(fs::relative(e.path(), dir).string());
+  // Lexically relative and with error codes: a file that a run renames away between the
+  // listing and the look (a frame's temporary) must not throw (fs::relative asks the file
+  // system for the canonical path, which a vanished file has not).
+  for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
+       it.increment(ec))
+    out.push_back(it->path().lexically_relative(dir).string());
   std::sort(out.begin(), out.end());
   return out;
 }
