@@ -102,7 +102,9 @@ double line_blob_radius(double r, double spacing, double level) {
   };
   double lo = r, hi = scale * r;
   if (!(spacing > 0) || drawn(hi) <= r) return r;
-  for (int i = 0; i < 50; ++i) (drawn(0.5 * (lo + hi)) < r ? lo : hi) = 0.5 * (lo + hi);
+  // 24 halvings of [r, 2.2 r]: 1e-7 of r, below the float the cloud keeps (cloud() runs
+  // every frame, a bisection per blob).
+  for (int i = 0; i < 24; ++i) (drawn(0.5 * (lo + hi)) < r ? lo : hi) = 0.5 * (lo + hi);
   return 0.5 * (lo + hi) / scale;
 }
 }  // namespace

@@ -19,7 +19,8 @@
 // leave side by side across it, each with its strip's share of the flow, and surface
 // tension pulls the sheet's sides in at the Taylor-Culick speed sqrt(2 sigma / (rho d)),
 // faster as the falling sheet thins: the sheet closes into a rope as it falls. A parcel
-// is a slice of the sheet, drawn as a blob per strip (of equal width) while it is open, at least half the strips' spacing wide, so that it holds together where it is
+// is a slice of the sheet, drawn as a blob per strip (of equal width) while it is open,
+// at least 0.8 of the strips' spacing wide, so that it holds together where it is
 // thinner than that, and as one blob once it has closed (docs/POINT_CLOUDS.md).
 #pragma once
 
@@ -101,7 +102,7 @@ class PourStream {
   // The most parcels emitted in one step (a very thin, fast stream is drawn sparser:
   // it would break into drops anyway).
   static constexpr int kMaxPerStep = 64;
-  // Over a lip: the most parcels side by side across the sheet, and in one step.
+  // Over a lip: the parcels side by side across the sheet (its strips).
   static constexpr int kAcross = 12;
 
  private:

@@ -134,8 +134,8 @@ std::vector<CloudFrame> Simulation::streams() const {
     f.ior = params_.liquid.ior;
     f.roughness = params_.liquid.roughness;
     // The drink's colour over the stream's own thickness: the mean chord of a round stream
-    // (pi/2 of its radius), which its blobs draw about 1.5 times as wide as continuity.
-    const double chord = std::clamp(0.5 * M_PI * 1.5 * (*s)->stream.rope_radius(), 1e-3, kColourPathMetres);
+    // (pi/2 of its radius; its blobs draw it as wide as continuity makes it).
+    const double chord = std::clamp(0.5 * M_PI * (*s)->stream.rope_radius(), 1e-3, kColourPathMetres);
     f.absorption = liquid_absorption(params_.liquid, chord);
     out.push_back(std::move(f));
   }
