@@ -25,6 +25,7 @@
 #include "lib/vessel/thickness.glsl"
 #include "lib/optics/fresnel.glsl"
 #include "lib/liquid/surface.glsl"
+#include "lib/liquid/body.glsl"
 #include "lib/environment/studio.glsl"
 #include "lib/environment/lights.glsl"
 #include "lib/environment/backdrop.glsl"
@@ -101,7 +102,7 @@ void drink_along(Vessel v, vec3 p, vec3 d, vec3 pw, inout vec3 radiance, inout v
   vec2 liquid = level_span(cav, h0, dh, -1e3, 0.0);
   float len = max(liquid.y - liquid.x, 0.0);
   vec3 haze = v.liquid.haze_light * (1.0 - exp(-v.liquid.haze * len));  // (the record's light, core: the surround's mean and the lights)
-  vec3 through = exp(-v.body.absorption * len);
+  vec3 through = drink_transmittance(v.body, len);
   vec2 head = vec2(0.0);
   float opacity = 0.0;
   vec3 head_color = vec3(0.0);

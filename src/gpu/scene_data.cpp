@@ -154,7 +154,9 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.height = float(v.height);
   r.foot_radius = float(v.r_outer.front());
   r.mean_outer_radius = float(vf.mean_outer_radius);
-  r.absorption = vf.liquid_absorption;
+  r.absorption_fast = vf.liquid_absorption.fast;
+  r.absorption_slow = vf.liquid_absorption.slow;
+  r.absorption_share = vf.liquid_absorption.share;
   r.has_liquid = vf.has_liquid ? 1 : 0;
   // The cross-section as the reference intersector has it (normalised; off: 0, 0, 0, 1),
   // and in the world for the floor, which sees no rotation.
@@ -217,8 +219,9 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   // reference path tracer's, which follows every scattering (docs/REFERENCE.md: its
   // liquid's CIEDE2000 mean 31.5 -> 9.3).
   const glm::dvec3 sigma_s = double(vp.liquid.haze) * glm::dvec3(vp.liquid.haze_color);
-  const glm::dvec3 sigma_a = glm::dvec3(vf.liquid_absorption) + double(vp.liquid.haze) - sigma_s;
-  const glm::dvec3 kappa = glm::max(glm::dvec3(vf.liquid_absorption), glm::sqrt(3.0 * sigma_a * (sigma_a + sigma_s)));
+  const glm::dvec3 colour(vf.liquid_absorption.effective());
+  const glm::dvec3 sigma_a = colour + double(vp.liquid.haze) - sigma_s;
+  const glm::dvec3 kappa = glm::max(colour, glm::sqrt(3.0 * sigma_a * (sigma_a + sigma_s)));
   const glm::dvec3 tint = glm::exp(-kappa * (double(vf.mean_outer_radius) * 0.7));
   r.haze_light = glm::vec3(glm::dvec3(vp.liquid.haze_color) * haze_in * tint);
   // glass

@@ -53,7 +53,7 @@ TEST(Furnace, ANonAbsorbingDrinkIsInvisible) {
 
 TEST(Furnace, AnAbsorbingDrinkIsNotInvisible) {  // the tests above can fail
   FrameState f = furnace(0.8f, 0.0f);
-  f.vessels[0].liquid_absorption = glm::vec3(10, 30, 80);
+  f.vessels[0].liquid_absorption = DrinkAbsorption::uniform(glm::vec3(10, 30, 80));
   int x = 0, y = 0;
   EXPECT_GT(worst_error(gpu_instance().renderer->render(f, 64, 64), x, y), 0.3);
 }

@@ -16,6 +16,7 @@
 
 #include "core/droplets/field.hpp"
 #include "core/foam/head_volume.hpp"
+#include "core/io/image.hpp"
 #include "core/pointcloud/cloud_scene.hpp"
 #include "core/pointcloud/field.hpp"
 #include "core/reference/path_tracer.hpp"
@@ -24,6 +25,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 
 namespace draught::test {
 namespace {
@@ -128,6 +131,9 @@ TEST_P(ReferenceComparison, RegionsAgreeWithinTheirBounds) {
   const Image picture = gpu_instance().renderer->render(f, n, rows);
   ReferenceSettings settings;
   settings.samples = c.spp;
+  // DRAUGHT_COMPARISON_SEED=n: the reference with other random numbers (how much of a
+  // figure is its own noise).
+  if (const char* seed = std::getenv("DRAUGHT_COMPARISON_SEED")) settings.seed = std::strtoull(seed, nullptr, 10);
   const RadianceImage radiance = render_reference(f, n, rows, settings);
   std::printf("%s: reference %dx%d at %d paths in %.1f s\n", c.name, n, rows, c.spp, radiance.seconds);
   const Image reference = display_image(radiance, f.params.render);
@@ -162,7 +168,34 @@ TEST_P(ReferenceComparison, RegionsAgreeWithinTheirBounds) {
       const std::uint8_t* a = picture.px(x, y);
       const std::uint8_t* b = reference.px(x, y);
       stats[r].de.push_back(ciede2000(srgb8_to_lab(a[0], a[1], a[2]), srgb8_to_lab(b[0], b[1], b[2])));
+      if (std::getenv("DRAUGHT_COMPARISON_DUMP") && r == int(Region::Foam))
+        std::printf("  foam (%d, %d): picture %d %d %d, reference %d %d %d: %.2f\n", x, y, a[0], a[1], a[2], b[0], b[1],
+                    b[2], stats[r].de.back());
     }
+
+  // DRAUGHT_COMPARISON_DUMP=folder: the picture, the reference and a map of the
+  // difference (grey where a pixel is left out, black to white for CIEDE2000 0 to 20),
+  // for finding where a region differs.
+  if (const char* dump = std::getenv("DRAUGHT_COMPARISON_DUMP")) {
+    Image map = picture;
+    for (int y = 0; y < rows; ++y)
+      for (int x = 0; x < n; ++x) {
+        std::uint8_t* m = map.px(x, y);
+        const std::uint8_t* a = picture.px(x, y);
+        const std::uint8_t* b = reference.px(x, y);
+        const int r = region[size_t(y) * size_t(n) + size_t(x)];
+        const double de = ciede2000(srgb8_to_lab(a[0], a[1], a[2]), srgb8_to_lab(b[0], b[1], b[2]));
+        const auto v = std::uint8_t(std::clamp(de / 20.0 * 255.0, 0.0, 255.0));
+        const std::uint8_t tint[kRegions][3] = {{0, 0, 0}, {0, 0, 1}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1, 0, 1}};
+        for (int k = 0; k < 3; ++k)
+          m[k] = r <= int(Region::Background) ? 64 : std::uint8_t(std::max<int>(v, tint[r][k] * 60));
+      }
+    const std::filesystem::path dir(dump);
+    std::filesystem::create_directories(dir);
+    write_png(dir / (std::string(c.name) + "-picture.png"), picture);
+    write_png(dir / (std::string(c.name) + "-reference.png"), reference);
+    write_png(dir / (std::string(c.name) + "-difference.png"), map);
+  }
 
   const Bounds bounds[kRegions] = {{0, 0}, c.glass, c.liquid, c.foam, c.droplets, c.cloud};
   for (Region r : {Region::Glass, Region::Liquid, Region::Foam, Region::Droplets, Region::Cloud}) {
@@ -208,24 +241,34 @@ INSTANTIATE_TEST_SUITE_P(
     // 2.39, 1.38 / 1.89, 2.63 / 4.59); the optics glass 0.62 / 0.91, liquid 0.28 / 0.52,
     // head 2.45 / 5.64 (4.07 / 8.27); the studio image glass 0.47 / 1.13, liquid 0.58 /
     // 0.55, head 2.21 / 4.92 (2.67 / 6.94). Bounds: today's figures and about 10 %.
+    // The heads of these pints are 16 pixels: their 90th percentile is the second worst
+    // pixel, at the head's shaded edge, where 2048 paths are still grainy. With the drink's
+    // colour in two bands (core DrinkAbsorption) the picture's head pixels moved by at
+    // most one 8-bit level, the reference's by up to six (its random numbers reshuffled:
+    // roulette follows the throughput): over the reference's seeds 1 to 4
+    // (DRAUGHT_COMPARISON_SEED) the default pint's head is 1.87-2.43 / 5.01-6.45, the
+    // studio image's 2.05-2.26 / 4.72-6.08, the bar's 4.70-5.93 / 7.92-10.39; the bounds
+    // take the worst seed and about 10 %. The close-ups below (hundreds of head pixels)
+    // are the heads' real measure.
     ::testing::Values(
-        ComparisonCase{"lager-pint", SceneRequest{"lager", "pint"}, 64, 2048, {0.9, 2.4}, {1.3, 1.5}, {2.4, 5.6}},
+        ComparisonCase{"lager-pint", SceneRequest{"lager", "pint"}, 64, 2048, {0.9, 2.4}, {1.3, 1.5}, {2.7, 7.1}},
         ComparisonCase{"lager-pint-optics",
                        SceneRequest{"checker-studio", "pint", {"env.floor=false", "bubbles.carbonation=0"}},
                        64, 2048, {0.8, 1.1}, {0.4, 0.7}, {2.7, 6.2}},
         ComparisonCase{"lager-pint-studio-image",
                        SceneRequest{"lager", "pint", {"env.mode=image", "env.image=studio", "env.floor=false", "bubbles.carbonation=0"}},
-                       64, 2048, {0.6, 1.3}, {0.7, 0.7}, {2.5, 5.5}},
+                       64, 2048, {0.6, 1.3}, {0.7, 0.7}, {2.5, 6.7}},
         ComparisonCase{"lager-pint-bar", SceneRequest{"lager", "pint", {"env.mode=image", "env.image=bar"}},
-                       64, 2048, {8.3, 12.4}, {3.2, 8.3}, {5.3, 9.6}},
-        // A hazy drink (a nearly white haze, 30 /m): its liquid 4.6 / 8.6. With the
+                       64, 2048, {8.3, 12.4}, {3.2, 8.4}, {6.5, 11.4}},
+        // A hazy drink (a nearly white haze, 30 /m): its liquid 4.03 / 7.46 (4.6 / 8.6 while
+        // the drink's colour was one coefficient per channel, fitted at 4 cm). With the
         // preset's old haze (45 /m, albedo [0.95, 0.72, 0.38]) 5.9 / 11.1 since the lights
         // reach the haze with their irradiance over 4 pi, 9.3 / 16.6 with pi times that,
         // 31.5 / 42.0 when the haze's light decayed along a straight chord, not as
         // diffusion's kappa. The reference's own noise in a scattering drink is part of
         // it. Glass (4 pixels) and head not checked here.
         ComparisonCase{"hefeweizen-weizen", SceneRequest{"hefeweizen", "weizen", {"bubbles.carbonation=0"}}, 64, 256,
-                       {0, 0}, {5.1, 9.5}, {0, 0}},
+                       {0, 0}, {4.5, 8.3}, {0, 0}},
         // A thinly hazy, strongly absorbing drink (haze 4 /m), against 1024 paths (7.6 s):
         // glass 2.92 / 9.76, liquid 2.66 / 4.81, head 2.71 / 7.61 (the liquid was 3.13 / 5.53
         // while the reference's paths out through the foot missed the floor: the bowl's

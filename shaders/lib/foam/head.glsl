@@ -15,6 +15,7 @@
 #include "lib/scene/objects.glsl"
 #include "lib/vessel/intersect.glsl"
 #include "lib/liquid/surface.glsl"
+#include "lib/liquid/body.glsl"
 #include "lib/environment/lights.glsl"
 
 // Compiled in only for frames with a head (gpu/renderer.cpp builds the variants).
@@ -152,7 +153,7 @@ HeadLight head_light(Vessel v, ObjectFoam f) {
   h.side_xz = 2.0 * (euw - 0.5 * (h.side_xx + h.side_zz) - 0.70710678 * (h.side_x + h.side_z));
   // Under the head, light from all around through the drink: the surroundings' mean
   // radiance (their band-0 harmonic), along the drink's mean chord.
-  h.below = sh[0] * (0.282095 / PI) * exp(-v.body.absorption * f.under_chord);
+  h.below = sh[0] * (0.282095 / PI) * drink_transmittance(v.body, f.under_chord);
   // The lights: the rig's, or an image's brightest patches (core media_light).
   h.count = frame.media_light_count;
   for (int i = 0; i < MAX_LIGHTS; ++i) {
@@ -360,7 +361,7 @@ vec3 head_wall_cells(Vessel v, ObjectFoam f, vec3 p, float footprint) {
   float fine = f.bubble_size, coarse = f.bubble_size * (1.0 + FOAM_GROWTH), low = 1.0 - height / top;
   float border = mix(cell_border(wall / fine, footprint / fine), cell_border(wall / coarse + 17.0, footprint / coarse), low);
   border *= clamp((top - height) / (FOAM_SOFT_TOP * top), 0.0, 1.0);  // the head's soft top
-  return mix(vec3(1.0), exp(-v.body.absorption * height), border);
+  return mix(vec3(1.0), drink_transmittance(v.body, height), border);
 }
 
 // Lacing: thin foam left on the inner wall where the head's top used to be (p local).

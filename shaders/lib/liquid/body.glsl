@@ -4,10 +4,25 @@
 #define LIB_LIQUID_BODY_GLSL
 #include "lib/scene/objects.glsl"
 
-// Transmittance of a straight path of length dist in the medium of vessel v (glass g).
-vec3 medium_transmittance(Vessel v, ObjectGlass g, int medium, float dist) {
+// The drink's colour (core DrinkAbsorption's twin): in each channel two bands of its
+// spectrum, T(L) = share e^(-fast L) + (1 - share) e^(-slow L). What passes `dist` more
+// of the drink on a path that has crossed `depth` of it: T(depth + dist) / T(depth), so a
+// path's stretches multiply to T of their sum (a thin edge of red wine crimson, its deep
+// middle still red, as the spectrum gives; one coefficient per channel is exact at one
+// length only).
+vec3 drink_onward(ObjectBody b, float depth, float dist) {
+  vec3 gap = b.absorption_fast - b.absorption_slow, w = b.absorption_share;
+  vec3 before = w * exp(-gap * depth) + (1.0 - w);
+  vec3 after = w * exp(-gap * (depth + dist)) + (1.0 - w);
+  return exp(-b.absorption_slow * dist) * after / before;
+}
+vec3 drink_transmittance(ObjectBody b, float dist) { return drink_onward(b, 0.0, dist); }
+
+// Transmittance of a straight path of length dist in the medium of vessel v (glass g),
+// `depth` of the drink crossed before (drink_onward).
+vec3 medium_transmittance(Vessel v, ObjectGlass g, int medium, float depth, float dist) {
   if (medium == MEDIUM_GLASS) return exp(-g.glass_absorption * dist);
-  if (medium == MEDIUM_LIQUID) return exp(-(v.body.absorption + vec3(v.liquid.haze)) * dist);
+  if (medium == MEDIUM_LIQUID) return drink_onward(v.body, depth, dist) * exp(-v.liquid.haze * dist);
   return vec3(1.0);
 }
 
@@ -15,12 +30,13 @@ vec3 medium_transmittance(Vessel v, ObjectGlass g, int medium, float dist) {
 // sky's light and the rig's lights, each a distant light from the glass's middle: the
 // quarter of its irradiance an isotropic scatterer sends per steradian over pi; all reach
 // the inside already tinted by the drink): the record's haze_light, computed in
-// gpu/scene_data.cpp once per frame.
-vec3 haze_inscatter(Vessel v, float dist) {
+// gpu/scene_data.cpp once per frame. colour: what the drink's colour passes of the
+// segment (drink_onward), whose effective absorption the haze shares the segment with.
+vec3 haze_inscatter(Vessel v, vec3 colour, float dist) {
   float s = v.liquid.haze;
   if (s <= 0.0) return vec3(0.0);
-  vec3 sigma_t = v.body.absorption + vec3(s);
-  return v.liquid.haze_light * (s / sigma_t) * (1.0 - exp(-sigma_t * dist));
+  vec3 tau = -log(max(colour, vec3(1e-30))) + s * dist;  // the segment's optical depth
+  return v.liquid.haze_light * (s * dist / max(tau, vec3(1e-12))) * (1.0 - colour * exp(-s * dist));
 }
 
 #endif  // LIB_LIQUID_BODY_GLSL

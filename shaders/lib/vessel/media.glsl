@@ -90,7 +90,8 @@ vec3 leave_through(vec3 r, vec3 n_out, float eta) {
 // rim bead's tube, and where it turns inwards (off the outer wall or the foot's
 // underside) across the cavity and its drink to the far side. Not a twin: the reference
 // follows these paths (docs/REFERENCE.md measures the difference).
-vec3 reflected_light(Vessel v, ObjectGlass g, int m, int medium, bool below, vec3 p, vec3 r, vec3 n, out vec3 out_dir) {
+vec3 reflected_light(Vessel v, ObjectGlass g, int m, int medium, bool below, float depth, vec3 p, vec3 r, vec3 n,
+                     out vec3 out_dir) {
   out_dir = r;
   bool liquid = medium == MEDIUM_LIQUID;
   if (!liquid && medium != MEDIUM_GLASS) return vec3(1.0);
@@ -113,7 +114,9 @@ vec3 reflected_light(Vessel v, ObjectGlass g, int m, int medium, bool below, vec
   if (!spans) n_out = -n;  // out through the face opposite the one it reflected off
   float in_drink = spans && drink ? span.y - span.x : 0.0;
   if (liquid || m != M_RIM) out_dir = leave_through(r, n_out, liquid ? v.liquid.ior : g.glass_ior);
-  return exp(-g.glass_absorption * in_glass - (v.body.absorption + vec3(v.liquid.haze)) * in_drink);
+  // depth: how far the path has crossed this drink (drink_onward); a path in the glass
+  // that turns inwards meets the drink again.
+  return exp(-g.glass_absorption * in_glass - v.liquid.haze * in_drink) * drink_onward(v.body, depth, in_drink);
 }
 
 #endif  // LIB_VESSEL_MEDIA_GLSL

@@ -38,7 +38,7 @@ LiquidLeg trace_to_liquid(const FrameState& f, const SceneGeometry& geo, int tar
     leg.before += h.t;
     if (medium == Medium::Glass) leg.thr *= glm::exp(-glm::dvec3(p.glass.absorption) * h.t);
     if (medium == Medium::Liquid)  // another glass's drink on the way
-      leg.thr *= glm::exp(-(glm::dvec3(v.liquid_absorption) + double(p.liquid.haze)) * h.t);
+      leg.thr *= glm::exp(-(glm::dvec3(v.liquid_absorption.effective()) + double(p.liquid.haze)) * h.t);
     const bool below = v.liquid.below(glm::inverse(v.pose.orientation) * (p_hit - v.pose.position));
     // From above, a head sits on the surface: what is under it is hidden.
     if (h.m == Material::LiquidSurface && medium == Medium::Air && v.foam.thickness > 5e-4) return leg;
@@ -85,7 +85,7 @@ void add_sprites(const FrameState& f, const SceneGeometry& geo, int target, cons
                  int height, std::vector<BubbleSprite>& out) {
   const VesselFrame& vf = f.vessels[size_t(target)];
   const glm::dvec3 right(cam.right), up(cam.up);
-  const glm::dvec3 sigma = glm::dvec3(vf.liquid_absorption) + double(vf.params.liquid.haze);
+  const glm::dvec3 sigma = glm::dvec3(vf.liquid_absorption.effective()) + double(vf.params.liquid.haze);
   for (const Bubble& b : vf.bubbles) {
     if (geo.vessels[size_t(target)].clipped(glm::dvec3(b.p))) continue;  // cut away with the cross-section
     const glm::dvec3 c = vf.pose.orientation * glm::dvec3(b.p) + vf.pose.position;
@@ -145,7 +145,7 @@ void add_straight_sprites(const FrameState& f, const SceneGeometry& geo, int tar
                           int width, int height, std::vector<BubbleSprite>& out) {
   const VesselFrame& vf = f.vessels[size_t(target)];
   const glm::dvec3 eye(cam.eye), fwd(cam.forward), right(cam.right), up(cam.up);
-  const glm::dvec3 sigma = glm::dvec3(vf.liquid_absorption) + double(vf.params.liquid.haze);
+  const glm::dvec3 sigma = glm::dvec3(vf.liquid_absorption.effective()) + double(vf.params.liquid.haze);
   for (const Bubble& b : vf.bubbles) {
     if (geo.vessels[size_t(target)].clipped(glm::dvec3(b.p))) continue;
     const glm::dvec3 c = vf.pose.orientation * glm::dvec3(b.p) + vf.pose.position, v = c - eye;

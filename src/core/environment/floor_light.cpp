@@ -80,7 +80,8 @@ struct Medium {
   glm::dquat to_local;
   glm::dvec3 position{0.0};
   double glass_ior = 1.5, liquid_ior = 1.33;
-  glm::dvec3 glass_absorption{0.0}, liquid_absorption{0.0}, haze{0.0};
+  glm::dvec3 glass_absorption{0.0};
+  DrinkMedium drink;
   glm::dvec3 local_point(const glm::dvec3& p) const { return to_local * (p - position); }
   double ior(MediumKind m) const {
     return m == MediumKind::Glass ? glass_ior : (m == MediumKind::Liquid ? liquid_ior : 1.0);
@@ -113,10 +114,11 @@ class PhotonTracer {
       m.glass_ior = vf.params.glass.ior;
       m.liquid_ior = vf.params.liquid.ior;
       m.glass_absorption = glm::dvec3(vf.params.glass.absorption);
-      // As the path tracer: extinction is absorption + haze, of which the haze colour scatters.
+      // As the path tracer: the drink's colour and the haze, of which the haze colour scatters.
+      m.drink.colour = vf.liquid_absorption;
       const double haze = vf.params.liquid.haze;
-      m.haze = haze * glm::dvec3(vf.params.liquid.haze_color);
-      m.liquid_absorption = glm::dvec3(vf.liquid_absorption) + glm::dvec3(haze) - m.haze;
+      m.drink.haze = haze * glm::dvec3(vf.params.liquid.haze_color);
+      m.drink.haze_absorption = glm::dvec3(haze) - m.drink.haze;
       media_.push_back(m);
     }
   }
@@ -140,7 +142,8 @@ class PhotonTracer {
       lane.stats.escaped -= power;  // what the glass sends there instead is counted as escaped too
     }
     MediumKind medium = MediumKind::Air;
-    int obj = -1;
+    int obj = -1, drink_obj = -1;
+    double drink_depth = 0;
     for (int events = 0;; ++events) {
       if (events > 0) h = bodies_.nearest(geo_, ray, kEps, medium, obj, attrs);
       const double t_end = h.valid() ? h.t : (medium == MediumKind::Air ? kInf : 0.0);
@@ -151,8 +154,12 @@ class PhotonTracer {
       } else if (medium == MediumKind::Glass) {
         power *= glm::exp(-media_[size_t(obj)].glass_absorption * t_end);
       } else if (medium == MediumKind::Liquid) {
+        if (drink_obj != obj) {  // as the path tracer: the depth crossed of the drink it is in
+          drink_obj = obj;
+          drink_depth = 0;
+        }
         double t_scatter;
-        const bool through = liquid_free_flight(media_[size_t(obj)].liquid_absorption, media_[size_t(obj)].haze, t_end, power, t_scatter, rng);
+        const bool through = liquid_free_flight(media_[size_t(obj)].drink, drink_depth, t_end, power, t_scatter, rng);
         lane.stats.absorbed += before - power;  // in expectation (the free flight's weights are not per channel)
         if (!through) {
           if (events >= kMaxEvents) {  // scattered too often: what is left is lost
@@ -680,7 +687,9 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
     put(v.has_liquid ? 1 : 0, v.liquid.offset, v.liquid.waves.ring, v.liquid.waves.radius);
     put(v.liquid.waves.cross.x, v.liquid.waves.cross.y);
     put3(v.liquid.n);
-    put3(v.liquid_absorption);
+    put3(v.liquid_absorption.fast);
+    put3(v.liquid_absorption.slow);
+    put3(v.liquid_absorption.share);
     put(v.params.glass.ior, v.params.liquid.ior, v.params.liquid.haze);
     put3(v.params.glass.absorption);
     put3(v.params.liquid.haze_color);

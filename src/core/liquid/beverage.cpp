@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
 #include <numbers>
 
 namespace draught {
@@ -87,6 +90,161 @@ double wine_absorbance(const glm::vec3& a, double nm) {
 glm::vec3 wine_to_absorption(const glm::vec3& a420_520_620, double metres) {
   if (a420_520_620 == glm::vec3(0.0f)) return glm::vec3(0.0f);
   return spectrum_to_absorption([a420_520_620](double nm) { return wine_absorbance(a420_520_620, nm); }, metres);
+}
+
+glm::dvec3 DrinkAbsorption::transmittance(double metres) const { return onward(0.0, metres); }
+
+glm::dvec3 DrinkAbsorption::onward(double depth, double metres) const {
+  // T(d + t) / T(d) = e^(-slow t) (w e^(-(fast - slow)(d + t)) + 1 - w) / (w e^(-(fast - slow) d) + 1 - w):
+  // no underflow to 0 / 0 deep in a dark drink (1 - w > 0).
+  const glm::dvec3 w(share), f(fast), s(slow), gap = f - s;
+  const glm::dvec3 before = w * glm::exp(-gap * depth) + (1.0 - w);
+  const glm::dvec3 after = w * glm::exp(-gap * (depth + metres)) + (1.0 - w);
+  return glm::exp(-s * metres) * after / before;
+}
+
+glm::vec3 DrinkAbsorption::effective(double metres) const {
+  return glm::vec3(-glm::log(glm::max(transmittance(metres), glm::dvec3(kMinChannelTransmittance))) / metres);
+}
+
+namespace {
+
+// The lengths the bands are fitted over: 1 mm to 16 cm in steps of sqrt(2) (a thin
+// edge to a wide bowl's middle), each length one sample of the error.
+constexpr int kFitLengths = 15;
+double fit_length(int j) { return 0.001 * std::pow(2.0, 0.5 * j); }
+
+double encode(double linear) {  // sRGB's transfer function: the error as the eye weighs it
+  linear = std::clamp(linear, 0.0, 1.0);
+  return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+}
+
+struct Band {
+  double share, rate;
+};
+
+// The one rate that best gives a group's transmittance (share x its mean of e^(-k L))
+// over the fitted lengths: a golden-section search on log(rate) within the group's rates.
+Band fit_group(const std::array<double, kFitLengths>& target, double share, double lo, double hi) {
+  if (share <= 0) return {0.0, lo};
+  const auto error = [&](double log_rate) {
+    double e = 0;
+    for (int j = 0; j < kFitLengths; ++j) {
+      const double d = share * std::exp(-std::exp(log_rate) * fit_length(j)) - target[size_t(j)];
+      e += d * d;
+    }
+    return e;
+  };
+  double a = std::log(std::max(lo, 1e-6)), b = std::log(std::max(hi, 1e-6));
+  const double r = (std::sqrt(5.0) - 1) / 2;
+  for (int i = 0; i < 48 && b - a > 1e-7; ++i) {
+    const double x1 = b - r * (b - a), x2 = a + r * (b - a);
+    if (error(x1) < error(x2)) b = x2;
+    else a = x1;
+  }
+  return {share, std::exp(0.5 * (a + b))};
+}
+
+}  // namespace
+
+DrinkAbsorption spectrum_to_bands(const std::function<double(double)>& absorbance_per_cm) {
+  DrinkAbsorption out;
+  for (int c = 0; c < 3; ++c) {
+    // The channel's wavelengths: weight (D65 x its colour matching function, summing to
+    // one) and rate (natural absorption per metre), sorted fastest first.
+    std::vector<std::pair<double, double>> lines;  // rate, weight
+    double total = 0;
+    for (std::size_t i = 0; i < kD65.size(); ++i) {
+      const double w = channel_weight(i)[c];
+      if (w <= 0) continue;
+      lines.emplace_back(absorbance_per_cm_to_absorption(absorbance_per_cm(kFirstNm + kStepNm * double(i))), w);
+      total += w;
+    }
+    std::sort(lines.begin(), lines.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+    for (auto& l : lines) l.second /= total;
+    const auto group = [&](std::size_t from, std::size_t to, std::array<double, kFitLengths>& t) {
+      double share = 0;
+      t.fill(0.0);
+      for (std::size_t i = from; i < to; ++i) {
+        share += lines[i].second;
+        for (int j = 0; j < kFitLengths; ++j) t[size_t(j)] += lines[i].second * std::exp(-lines[i].first * fit_length(j));
+      }
+      return share;
+    };
+    std::array<double, kFitLengths> whole{};
+    group(0, lines.size(), whole);
+    double best = std::numeric_limits<double>::infinity();
+    std::array<double, 3> fit{};  // log fast, log slow, fast's share
+    // Split after i: the first i wavelengths (the fastest) one band, the rest the other;
+    // i = 0 is a single band.
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      std::array<double, kFitLengths> tf{}, ts{};
+      const double wf = group(0, i, tf), ws = group(i, lines.size(), ts);
+      if (i > 0 && ws < 1e-3) break;  // the slow band's share stays above 0 (onward divides by it)
+      const Band f = i == 0 ? Band{0.0, 0.0} : fit_group(tf, wf, lines[i - 1].first, lines[0].first);
+      const Band s = fit_group(ts, ws, lines.back().first, lines[i].first);
+      double e = 0;
+      for (int j = 0; j < kFitLengths; ++j) {
+        const double L = fit_length(j);
+        const double d = encode(f.share * std::exp(-f.rate * L) + s.share * std::exp(-s.rate * L)) - encode(whole[size_t(j)]);
+        e += d * d;
+      }
+      if (e >= best) continue;
+      best = e;
+      fit = i == 0 ? std::array<double, 3>{std::log(std::max(s.rate, 1e-6)), std::log(std::max(s.rate, 1e-6)), 0.5}
+                   : std::array<double, 3>{std::log(std::max(f.rate, 1e-6)), std::log(std::max(s.rate, 1e-6)),
+                                           f.share / (f.share + s.share)};
+    }
+    // The best split's bands refined together in the same error: each of the two log
+    // rates and the share in turn, by golden sections about where it is.
+    const auto error = [&](const std::array<double, 3>& x) {
+      double e = 0;
+      for (int j = 0; j < kFitLengths; ++j) {
+        const double L = fit_length(j);
+        const double t = x[2] * std::exp(-std::exp(x[0]) * L) + (1 - x[2]) * std::exp(-std::exp(x[1]) * L);
+        const double d = encode(t) - encode(whole[size_t(j)]);
+        e += d * d;
+      }
+      return e;
+    };
+    for (int round = 0; round < 6; ++round)
+      for (int k = 0; k < 3; ++k) {
+        double a = k < 2 ? fit[size_t(k)] - 1.0 : 0.0, b = k < 2 ? fit[size_t(k)] + 1.0 : 0.999;
+        const double r = (std::sqrt(5.0) - 1) / 2;
+        std::array<double, 3> x = fit;
+        const auto at = [&](double v) {
+          x[size_t(k)] = v;
+          return error(x);
+        };
+        for (int it = 0; it < 40; ++it) {
+          const double x1 = b - r * (b - a), x2 = a + r * (b - a);
+          if (at(x1) < at(x2)) b = x2;
+          else a = x1;
+        }
+        x[size_t(k)] = 0.5 * (a + b);
+        if (error(x) < error(fit)) fit = x;
+      }
+    double fast = std::exp(fit[0]), slow = std::exp(fit[1]), share = fit[2];
+    if (fast < slow) {
+      std::swap(fast, slow);
+      share = 1 - share;
+    }
+    out.fast[c] = float(fast);
+    out.slow[c] = float(slow);
+    out.share[c] = float(std::clamp(share, 0.0, 0.999));
+  }
+  return out;
+}
+
+DrinkAbsorption drink_absorption(const LiquidParams& l) {
+  if (l.ebc > 0) {
+    const double srm = ebc_to_srm(l.ebc);
+    return spectrum_to_bands([srm](double nm) { return beer_absorbance(srm, nm); });
+  }
+  if (l.srm > 0) return spectrum_to_bands([srm = double(l.srm)](double nm) { return beer_absorbance(srm, nm); });
+  if (l.wine.x > 0 || l.wine.y > 0 || l.wine.z > 0)
+    return spectrum_to_bands([w = l.wine](double nm) { return wine_absorbance(w, nm); });
+  return DrinkAbsorption::uniform(l.absorption);
 }
 
 glm::vec3 liquid_absorption(const LiquidParams& l, double metres) {

@@ -64,7 +64,7 @@ struct VesselMedia {
   glm::dvec3 position{0.0};
   double glass_ior = 1.5, liquid_ior = 1.33;
   glm::dvec3 glass_absorption{0.0};
-  glm::dvec3 liquid_absorption{0.0}, haze{0.0};  // haze: scattering per metre (colour x amount)
+  DrinkMedium drink;
   glm::dvec3 foam_albedo{1.0};
   double foam_g = 0;
   glm::dvec3 local_point(const glm::dvec3& p) const { return to_local * (p - position); }
@@ -106,12 +106,12 @@ class Tracer {
       m.glass_ior = vf.params.glass.ior;
       m.liquid_ior = vf.params.liquid.ior;
       m.glass_absorption = glm::dvec3(vf.params.glass.absorption);
-      m.liquid_absorption = glm::dvec3(vf.liquid_absorption);
-      // As the picture's medium_transmittance and haze_inscatter: extinction is
-      // absorption + haze; of the haze, the haze colour scatters and the rest absorbs.
+      // As the picture's medium_transmittance and haze_inscatter: extinction is the
+      // drink's colour and the haze; of the haze, the haze colour scatters and the rest absorbs.
+      m.drink.colour = vf.liquid_absorption;
       const double haze = vf.params.liquid.haze;
-      m.haze = haze * glm::dvec3(vf.params.liquid.haze_color);
-      m.liquid_absorption += glm::dvec3(haze) - m.haze;
+      m.drink.haze = haze * glm::dvec3(vf.params.liquid.haze_color);
+      m.drink.haze_absorption = glm::dvec3(haze) - m.drink.haze;
       // foam.color is the colour a deep head shows: its reflectance, not one scattering's.
       m.foam_albedo = foam_single_scattering_albedo(glm::dvec3(vf.params.foam.color), vf.params.foam.anisotropy);
       m.foam_g = vf.params.foam.anisotropy;
@@ -128,6 +128,10 @@ class Tracer {
     // (backdrop or head); none for the camera, or after a mirror or a refraction.
     MisVertex mis;
     int surfaces = 0, scatters = 0;
+    // How far the path has travelled in the drink it was last in (its colour's bands weigh
+    // the whole of it: DrinkMedium).
+    int drink_obj = -1;
+    double drink_depth = 0;
     // With the screen as background, a light is seen only as the picture's are: in a
     // reflection off a surface seen from the air, or by a path a head scattered (the other
     // half of its light sampling).
@@ -148,8 +152,12 @@ class Tracer {
         bodies_.chord(medium, obj, t_end, attrs.x, thr, L);
       } else if (medium == MediumKind::Liquid) {
         const VesselMedia& m = media_[size_t(obj)];
+        if (drink_obj != obj) {  // a drink the path has not crossed yet: its colour from the start
+          drink_obj = obj;
+          drink_depth = 0;
+        }
         double t_scatter;
-        if (!liquid_free_flight(m.liquid_absorption, m.haze, t_end, thr, t_scatter, rng)) {
+        if (!liquid_free_flight(m.drink, drink_depth, t_end, thr, t_scatter, rng)) {
           if (++scatters > settings_.max_scatters) break;
           ray.o = ray.at(t_scatter);
           ray.d = sample_hg(ray.d, 0.0, rng);  // haze: isotropic

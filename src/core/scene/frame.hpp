@@ -11,6 +11,7 @@
 #include "core/environment/reflection.hpp"
 #include "core/environment/screen.hpp"
 #include "core/foam/foam.hpp"
+#include "core/liquid/beverage.hpp"
 #include "core/params/params.hpp"
 #include "core/scene/camera.hpp"
 #include "core/reference/intersect.hpp"
@@ -39,7 +40,7 @@ struct VesselFrame {
   FoamFrame foam;               // the head on the liquid, lacing, big bubbles
   std::vector<PlacedBubble> big_bubbles;  // the head's big bubbles placed on its top (glass frame)
   std::vector<Bubble> bubbles;  // rising in the liquid, glass frame
-  glm::vec3 liquid_absorption{0};
+  DrinkAbsorption liquid_absorption;  // the drink's colour, two bands per channel (core/liquid/beverage)
   double mean_outer_radius = 0;
   // Beads and fog on the outer wall (core/condensation); null when the glass is dry.
   std::shared_ptr<const CondensationState> condensation;

@@ -31,7 +31,7 @@ glm::dvec3 clamp_length(const glm::dvec3& v, double max_len) {
 }
 }  // namespace
 
-Simulation::Simulation(const VesselParams& p) : params_(p), foam_(p.foam) {
+Simulation::Simulation(const VesselParams& p) : params_(p), foam_(p.foam), colour_(drink_absorption(p.liquid)) {
   rebuild_glass();
   fraction_ = p.liquid.fill;  // in [0, 0.98]: the table checked it
   env_.radius = vessel_.inner_radius(vessel_.height);
@@ -52,7 +52,11 @@ void Simulation::set_params(const VesselParams& p) {
   const bool refill = p.liquid.fill != params_.liquid.fill;
   const bool bubbles_changed = !same_bubbles(p.bubbles, params_.bubbles);
   const bool condensation_changed = !(p.condensation == params_.condensation);
+  const LiquidParams& l = params_.liquid;
+  const bool colour_changed = p.liquid.ebc != l.ebc || p.liquid.srm != l.srm || p.liquid.wine != l.wine ||
+                              p.liquid.absorption != l.absorption;
   params_ = p;
+  if (colour_changed) colour_ = drink_absorption(p.liquid);  // a fit of a few ms: not every frame
   foam_.set_params(p.foam);
   if (glass_changed) rebuild_glass();
   else if (bubbles_changed) rebuild_bubbles();
@@ -299,7 +303,7 @@ VesselFrame Simulation::frame() const {
   f.liquid_azimuth = azimuth_;
   f.liquid_fraction = fraction_;
   f.has_liquid = fraction_ > kEmpty;
-  f.liquid_absorption = liquid_absorption(params_.liquid);
+  f.liquid_absorption = colour_;
   f.foam = foam_.frame(surface_.waves.radius);
   f.big_bubbles = place_big_bubbles(f.foam, surface_.n, surface_.offset, surface_.waves.radius);
   if (f.has_liquid) f.bubbles = bubbles_->bubbles();  // (an empty glass holds none: no drink to rise in)

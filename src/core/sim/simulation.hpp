@@ -99,6 +99,7 @@ class Simulation {
   SloshEnvironment env_;
   SloshState slosh_;
   FoamState foam_;
+  DrinkAbsorption colour_;  // fitted to the drink's spectrum when its colour changes
   std::optional<BubbleField> bubbles_;  // rebuilt with the glass or the bubble settings
   LiquidPlane surface_;
   double tilt_ = 0, azimuth_ = 0;

@@ -56,7 +56,7 @@ double largest_change(const FrameState& f, const FloorLightMap& m) {
 
 TEST(FloorLight, AGlassOfIndexOneThatAbsorbsNothingChangesNothing) {
   FrameState f = pint({"glass.ior=1", "liquid.ior=1", "glass.absorption=0,0,0", "liquid.haze=0"});
-  f.vessels[0].liquid_absorption = glm::vec3(0.0f);
+  f.vessels[0].liquid_absorption = DrinkAbsorption::uniform(glm::vec3(0.0f));
   f.vessels[0].foam.thickness = 0;
   const FloorLightMap m = compute_floor_light(f, budget(50000));
   ASSERT_FALSE(m.empty());
@@ -129,7 +129,7 @@ TEST(FloorLight, AnOpaqueGlassShadowIsWhatShadowRaysFind) {
   FrameState f = pint({"glass.ior=1", "liquid.ior=1", "liquid.haze=0", "light.direction=-0.55,0.75,0.45",
                        "light.distance=1", "light.width=0.6", "light.height=0.6"});
   f.vessels[0].params.glass.absorption = glm::vec3(1e5f);
-  f.vessels[0].liquid_absorption = glm::vec3(1e5f);
+  f.vessels[0].liquid_absorption = DrinkAbsorption::uniform(glm::vec3(1e5f));
   f.vessels[0].foam.thickness = 0;
   const FloorLightMap m = compute_floor_light(f, budget(800000));
   const SceneGeometry geo = scene_geometry(f);
