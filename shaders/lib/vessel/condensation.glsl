@@ -14,11 +14,8 @@
 #include "lib/environment/lights.glsl"
 #include "lib/environment/studio.glsl"
 
-// Of the light crossing a fully fogged wall, the part the mist of micro-droplets scatters
-// (diffusely, half to either side); the rest goes straight on. A veil, not a blur: the
-// mist's light is what the air side's lights and sky send it (cheap: no look-ups).
-const float FOG_SCATTER = 0.65;
-const float FOG_ALBEDO = 0.95;
+// The mist's FOG_SCATTER and FOG_ALBEDO (generated/constants.glsl) as a veil, not a
+// blur: its light is what the air side's lights and sky send it (cheap: no look-ups).
 
 // A bead is listed in the grid's cells within this many of its radii (twin of kHalo).
 const float BEAD_HALO = 1.35;
@@ -84,7 +81,11 @@ vec4 fog_veil(Vessel v, vec3 n, float f) {
     vec4 lit = object_lit_by(v.row, i);
     irradiance += area_light(i).radiance * lit.w * max(dot(n, lit.xyz), 0.0);
   }
-  return vec4(m * FOG_ALBEDO * 0.5 * irradiance / PI, 1.0 - m);
+  // The half it scatters on through the wall is taken on straight with what passes
+  // (the picture cannot blur it; behind a mist is mostly the drink's smooth colour): the
+  // reference, which follows it, showed the mist between the beads as dark as if that
+  // half were lost.
+  return vec4(m * FOG_ALBEDO * 0.5 * irradiance / PI, 1.0 - m + 0.5 * m * FOG_ALBEDO);
 }
 
 // The outer wall crossed through a bead: air and water meet at the cap (normal nb,

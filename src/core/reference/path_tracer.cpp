@@ -1,5 +1,6 @@
 #include "core/reference/path_tracer.hpp"
 
+#include "core/condensation/wall_grid.hpp"
 #include "core/environment/environment_sampling.hpp"
 
 #include "core/environment/lights.hpp"
@@ -67,6 +68,11 @@ struct VesselMedia {
   DrinkMedium drink;
   glm::dvec3 foam_albedo{1.0};
   double foam_g = 0;
+  // Condensation on the outer wall (null: a dry glass): the picture's bead grid and fog
+  // map (core/condensation/wall_grid, the twins of what its textures hold).
+  std::shared_ptr<const CondensationState> cold;
+  std::vector<glm::vec4> beads;
+  std::vector<std::uint8_t> fog;
   glm::dvec3 local_point(const glm::dvec3& p) const { return to_local * (p - position); }
   glm::dvec3 local_dir(const glm::dvec3& d) const { return to_local * d; }
   double ior(MediumKind m) const {
@@ -115,7 +121,12 @@ class Tracer {
       // foam.color is the colour a deep head shows: its reflectance, not one scattering's.
       m.foam_albedo = foam_single_scattering_albedo(glm::dvec3(vf.params.foam.color), vf.params.foam.anisotropy);
       m.foam_g = vf.params.foam.anisotropy;
-      media_.push_back(m);
+      if (vf.condensation) {
+        m.cold = vf.condensation;
+        m.beads = bead_grid(*vf.condensation, vf.vessel);
+        m.fog = fog_texels(*vf.condensation);
+      }
+      media_.push_back(std::move(m));
     }
   }
 
@@ -252,6 +263,16 @@ class Tracer {
       const double n1 = m.ior(medium), n2 = m.ior(next);
       const double F = fresnel_dielectric(-glm::dot(n, ray.d), n1, n2);
       ray.o = p;
+      if (h.m == Material::GlassOuter && m.cold) {
+        const ColdWall turn = cold_wall(m, h.object, p, n, ray, medium, obj, thr, rng);
+        if (turn == ColdWall::Absorbed) break;
+        if (turn == ColdWall::Turned) {
+          sees_lights = medium == MediumKind::Air;
+          mis.pdf = -1;
+          if (!roulette(thr, surfaces + scatters, rng)) break;
+          continue;
+        }
+      }
       // A decal on the wall: from the air it lies under the surface's gloss (Fresnel
       // first); from inside the glass or the drink the ink, frost or metal meets the
       // path first (no total internal reflection off a painted face).
@@ -287,6 +308,81 @@ class Tracer {
   }
 
  private:
+  enum class ColdWall { Bare, Turned, Absorbed };
+  // A cold glass's outer wall at p (n: the wall's normal facing the path), from the air
+  // or from inside the glass: the mist scatters FOG_SCATTER of the light of a fully
+  // fogged point (cleared round the beads, as the picture's), diffusely, half back and
+  // half on through the wall (the FOG_ALBEDO of it left); a bead is a water lens: its
+  // cap (the picture's normal, core bead_at) and the water-glass face each reflect or pass
+  // by Fresnel (a ray the cap turns back re-enters the glass). Turned: the path goes on
+  // from p (ray, medium and throughput updated); Bare: no mist met and no bead there, the
+  // bare wall as any other.
+  ColdWall cold_wall(const VesselMedia& m, int object, const glm::dvec3& p, const glm::dvec3& n, Ray& ray,
+                     MediumKind& medium, int& obj, glm::dvec3& thr, Rng& rng) const {
+    const glm::dvec3 pl = m.local_point(p);
+    glm::dvec3 nl = m.local_dir(n);
+    if (nl.x * pl.x + nl.z * pl.z < 0) nl = -nl;  // outward
+    const CondensationState& c = *m.cold;
+    const BeadSample bead = bead_at(m.beads, c.band, c.contact_angle, glm::vec3(pl), glm::vec3(nl));
+    const double mist = fog_at(m.fog, c.band, glm::vec3(pl)) * bead.clear * contract::kFogScatter;
+    const glm::dvec3 out = m.to_world * nl;  // outward, world
+    const double glass = m.glass_ior, water = contract::kWaterIor;
+    ray.o = p;
+    if (mist > 0 && rng.uniform() < mist) {
+      thr *= contract::kFogAlbedo;
+      const bool outwards = rng.uniform() < 0.5;
+      const glm::dvec3 d = around(outwards ? out : -out, std::sqrt(rng.uniform()), 2 * kPi * rng.uniform());
+      if (outwards) {  // into the air
+        ray.d = d;
+        medium = MediumKind::Air;
+        obj = -1;
+      } else {  // into the glass, bent by its outer face (from the air: no total reflection)
+        ray.d = glm::normalize(*refract_dir(d, out, 1.0 / glass));
+        medium = MediumKind::Glass;
+        obj = object;
+      }
+      return ColdWall::Turned;
+    }
+    if (!bead.found) return ColdWall::Bare;
+    const glm::dvec3 nb = m.to_world * glm::dvec3(bead.normal);
+    if (medium == MediumKind::Air) {
+      const glm::dvec3 cap = glm::dot(nb, ray.d) < 0 ? nb : -nb;
+      if (rng.uniform() < fresnel_dielectric(-glm::dot(cap, ray.d), 1.0, water)) {
+        ray.d = reflect_dir(ray.d, cap);
+        return ColdWall::Turned;
+      }
+      const glm::dvec3 in_water = glm::normalize(*refract_dir(ray.d, cap, 1.0 / water));
+      const glm::dvec3 wall = glm::dot(n, in_water) < 0 ? n : -n;
+      // (into denser glass: no total reflection; the water-glass face reflects 0.3 %)
+      ray.d = glm::normalize(*refract_dir(in_water, wall, water / glass));
+      medium = MediumKind::Glass;
+      obj = object;
+      return ColdWall::Turned;
+    }
+    if (medium != MediumKind::Glass) return ColdWall::Bare;
+    // From the glass: the wall's face into the water, then the cap into the air.
+    const double Fw = fresnel_dielectric(-glm::dot(n, ray.d), glass, water);
+    if (rng.uniform() < Fw) {
+      ray.d = reflect_dir(ray.d, n);
+      return ColdWall::Turned;
+    }
+    const glm::dvec3 in_water = glm::normalize(*refract_dir(ray.d, n, glass / water));
+    const glm::dvec3 cap = glm::dot(nb, in_water) < 0 ? nb : -nb;
+    if (rng.uniform() < fresnel_dielectric(-glm::dot(cap, in_water), water, 1.0)) {
+      // Turned back by the cap: through the wall into the glass again.
+      const glm::dvec3 back = reflect_dir(in_water, cap);
+      const glm::dvec3 wall = glm::dot(n, back) < 0 ? n : -n;
+      const auto into = refract_dir(back, wall, water / glass);
+      if (!into) return ColdWall::Absorbed;  // (cannot happen into denser glass)
+      ray.d = glm::normalize(*into);
+      return ColdWall::Turned;
+    }
+    ray.d = glm::normalize(*refract_dir(in_water, cap, water));
+    medium = MediumKind::Air;
+    obj = -1;
+    return ColdWall::Turned;
+  }
+
   // What a path sees when it leaves the scene: the studio's sky (an image's weighted
   // against the last vertex's sampling of it), or the screen when it is the background
   // (found by the paths alone: weight 1).

@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -123,6 +125,32 @@ TEST(ReferenceFurnace, AColouredDecalShowsItsColourUnderTheGlassGloss) {
     for (const glm::dvec3& c : img.pixels) mean += c / double(img.pixels.size());
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(mean[i] / kEnv[i], F + (1 - F) * colour[i], 0.02) << int(kind) << " channel " << i;
   }
+}
+
+TEST(ReferenceFurnace, ACondensedGlassWithoutMistIsInvisible) {
+  // Beads are water lenses on the wall (their caps and the water-glass face reflect or
+  // pass by Fresnel): nothing is lost, so a cold glass without mist vanishes too.
+  Params p = furnace_params();
+  p.liquid.fill = 0.8f;  // (a clear drink: the cold band is the drink's height)
+  p.condensation.enabled = true;
+  p.condensation.coverage = 0;
+  const FrameState f = make_frame(p);
+  ASSERT_TRUE(f.vessels[0].condensation);
+  EXPECT_GT(f.vessels[0].condensation->beads.size(), 500u);
+  EXPECT_LT(worst_error(render(f, 20, 4)), 0.02);
+}
+
+TEST(ReferenceFurnace, TheMistLosesOnlyWhatItsAlbedoLeaves) {
+  // A fully fogged wall scatters FOG_SCATTER of what crosses it and absorbs 1 - FOG_ALBEDO
+  // of that: a glass seen through two walls loses a few per cent, no more, and some.
+  Params p = furnace_params();
+  p.liquid.fill = 0.8f;  // (a clear drink: the cold band is the drink's height)
+  p.condensation.enabled = true;
+  p.condensation.coverage = 1;
+  const double loss = worst_error(render(p, 20, 16));
+  std::printf("a fogged glass in the furnace: worst %.3f\n", loss);
+  EXPECT_GT(loss, 0.01);
+  EXPECT_LT(loss, 0.2);
 }
 
 TEST(ReferenceFurnace, AnAbsorbingDrinkIsNotInvisible) {  // the tests above can fail
