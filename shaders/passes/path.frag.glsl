@@ -49,7 +49,7 @@ struct Path {
   vec3 radiance;  // gathered so far
   vec3 thr;       // throughput: what still reaches the eye of what lies ahead
   int drink;      // the object whose drink it was last in (-1: none yet)
-  float depth;    // how far it has travelled in that drink (its colour weighs the whole: drink_onward)
+  vec3 left;      // how its light is shared between that drink's colour bands (drink_onward)
 };
 
 float max3(vec3 v) { return max(v.r, max(v.g, v.b)); }
@@ -175,14 +175,13 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
   if (path.medium == MEDIUM_LIQUID) {
     if (path.drink != path.obj) {  // a drink it has not crossed yet: its colour from the start
       path.drink = path.obj;
-      path.depth = 0.0;
+      path.left = v.body.absorption_share;
     }
-    vec3 colour = drink_onward(v.body, path.depth, h.t);
+    vec3 colour = drink_onward(v.body, path.left, h.t);
     path.radiance += path.thr * haze_inscatter(v, colour, h.t);
     path.thr *= colour * exp(-v.liquid.haze * h.t);
-    path.depth += h.t;
   } else {
-    path.thr *= medium_transmittance(v, g, path.medium, 0.0, h.t);
+    path.thr *= medium_transmittance(v, g, path.medium, vec3(0.5), h.t);
   }
   vec3 pl = to_local_point(v, p);
   bool below = below_liquid(v, pl);
@@ -247,7 +246,7 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
       if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true, h.obj);
     } else {
       vec3 out_dir;
-      vec3 tr = reflected_light(v, g, h.m, path.medium, below, path.drink == h.obj ? path.depth : 0.0, pl,
+      vec3 tr = reflected_light(v, g, h.m, path.medium, below, path.drink == h.obj ? path.left : v.body.absorption_share, pl,
                                 to_local_dir(v, r), to_local_dir(v, c.n), out_dir);
       look = Look(p, to_world_dir(v, out_dir), path.thr * c.F * tr, rough, false, false, -1);
 #if DECALS
@@ -290,7 +289,8 @@ void lace_wall(inout Path path, float t, int obj) {
   ObjectFoam f = fetch_object_foam(v.row);
   vec3 p = path.o + t * path.d, pl = to_local_point(v, p);
   float cover = lacing_cover(v, f, pl);
-  vec3 reach = path.thr * medium_transmittance(v, glass_of(v.row), path.medium, path.drink == obj ? path.depth : 0.0, t);
+  vec3 reach = path.thr * medium_transmittance(v, glass_of(v.row), path.medium,
+                                                path.drink == obj ? path.left : v.body.absorption_share, t);
   path.radiance += reach * cover * lacing_light(v, f, to_local_dir(v, path.d));
   float footprint = 2.0 * frame.cam_tan_half_vfov * frame.viewport_inv.y * length(p - frame.cam_eye);
   path.thr *= (1.0 - cover) * head_wall_cells(v, f, pl, footprint);
@@ -402,7 +402,7 @@ void shade_cloud(inout Path path, Hit h, bool transparent, out Look look) {
 // path needs it, and the stage loop around it does it and resumes the path (searching
 // its segment again): its code runs once per stage, a few times per pixel at most.
 vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
-  Path path = Path(eye, dir, MEDIUM_AIR, -1, vec3(0.0), vec3(1.0), -1, 0.0);
+  Path path = Path(eye, dir, MEDIUM_AIR, -1, vec3(0.0), vec3(1.0), -1, vec3(0.5));
   see_through = 0.0;
   LitBackdrop lit = LitBackdrop(vec3(0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, -1.0), vec3(0.0));
   // (Read before the loops: inside them each read of the Frame block costs llvmpipe a load.)
@@ -524,7 +524,7 @@ vec4 debug_first_surface(vec3 eye, vec3 dir, int view) {
 // the previous event, material, object, medium before it); material M_NONE past the
 // path's end. Compared with a double-precision CPU trace (tests/gpu).
 vec4 debug_path_event(vec3 eye, vec3 dir, int n) {
-  Path path = Path(eye, dir, MEDIUM_AIR, -1, vec3(0.0), vec3(1.0), -1, 0.0);
+  Path path = Path(eye, dir, MEDIUM_AIR, -1, vec3(0.0), vec3(1.0), -1, vec3(0.5));
   for (int e = 0; e < frame.max_events; ++e) {
     Vessel v;
     Hit h = nearest_surface(path.o, path.d, path.medium, path.obj, e == 0 ? 0.0 : 2e-6, v);

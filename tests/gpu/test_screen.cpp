@@ -144,7 +144,7 @@ bool through_the_glass(const FrameState& f, const SceneGeometry& geo, Ray r, int
   MediumKind medium = MediumKind::Air;
   int object = -1;
   glm::dvec3 thr(1.0);
-  double depth = 0;  // of the drink crossed (its colour weighs the whole: DrinkAbsorption::onward)
+  glm::dvec3 left(-1.0);  // the shares of the drink's colour bands (DrinkAbsorption::onward); < 0: none yet
   in_liquid = false;
   for (int e = 0; e < f.params.render.max_events; ++e) {
     const Hit h = next_surface(geo, r, medium, object, e == 0 ? 0.0 : 2e-6);
@@ -164,8 +164,8 @@ bool through_the_glass(const FrameState& f, const SceneGeometry& geo, Ray r, int
     const VesselFrame& v = f.vessels[size_t(h.object)];
     if (medium == MediumKind::Glass) thr *= glm::exp(-glm::dvec3(v.params.glass.absorption) * h.t);
     if (medium == MediumKind::Liquid) {
-      thr *= v.liquid_absorption.onward(depth, h.t);
-      depth += h.t;
+      if (left.x < 0) left = glm::dvec3(v.liquid_absorption.share);
+      thr *= v.liquid_absorption.onward(left, h.t);
     }
     const PathTurn turn = turn_at(f, h, r, medium, object);
     if (turn.crossed) {

@@ -5,24 +5,28 @@
 #include "lib/scene/objects.glsl"
 
 // The drink's colour (core DrinkAbsorption's twin): in each channel two bands of its
-// spectrum, T(L) = share e^(-fast L) + (1 - share) e^(-slow L). What passes `dist` more
-// of the drink on a path that has crossed `depth` of it: T(depth + dist) / T(depth), so a
-// path's stretches multiply to T of their sum (a thin edge of red wine crimson, its deep
-// middle still red, as the spectrum gives; one coefficient per channel is exact at one
-// length only).
-vec3 drink_onward(ObjectBody b, float depth, float dist) {
-  vec3 gap = b.absorption_fast - b.absorption_slow, w = b.absorption_share;
-  vec3 before = w * exp(-gap * depth) + (1.0 - w);
-  vec3 after = w * exp(-gap * (depth + dist)) + (1.0 - w);
-  return exp(-b.absorption_slow * dist) * after / before;
+// spectrum, T(L) = share e^(-fast L) + (1 - share) e^(-slow L). A path keeps how the light
+// it still carries is shared between the bands (`left`: the fast band's share; `share`
+// as it enters the drink): `dist` more of the drink passes left e^(-fast dist) + (1 -
+// left) e^(-slow dist), and `left` is shared anew, so a path's stretches multiply to T of
+// their sum (a thin edge of red wine crimson, its deep middle still red, as the spectrum
+// gives; one coefficient per channel is exact at one length only).
+vec3 drink_onward(ObjectBody b, inout vec3 left, float dist) {
+  vec3 ef = exp(-b.absorption_fast * dist), es = exp(-b.absorption_slow * dist);
+  vec3 t = left * ef + (1.0 - left) * es;
+  left = left * ef / max(t, vec3(1e-30));
+  return t;
 }
-vec3 drink_transmittance(ObjectBody b, float dist) { return drink_onward(b, 0.0, dist); }
+vec3 drink_transmittance(ObjectBody b, float dist) {
+  vec3 left = b.absorption_share;
+  return drink_onward(b, left, dist);
+}
 
 // Transmittance of a straight path of length dist in the medium of vessel v (glass g),
-// `depth` of the drink crossed before (drink_onward).
-vec3 medium_transmittance(Vessel v, ObjectGlass g, int medium, float depth, float dist) {
+// `left` the shares of the drink's colour bands on the path (drink_onward).
+vec3 medium_transmittance(Vessel v, ObjectGlass g, int medium, vec3 left, float dist) {
   if (medium == MEDIUM_GLASS) return exp(-g.glass_absorption * dist);
-  if (medium == MEDIUM_LIQUID) return drink_onward(v.body, depth, dist) * exp(-v.liquid.haze * dist);
+  if (medium == MEDIUM_LIQUID) return drink_onward(v.body, left, dist) * exp(-v.liquid.haze * dist);
   return vec3(1.0);
 }
 

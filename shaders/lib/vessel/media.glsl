@@ -90,7 +90,7 @@ vec3 leave_through(vec3 r, vec3 n_out, float eta) {
 // rim bead's tube, and where it turns inwards (off the outer wall or the foot's
 // underside) across the cavity and its drink to the far side. Not a twin: the reference
 // follows these paths (docs/REFERENCE.md measures the difference).
-vec3 reflected_light(Vessel v, ObjectGlass g, int m, int medium, bool below, float depth, vec3 p, vec3 r, vec3 n,
+vec3 reflected_light(Vessel v, ObjectGlass g, int m, int medium, bool below, vec3 left, vec3 p, vec3 r, vec3 n,
                      out vec3 out_dir) {
   out_dir = r;
   bool liquid = medium == MEDIUM_LIQUID;
@@ -114,9 +114,9 @@ vec3 reflected_light(Vessel v, ObjectGlass g, int m, int medium, bool below, flo
   if (!spans) n_out = -n;  // out through the face opposite the one it reflected off
   float in_drink = spans && drink ? span.y - span.x : 0.0;
   if (liquid || m != M_RIM) out_dir = leave_through(r, n_out, liquid ? v.liquid.ior : g.glass_ior);
-  // depth: how far the path has crossed this drink (drink_onward); a path in the glass
-  // that turns inwards meets the drink again.
-  return exp(-g.glass_absorption * in_glass - v.liquid.haze * in_drink) * drink_onward(v.body, depth, in_drink);
+  // left: the shares of this drink's colour bands on the path (drink_onward); a path in
+  // the glass that turns inwards meets the drink again.
+  return exp(-g.glass_absorption * in_glass - v.liquid.haze * in_drink) * drink_onward(v.body, left, in_drink);
 }
 
 #endif  // LIB_VESSEL_MEDIA_GLSL

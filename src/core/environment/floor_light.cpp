@@ -143,7 +143,7 @@ class PhotonTracer {
     }
     MediumKind medium = MediumKind::Air;
     int obj = -1, drink_obj = -1;
-    double drink_depth = 0;
+    glm::dvec3 drink_left(0.5);  // as the path tracer: the shares of the drink's colour bands
     for (int events = 0;; ++events) {
       if (events > 0) h = bodies_.nearest(geo_, ray, kEps, medium, obj, attrs);
       const double t_end = h.valid() ? h.t : (medium == MediumKind::Air ? kInf : 0.0);
@@ -154,12 +154,12 @@ class PhotonTracer {
       } else if (medium == MediumKind::Glass) {
         power *= glm::exp(-media_[size_t(obj)].glass_absorption * t_end);
       } else if (medium == MediumKind::Liquid) {
-        if (drink_obj != obj) {  // as the path tracer: the depth crossed of the drink it is in
+        if (drink_obj != obj) {  // as the path tracer: a drink it has not crossed yet
           drink_obj = obj;
-          drink_depth = 0;
+          drink_left = glm::dvec3(media_[size_t(obj)].drink.colour.share);
         }
         double t_scatter;
-        const bool through = liquid_free_flight(media_[size_t(obj)].drink, drink_depth, t_end, power, t_scatter, rng);
+        const bool through = liquid_free_flight(media_[size_t(obj)].drink, drink_left, t_end, power, t_scatter, rng);
         lane.stats.absorbed += before - power;  // in expectation (the free flight's weights are not per channel)
         if (!through) {
           if (events >= kMaxEvents) {  // scattered too often: what is left is lost

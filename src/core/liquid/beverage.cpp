@@ -92,15 +92,16 @@ glm::vec3 wine_to_absorption(const glm::vec3& a420_520_620, double metres) {
   return spectrum_to_absorption([a420_520_620](double nm) { return wine_absorbance(a420_520_620, nm); }, metres);
 }
 
-glm::dvec3 DrinkAbsorption::transmittance(double metres) const { return onward(0.0, metres); }
+glm::dvec3 DrinkAbsorption::transmittance(double metres) const {
+  glm::dvec3 left(share);
+  return onward(left, metres);
+}
 
-glm::dvec3 DrinkAbsorption::onward(double depth, double metres) const {
-  // T(d + t) / T(d) = e^(-slow t) (w e^(-(fast - slow)(d + t)) + 1 - w) / (w e^(-(fast - slow) d) + 1 - w):
-  // no underflow to 0 / 0 deep in a dark drink (1 - w > 0).
-  const glm::dvec3 w(share), f(fast), s(slow), gap = f - s;
-  const glm::dvec3 before = w * glm::exp(-gap * depth) + (1.0 - w);
-  const glm::dvec3 after = w * glm::exp(-gap * (depth + metres)) + (1.0 - w);
-  return glm::exp(-s * metres) * after / before;
+glm::dvec3 DrinkAbsorption::onward(glm::dvec3& left, double metres) const {
+  const glm::dvec3 ef = glm::exp(-glm::dvec3(fast) * metres), es = glm::exp(-glm::dvec3(slow) * metres);
+  const glm::dvec3 t = left * ef + (1.0 - left) * es;
+  left = left * ef / glm::max(t, glm::dvec3(1e-300));  // what is left, shared anew (no underflow to 0 / 0)
+  return t;
 }
 
 glm::vec3 DrinkAbsorption::effective(double metres) const {
@@ -180,7 +181,7 @@ DrinkAbsorption spectrum_to_bands(const std::function<double(double)>& absorbanc
     for (std::size_t i = 0; i < lines.size(); ++i) {
       std::array<double, kFitLengths> tf{}, ts{};
       const double wf = group(0, i, tf), ws = group(i, lines.size(), ts);
-      if (i > 0 && ws < 1e-3) break;  // the slow band's share stays above 0 (onward divides by it)
+      if (i > 0 && ws < 1e-3) break;  // the slow band keeps a share
       const Band f = i == 0 ? Band{0.0, 0.0} : fit_group(tf, wf, lines[i - 1].first, lines[0].first);
       const Band s = fit_group(ts, ws, lines.back().first, lines[i].first);
       double e = 0;

@@ -67,9 +67,11 @@ glm::vec3 wine_to_absorption(const glm::vec3& a420_520_620, double metres = kCol
 // per channel is exact at one length only: fitted at a glassful's 4 cm, a red wine's
 // thin edge came out orange-brown (188, 110, 76 at 1 cm) where its spectrum gives crimson
 // (158, 71, 72), and its 8 cm middle too dark. Two bands follow the spectrum from a
-// millimetre to 16 cm within a few 8-bit levels. A path through the drink keeps the
-// depth it has travelled in it, and each stretch passes T(depth + t) / T(depth) (onward),
-// so the stretches of one path multiply to T of their sum, as the spectrum's do.
+// millimetre to 16 cm within a few 8-bit levels. A path through the drink keeps how the
+// light it still carries is shared between the two bands (`left`: the fast band's share,
+// `share` as it enters), and each stretch passes left e^(-fast t) + (1 - left) e^(-slow t)
+// and updates it (onward): a path's stretches multiply to T of their sum, as the
+// spectrum's do (the same as T(depth + t) / T(depth), with two exponentials a stretch).
 struct DrinkAbsorption {
   glm::vec3 fast{0.0f}, slow{0.0f};  // per metre; fast >= slow
   glm::vec3 share{0.5f};             // of each channel's light, the share in the fast band (< 1)
@@ -77,8 +79,9 @@ struct DrinkAbsorption {
   // One coefficient per channel (a drink given as liquid.absorption, a test's medium).
   static DrinkAbsorption uniform(const glm::vec3& per_metre) { return {per_metre, per_metre, glm::vec3(0.5f)}; }
   glm::dvec3 transmittance(double metres) const;
-  // What passes the next `metres` of a path that has crossed `depth` of the drink.
-  glm::dvec3 onward(double depth, double metres) const;
+  // What passes the next `metres` of a path whose light is shared `left` : 1 - left
+  // between the fast and the slow band (updated to the shares after).
+  glm::dvec3 onward(glm::dvec3& left, double metres) const;
   // The one coefficient per channel that gives transmittance(metres) (a diffusion's
   // decay, a bubble's small view of the drink).
   glm::vec3 effective(double metres = kColourPathMetres) const;

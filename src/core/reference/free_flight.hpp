@@ -23,32 +23,29 @@ struct DrinkMedium {
   glm::dvec3 haze{0.0}, haze_absorption{0.0};
 };
 
-// Through a drink for t_end, `depth` of it crossed before on this path (updated): absorbed
-// (thr updated, true), or scattered by the haze at t_scatter (false). The haze's
-// extinction is sampled (spectral free-flight sampling: a channel picks the distance, the
-// three channels' mean density weights it); the drink's colour weighs the path
-// deterministically, T(depth + t) / T(depth), so one path's stretches multiply to the
-// bands' transmittance of their sum (exact for the bands, however the haze turns it).
-inline bool liquid_free_flight(const DrinkMedium& m, double& depth, double t_end, glm::dvec3& thr, double& t_scatter,
-                               Rng& rng) {
+// Through a drink for t_end, `left` the shares of the path's light in the drink's colour
+// bands (DrinkAbsorption::onward; updated): absorbed (thr updated, true), or scattered by
+// the haze at t_scatter (false). The haze's extinction is sampled (spectral free-flight
+// sampling: a channel picks the distance, the three channels' mean density weights it);
+// the drink's colour weighs the path deterministically, so one path's stretches multiply
+// to the bands' transmittance of their sum (exact for the bands, however the haze turns it).
+inline bool liquid_free_flight(const DrinkMedium& m, glm::dvec3& left, double t_end, glm::dvec3& thr,
+                               double& t_scatter, Rng& rng) {
   const glm::dvec3 sigma_t = m.haze_absorption + m.haze;
   if (std::max(m.haze.x, std::max(m.haze.y, m.haze.z)) <= 0) {
-    thr *= glm::exp(-sigma_t * t_end) * m.colour.onward(depth, t_end);
-    depth += t_end;
+    thr *= glm::exp(-sigma_t * t_end) * m.colour.onward(left, t_end);
     return true;
   }
   const int c = std::min(2, int(rng.uniform() * 3));
   const double t = sigma_t[c] > 0 ? -std::log(1 - rng.uniform()) / sigma_t[c] : std::numeric_limits<double>::infinity();
   if (t < t_end) {
     const glm::dvec3 tr = glm::exp(-sigma_t * t);
-    thr *= tr * m.haze / channel_mean(sigma_t * tr) * m.colour.onward(depth, t);
-    depth += t;
+    thr *= tr * m.haze / channel_mean(sigma_t * tr) * m.colour.onward(left, t);
     t_scatter = t;
     return false;
   }
   const glm::dvec3 tr = glm::exp(-sigma_t * t_end);
-  thr *= tr / channel_mean(tr) * m.colour.onward(depth, t_end);
-  depth += t_end;
+  thr *= tr / channel_mean(tr) * m.colour.onward(left, t_end);
   return true;
 }
 

@@ -139,10 +139,10 @@ class Tracer {
     // (backdrop or head); none for the camera, or after a mirror or a refraction.
     MisVertex mis;
     int surfaces = 0, scatters = 0;
-    // How far the path has travelled in the drink it was last in (its colour's bands weigh
-    // the whole of it: DrinkMedium).
+    // The drink it was last in, and how its light is shared between that drink's colour
+    // bands (DrinkAbsorption::onward).
     int drink_obj = -1;
-    double drink_depth = 0;
+    glm::dvec3 drink_left(0.5);
     // With the screen as background, a light is seen only as the picture's are: in a
     // reflection off a surface seen from the air, or by a path a head scattered (the other
     // half of its light sampling).
@@ -165,10 +165,10 @@ class Tracer {
         const VesselMedia& m = media_[size_t(obj)];
         if (drink_obj != obj) {  // a drink the path has not crossed yet: its colour from the start
           drink_obj = obj;
-          drink_depth = 0;
+          drink_left = glm::dvec3(media_[size_t(obj)].drink.colour.share);
         }
         double t_scatter;
-        if (!liquid_free_flight(m.drink, drink_depth, t_end, thr, t_scatter, rng)) {
+        if (!liquid_free_flight(m.drink, drink_left, t_end, thr, t_scatter, rng)) {
           if (++scatters > settings_.max_scatters) break;
           ray.o = ray.at(t_scatter);
           ray.d = sample_hg(ray.d, 0.0, rng);  // haze: isotropic

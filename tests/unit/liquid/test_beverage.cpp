@@ -246,13 +246,18 @@ TEST(Beverage, APathsStretchesMultiplyToTheBandsOfTheirSum) {
   const DrinkAbsorption bands = drink_absorption(drink("stout"));
   for (double a : {0.0, 0.003, 0.02, 0.1})
     for (double b : {0.001, 0.01, 0.05}) {
-      const glm::dvec3 split = bands.onward(0.0, a) * bands.onward(a, b), whole = bands.transmittance(a + b);
+      glm::dvec3 left(bands.share);
+      const glm::dvec3 first = bands.onward(left, a), second = bands.onward(left, b);
+      const glm::dvec3 split = first * second, whole = bands.transmittance(a + b);
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(split[c], whole[c], 1e-12 + 1e-9 * whole[c]) << a << " " << b;
     }
   // Deep in the drink (10 m: everything absorbed long before) onward stays finite.
-  const glm::dvec3 deep = bands.onward(10.0, 0.01);
+  glm::dvec3 left(bands.share);
+  bands.onward(left, 10.0);
+  const glm::dvec3 deep = bands.onward(left, 0.01);
   for (int c = 0; c < 3; ++c) {
     EXPECT_TRUE(std::isfinite(deep[c]));
+    EXPECT_TRUE(std::isfinite(left[c]));
     EXPECT_GE(deep[c], 0.0);
     EXPECT_LE(deep[c], 1.0);
   }
@@ -264,7 +269,9 @@ TEST(Beverage, APathsStretchesMultiplyToTheBandsOfTheirSum) {
   l.srm = l.ebc = 0.0f;
   l.wine = glm::vec3(0.0f);
   l.absorption = {9.0f, 170.0f, 95.0f};
-  const glm::dvec3 t = drink_absorption(l).onward(0.05, 0.02);
+  glm::dvec3 shares(drink_absorption(l).share);
+  drink_absorption(l).onward(shares, 0.05);
+  const glm::dvec3 t = drink_absorption(l).onward(shares, 0.02);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(t[c], std::exp(-double(l.absorption[c]) * 0.02), 1e-7);
 }
 
