@@ -124,6 +124,23 @@ struct Band {
   double share, rate;
 };
 
+// The minimum of f over [a, b] by golden sections, one evaluation a step (f unimodal there).
+template <class F>
+double golden_min(const F& f, double a, double b, int steps) {
+  const double r = (std::sqrt(5.0) - 1) / 2;
+  double x1 = b - r * (b - a), x2 = a + r * (b - a), f1 = f(x1), f2 = f(x2);
+  for (int i = 0; i < steps; ++i) {
+    if (f1 < f2) {
+      b = x2, x2 = x1, f2 = f1;
+      x1 = b - r * (b - a), f1 = f(x1);
+    } else {
+      a = x1, x1 = x2, f1 = f2;
+      x2 = a + r * (b - a), f2 = f(x2);
+    }
+  }
+  return 0.5 * (a + b);
+}
+
 // The one rate that best gives a group's transmittance (share x its mean of e^(-k L))
 // over the fitted lengths: a golden-section search on log(rate) within the group's rates.
 Band fit_group(const std::array<double, kFitLengths>& target, double share, double lo, double hi) {
@@ -136,14 +153,7 @@ Band fit_group(const std::array<double, kFitLengths>& target, double share, doub
     }
     return e;
   };
-  double a = std::log(std::max(lo, 1e-6)), b = std::log(std::max(hi, 1e-6));
-  const double r = (std::sqrt(5.0) - 1) / 2;
-  for (int i = 0; i < 48 && b - a > 1e-7; ++i) {
-    const double x1 = b - r * (b - a), x2 = a + r * (b - a);
-    if (error(x1) < error(x2)) b = x2;
-    else a = x1;
-  }
-  return {share, std::exp(0.5 * (a + b))};
+  return {share, std::exp(golden_min(error, std::log(std::max(lo, 1e-6)), std::log(std::max(hi, 1e-6)), 32))};
 }
 
 }  // namespace
@@ -209,20 +219,13 @@ DrinkAbsorption spectrum_to_bands(const std::function<double(double)>& absorbanc
       return e;
     };
     for (int round = 0; round < 6; ++round)
-      for (int k = 0; k < 3; ++k) {
-        double a = k < 2 ? fit[size_t(k)] - 1.0 : 0.0, b = k < 2 ? fit[size_t(k)] + 1.0 : 0.999;
-        const double r = (std::sqrt(5.0) - 1) / 2;
+      for (std::size_t k = 0; k < 3; ++k) {
         std::array<double, 3> x = fit;
         const auto at = [&](double v) {
-          x[size_t(k)] = v;
+          x[k] = v;
           return error(x);
         };
-        for (int it = 0; it < 40; ++it) {
-          const double x1 = b - r * (b - a), x2 = a + r * (b - a);
-          if (at(x1) < at(x2)) b = x2;
-          else a = x1;
-        }
-        x[size_t(k)] = 0.5 * (a + b);
+        x[k] = golden_min(at, k < 2 ? fit[k] - 1.0 : 0.0, k < 2 ? fit[k] + 1.0 : 0.999, 32);
         if (error(x) < error(fit)) fit = x;
       }
     double fast = std::exp(fit[0]), slow = std::exp(fit[1]), share = fit[2];
