@@ -240,22 +240,22 @@ DrinkAbsorption spectrum_to_bands(const std::function<double(double)>& absorbanc
   return out;
 }
 
+std::function<double(double)> drink_spectrum(const LiquidParams& l) {
+  // (EBC through a float SRM, as srm_to_absorption takes it: the same colour either way.)
+  if (l.ebc > 0) return [srm = double(float(ebc_to_srm(l.ebc)))](double nm) { return beer_absorbance(srm, nm); };
+  if (l.srm > 0) return [srm = double(l.srm)](double nm) { return beer_absorbance(srm, nm); };
+  if (l.wine.x > 0 || l.wine.y > 0 || l.wine.z > 0) return [w = l.wine](double nm) { return wine_absorbance(w, nm); };
+  return {};
+}
+
 DrinkAbsorption drink_absorption(const LiquidParams& l) {
-  if (l.ebc > 0) {
-    const double srm = ebc_to_srm(l.ebc);
-    return spectrum_to_bands([srm](double nm) { return beer_absorbance(srm, nm); });
-  }
-  if (l.srm > 0) return spectrum_to_bands([srm = double(l.srm)](double nm) { return beer_absorbance(srm, nm); });
-  if (l.wine.x > 0 || l.wine.y > 0 || l.wine.z > 0)
-    return spectrum_to_bands([w = l.wine](double nm) { return wine_absorbance(w, nm); });
-  return DrinkAbsorption::uniform(l.absorption);
+  const auto spectrum = drink_spectrum(l);
+  return spectrum ? spectrum_to_bands(spectrum) : DrinkAbsorption::uniform(l.absorption);
 }
 
 glm::vec3 liquid_absorption(const LiquidParams& l, double metres) {
-  if (l.ebc > 0) return srm_to_absorption(float(ebc_to_srm(l.ebc)), metres);
-  if (l.srm > 0) return srm_to_absorption(l.srm, metres);
-  if (l.wine.x > 0 || l.wine.y > 0 || l.wine.z > 0) return wine_to_absorption(l.wine, metres);
-  return l.absorption;
+  const auto spectrum = drink_spectrum(l);
+  return spectrum ? spectrum_to_absorption(spectrum, metres) : l.absorption;
 }
 
 }  // namespace draught

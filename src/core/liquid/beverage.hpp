@@ -92,8 +92,12 @@ struct DrinkAbsorption {
 // into two groups, each group's rate the best single rate for it; the split whose sum is
 // nearest, then its two rates and share refined together (2.3 ms for three channels).
 DrinkAbsorption spectrum_to_bands(const std::function<double(double)>& absorbance_per_cm);
-// The drink's colour as bands, from the same figures as liquid_absorption (the first given
-// wins); liquid.absorption as given is one band.
+// The absorbance spectrum (decadic, of 1 cm, by wavelength in nm) of the drink's colour:
+// the first colour given wins, liquid.ebc > 0, then liquid.srm > 0, then liquid.wine (any
+// absorbance > 0); empty when it is given as liquid.absorption (no spectrum).
+std::function<double(double)> drink_spectrum(const LiquidParams&);
+// The drink's colour as bands, fitted to drink_spectrum; liquid.absorption as given is
+// one band.
 DrinkAbsorption drink_absorption(const LiquidParams&);
 
 // The absorption the renderer uses. The first colour given wins: liquid.ebc > 0, then

@@ -315,8 +315,8 @@ class Tracer {
   // half on through the wall (the FOG_ALBEDO of it left); a bead is a water lens: its
   // cap (the picture's normal, core bead_at) and the water-glass face each reflect or pass
   // by Fresnel (a ray the cap turns back re-enters the glass). Turned: the path goes on
-  // from p (ray, medium and throughput updated); Bare: no mist met and no bead there, the
-  // bare wall as any other.
+  // from p (the caller has set ray.o there; its direction, medium and throughput
+  // updated); Bare: no mist met and no bead there, the bare wall as any other.
   ColdWall cold_wall(const VesselMedia& m, int object, const glm::dvec3& p, const glm::dvec3& n, Ray& ray,
                      MediumKind& medium, int& obj, glm::dvec3& thr, Rng& rng) const {
     const glm::dvec3 pl = m.local_point(p);
@@ -327,7 +327,6 @@ class Tracer {
     const double mist = fog_at(m.fog, c.band, glm::vec3(pl)) * bead.clear * contract::kFogScatter;
     const glm::dvec3 out = m.to_world * nl;  // outward, world
     const double glass = m.glass_ior, water = contract::kWaterIor;
-    ray.o = p;
     if (mist > 0 && rng.uniform() < mist) {
       thr *= contract::kFogAlbedo;
       const bool outwards = rng.uniform() < 0.5;

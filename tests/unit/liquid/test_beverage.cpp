@@ -204,11 +204,6 @@ double level(double linear) {
   return 255.0 * (linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055);
 }
 
-std::function<double(double)> spectrum_of(const LiquidParams& l) {
-  if (l.ebc > 0) return [srm = ebc_to_srm(l.ebc)](double nm) { return beer_absorbance(srm, nm); };
-  if (l.srm > 0) return [srm = double(l.srm)](double nm) { return beer_absorbance(srm, nm); };
-  return [w = l.wine](double nm) { return wine_absorbance(w, nm); };
-}
 
 TEST(Beverage, TwoBandsFollowTheSpectrumFromAnEdgeToADeepBowl) {
   // Every shipped drink, from 1 mm to 16 cm: the bands' colour within a few 8-bit levels
@@ -220,7 +215,7 @@ TEST(Beverage, TwoBandsFollowTheSpectrumFromAnEdgeToADeepBowl) {
     const glm::vec3 one = liquid_absorption(l);
     double worst = 0, worst_one = 0;
     for (double L = 0.001; L <= 0.16 + 1e-9; L *= std::sqrt(2.0)) {
-      const glm::dvec3 truth = channel_transmittance(spectrum_of(l), L), fit = bands.transmittance(L);
+      const glm::dvec3 truth = channel_transmittance(drink_spectrum(l), L), fit = bands.transmittance(L);
       for (int c = 0; c < 3; ++c) {
         worst = std::max(worst, std::abs(level(fit[c]) - level(truth[c])));
         worst_one = std::max(worst_one, std::abs(level(std::exp(-double(one[c]) * L)) - level(truth[c])));
