@@ -335,7 +335,9 @@ struct TreeQueries {
 // step, and the gather walks the leaves in the point query's order, so a sample sums the
 // same points in the same order as TreeQueries::field (the GLSL twin's per-sample query)
 // and gets the same value: what is saved is the traversals, one per window instead of
-// one per sample.
+// one per sample. A jump over empty space finds the next entry and gathers the window
+// that starts there in one ordered traversal; a sample outside any step (the march's
+// first, at the root box) is a point query, not a window's gather.
 struct TreeRayQueries {
   static constexpr float kWindowSteps = 4.0f;
   struct Span {
@@ -377,7 +379,7 @@ struct TreeRayQueries {
       }
   }
   CloudSample field(glm::vec3 p, float t, glm::vec4* attrs) const {
-    if (!(t >= fa && t <= fb)) focus(t, t);
+    if (!(t >= fa && t <= fb)) return TreeQueries{tx, c}.field(p, t, attrs);
     CloudSample s;
     glm::vec4 a(0.0f);
     for (const Focused& f : focused) {
@@ -387,8 +389,67 @@ struct TreeRayQueries {
     if (attrs) *attrs = s.f > 0.0f ? a / s.f : glm::vec4(0.0f);
     return s;
   }
-  float next_entry(glm::vec3 o_, glm::vec3 d_, float tmin, float limit) const {
-    return TreeQueries{tx, c}.next_entry(o_, d_, tmin, limit);
+  // The first support entry at or after tmin (as TreeQueries::next_entry finds it), and
+  // the window from there gathered in the same traversal: boxes are pruned at the best
+  // entry so far plus the window, not at the entry itself.
+  float next_entry(glm::vec3, glm::vec3, float tmin, float limit) const {
+    const float span = kWindowSteps * kCloudStepFraction * c.min_support;
+    float best = limit;
+    window.clear();
+    wa = INFINITY;
+    wb = -INFINITY;
+    int stack[kCloudMaxDepth + 1];
+    float entry[kCloudMaxDepth + 1];
+    int sp = 0;
+    {
+      const NodeTexels r = node_texels(tx, c.root);
+      const float e = box_entry(r.a, r.b, o, inv, tmin - pad, best + span + pad);
+      if (e == INFINITY) return INFINITY;
+      stack[sp] = c.root;
+      entry[sp++] = e;
+    }
+    while (sp > 0) {
+      --sp;
+      if (!(entry[sp] < best + span + pad)) continue;
+      const int n = stack[sp];
+      const NodeTexels nd = node_texels(tx, n);
+      const int index = int(nd.a.w), count = int(nd.b.w);
+      if (count > 0) {
+        for (int i = index; i < index + count; ++i) {
+          float t0, t1;
+          if (!support_span(point_texel(tx, i), o, d, t0, t1) || t1 < tmin - pad) continue;
+          if (t1 >= tmin) best = std::min(best, std::max(t0, tmin));
+          if (t0 <= best + span + pad) window.push_back({i, t0, t1});
+        }
+        continue;
+      }
+      const float lim = best + span + pad;
+      const NodeTexels l = node_texels(tx, n + 1), r = node_texels(tx, index);
+      const float el = box_entry(l.a, l.b, o, inv, tmin - pad, lim), er = box_entry(r.a, r.b, o, inv, tmin - pad, lim);
+      const bool left_near = el <= er;
+      const float e_far = left_near ? er : el, e_near = left_near ? el : er;
+      const int far = left_near ? index : n + 1, near = left_near ? n + 1 : index;
+      if (e_far < lim) {
+        stack[sp] = far;
+        entry[sp++] = e_far;
+      }
+      if (e_near < lim) {
+        stack[sp] = near;
+        entry[sp++] = e_near;
+      }
+    }
+    if (!(best < limit)) {
+      window.clear();
+      return INFINITY;
+    }
+    // The window [best, best + span], its supports in the point query's order: the
+    // leaves' depth-first order is the texels' order (core/pointcloud/cloud_texels).
+    const float a = best, b = std::max(best, best + span);
+    std::erase_if(window, [&](const Span& s) { return !(s.t1 >= a - pad && s.t0 <= b + pad); });
+    std::sort(window.begin(), window.end(), [](const Span& x, const Span& y) { return x.i < y.i; });
+    wa = a;
+    wb = b;
+    return best;
   }
 };
 
