@@ -233,6 +233,7 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   const FoamParams& fp = vp.foam;
   r.thickness = float(fo.thickness);
   r.dome = float(fo.dome);
+  r.crater = {float(fo.crater_xz.x), float(fo.crater_xz.y), float(fo.crater_radius), float(fo.crater_depth)};
   r.density = fp.density;
   r.anisotropy = fp.anisotropy;
   r.foam_color = glm::vec3(foam_single_scattering_albedo(glm::dvec3(fp.color), fp.anisotropy));

@@ -9,6 +9,7 @@
 // them, and lacing rings left on the glass. All in the vessel's frame.
 #ifndef LIB_FOAM_HEAD_GLSL
 #define LIB_FOAM_HEAD_GLSL
+#include "generated/constants.glsl"
 #include "generated/frame.glsl"
 #include "lib/common/noise.glsl"
 #include "lib/optics/fresnel.glsl"
@@ -40,9 +41,16 @@ BigBubble big_bubble(Vessel v, int i) {
 
 // The head's thickness above the liquid at (x, z): domed or concave (as core/foam
 // FoamFrame::thickness_at).
+// A pour's stream pushes the foam aside where it plunges in: a dimple, the foam heaped
+// in a collar around it (CRATER_COLLAR high at CRATER_COLLAR_AT radii).
 float foam_thickness_at(Vessel v, ObjectFoam f, vec2 xz) {
   float u2 = min(dot(xz, xz) / (v.liquid.wave_radius * v.liquid.wave_radius), 1.5);
-  return f.thickness * max(1.0 + f.dome * (1.0 - 2.0 * u2), 0.1);
+  float t = f.thickness * max(1.0 + f.dome * (1.0 - 2.0 * u2), 0.1);
+  if (f.crater.w > 0.0 && f.crater.z > 0.0) {
+    float s = length(xz - f.crater.xy) / f.crater.z, c = (s - CRATER_COLLAR_AT) / 0.5;
+    t *= 1.0 - f.crater.w * (exp(-s * s) - CRATER_COLLAR * exp(-c * c));
+  }
+  return t;
 }
 
 // Bubbles are bigger low in the head (they coarsen as liquid drains out of it): at the
@@ -242,7 +250,7 @@ vec3 lacing_light(Vessel v, ObjectFoam f, vec3 d) {
 bool foam_interval(Vessel v, ObjectFoam f, vec3 o, vec3 d, inout float t0, inout float t1) {
   vec3 n = v.liquid.plane_normal;
   float waves = abs(v.liquid.wave_ring) + abs(v.liquid.wave_cos2a) + abs(v.liquid.wave_sin2a);
-  float top_max = f.thickness * (1.0 + abs(f.dome)) + waves + 0.006;
+  float top_max = f.thickness * (1.0 + abs(f.dome)) * (1.0 + CRATER_COLLAR * f.crater.w) + waves + 0.006;
   float h0 = dot(n, o) - v.liquid.plane_offset, dh = dot(n, d);
   float lo = -waves;
   if (abs(dh) > 1e-9) {

@@ -74,7 +74,12 @@ BigBubble FoamState::bubble(int slot, double radius) const {
 
 double FoamFrame::thickness_at(double x, double z, double radius) const {
   const double u2 = std::min((x * x + z * z) / std::max(radius * radius, 1e-12), 1.5);
-  return thickness * std::max(1.0 + dome * (1.0 - 2.0 * u2), 0.1);
+  double t = thickness * std::max(1.0 + dome * (1.0 - 2.0 * u2), 0.1);
+  if (crater_depth > 0 && crater_radius > 0) {
+    const double s = glm::length(glm::dvec2(x, z) - crater_xz) / crater_radius, c = (s - kCraterCollarAt) / 0.5;
+    t *= 1 - crater_depth * (std::exp(-s * s) - kCraterCollar * std::exp(-c * c));
+  }
+  return t;
 }
 
 std::vector<PlacedBubble> place_big_bubbles(const FoamFrame& fo, const glm::dvec3& n, double offset,

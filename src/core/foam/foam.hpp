@@ -26,9 +26,19 @@ struct FoamFrame {
   double dome = 0;       // thickness scales by 1 + dome (1 - 2 u^2), u = distance from axis / radius
   std::vector<double> lacing;  // heights (glass frame y) of the rings left on the inner wall
   std::vector<BigBubble> bubbles;
+  // Where a pour's stream plunges into the head it pushes the foam aside: a dimple of
+  // `crater_radius` (m) at crater_xz (glass frame) whose middle is `crater_depth` of the
+  // thickness deep (0: none; at most kMaxCraterDepth), the foam heaped in a collar around
+  // it (kCraterCollar of that depth, at kCraterCollarAt radii).
+  glm::dvec2 crater_xz{0.0};
+  double crater_radius = 0, crater_depth = 0;
+  static constexpr double kMaxCraterDepth = contract::kCraterMaxDepth, kCraterCollar = contract::kCraterCollar,
+                          kCraterCollarAt = contract::kCraterCollarAt;
   // The thickness at (x, z) in the glass frame, for a surface of this radius (as
   // shaders/lib/foam/head.glsl foam_thickness_at).
   double thickness_at(double x, double z, double radius) const;
+  // The most thickness_at gives over the mean thickness's (1 + |dome|): the collar's.
+  double crater_headroom() const { return 1 + kCraterCollar * crater_depth; }
 };
 
 // A big bubble where it sits in the picture: on the head's top over the liquid surface

@@ -53,7 +53,8 @@ class HeadVolume {
   const Vessel* vessel_ = nullptr;
   LiquidPlane liquid_;
   glm::dvec4 clip_{0, 0, 0, 1};
-  double thickness_ = 0, dome_ = 0, radius_ = 1;  // radius: the surface's, for the dome
+  FoamFrame foam_;      // its thickness_at (the dome, a pour's crater)
+  double radius_ = 1;   // the surface's, for the dome
   double density_ = 0, bubble_size_ = 1, detail_ = 0;
   double majorant_ = 0;
   std::vector<PlacedBubble> bubbles_;

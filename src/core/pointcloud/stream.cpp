@@ -273,6 +273,21 @@ double PourStream::rope_radius() const {
   return std::min(r[r.size() / 2], p_.max_radius);
 }
 
+std::optional<PourStream::Landing> PourStream::landing() const {
+  const double t = time();
+  for (const Parcel& q : parcels_) {  // oldest first
+    if (!(q.flow > 0)) continue;
+    const double speed = std::max(glm::length(velocity_of(q, t)), p_.min_speed);
+    Landing l;
+    l.position = at(q, t);
+    l.position.y = target_;
+    l.radius = std::min(std::sqrt(q.flow / (M_PI * speed)), p_.max_radius);
+    l.flow = q.flow;
+    return l;
+  }
+  return std::nullopt;
+}
+
 PointCloud PourStream::cloud() const {
   PointCloud c;
   c.default_radius = static_cast<float>(p_.max_radius);

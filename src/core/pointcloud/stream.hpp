@@ -93,6 +93,15 @@ class PourStream {
   // (continuity), m: how thick the stream is seen, once a sheet has become a rope. 0 when
   // nothing is in flight.
   double rope_radius() const;
+  // Where the stream meets its catching plane now: the oldest parcel in flight (the
+  // lowest) on the plane, and the stream's continuity radius and flow there. nullopt when
+  // nothing carrying flow is in flight.
+  struct Landing {
+    glm::dvec3 position{0.0};  // m, world
+    double radius = 0;         // m
+    double flow = 0;           // m^3/s
+  };
+  std::optional<Landing> landing() const;
   // m^3 so far: emitted, absorbed at the target, and in the air now.
   double emitted_volume() const { return emitted_.value(); }
   double arrived_volume() const { return arrived_.value(); }

@@ -44,8 +44,7 @@ Head default_head() {
   return h;
 }
 
-TEST(HeadVolume, DensityStaysUnderItsBoundAndInsideItsInterval) {
-  const Head h = default_head();
+void expect_density_under_bound_and_inside_interval(const Head& h) {
   const HeadVolume head = h.volume();
   ASSERT_FALSE(head.empty());
   std::mt19937 rng(5);
@@ -68,6 +67,27 @@ TEST(HeadVolume, DensityStaysUnderItsBoundAndInsideItsInterval) {
     EXPECT_GE(t1, 1.0);
   }
   EXPECT_GT(inside, 40);  // the test saw the head
+}
+
+TEST(HeadVolume, DensityStaysUnderItsBoundAndInsideItsInterval) { expect_density_under_bound_and_inside_interval(default_head()); }
+
+// Where a pour's stream plunges in, the head dips to a tenth of its thickness and heaps
+// the foam in a collar around the dimple; the interval still holds the collar.
+TEST(HeadVolume, APoursCraterDipsAndItsCollarStaysInsideTheInterval) {
+  Head h = default_head();
+  const double radius = 0.012, x_collar = 0.01 + FoamFrame::kCraterCollarAt * radius;
+  const double flat = h.volume().thickness_at(0.01, 0.0), flat_collar = h.volume().thickness_at(x_collar, 0.0),
+               flat_far = h.volume().thickness_at(-0.04, 0.0);
+  FoamFrame& fo = h.frame.vessels[0].foam;
+  fo.crater_xz = {0.01, 0.0};
+  fo.crater_radius = radius;
+  fo.crater_depth = FoamFrame::kMaxCraterDepth;
+  const HeadVolume head = h.volume();
+  EXPECT_NEAR(head.thickness_at(0.01, 0.0), flat * (1 - FoamFrame::kMaxCraterDepth), 0.01 * flat);
+  EXPECT_GT(head.thickness_at(x_collar, 0.0), flat_collar * (1 + 0.5 * FoamFrame::kCraterCollar * fo.crater_depth))
+      << "the foam pushed aside heaps in a collar";
+  EXPECT_NEAR(head.thickness_at(-0.04, 0.0), flat_far, 1e-4 * flat) << "far from the dimple the head is as it was";
+  expect_density_under_bound_and_inside_interval(h);
 }
 
 TEST(HeadVolume, NoFoamUnderTheLiquidOrOutsideTheCavity) {

@@ -71,6 +71,34 @@ TEST(Pour, TheLevelRisesAsTheStreamArrivesAndTheVolumeAddsUp) {
   EXPECT_FALSE(sim.pouring());
 }
 
+// The stream pushes the head aside where it plunges in: a dimple under the stream while
+// it lands, which the foam fills again once the last of it has landed.
+TEST(Pour, TheStreamPlungesThroughTheHeadInADimpleThatClosesAfterIt) {
+  Simulation sim(lager_in_pint(0.8f));
+  const double seconds = 2.0;
+  sim.pour_over(seconds);
+  for (int i = 1; i <= int(1.5 / kDt); ++i) sim.step(MotionSample{});
+  ASSERT_TRUE(sim.pouring());
+  const FoamFrame mid = sim.frame().foam;
+  EXPECT_NEAR(mid.crater_depth, FoamFrame::kMaxCraterDepth, 0.01) << "open while the stream lands";
+  // Under the stream: its lowest points over the dimple's middle (the glass stands at
+  // the origin, upright).
+  const std::vector<CloudFrame> streams = sim.streams();
+  ASSERT_EQ(streams.size(), 1u);
+  glm::vec3 lowest(0.0f, 1e9f, 0.0f);
+  for (const glm::vec3& q : streams[0].points->position)
+    if (q.y < lowest.y) lowest = q;
+  EXPECT_LT(glm::length(glm::dvec2(lowest.x, lowest.z) - mid.crater_xz), 0.5 * mid.crater_radius);
+  EXPECT_GT(mid.crater_radius, 0.003);
+  EXPECT_LT(mid.crater_radius, 0.03);
+  const double r = sim.vessel().inner_radius(sim.vessel().fill_height(sim.fraction()));
+  EXPECT_LT(mid.thickness_at(mid.crater_xz.x, mid.crater_xz.y, r), 0.2 * mid.thickness_at(-0.8 * r, 0.0, r));
+  // Once the last of it has landed the foam flows back within a second or so.
+  for (int i = 1; i <= int(2.5 / kDt); ++i) sim.step(MotionSample{});
+  ASSERT_FALSE(sim.pouring());
+  EXPECT_EQ(sim.frame().foam.crater_depth, 0.0);
+}
+
 TEST(Pour, NoDurationFillsAtOnce) {
   Simulation sim(lager_in_pint(0.6f));
   sim.set_fraction(0.1);
