@@ -700,6 +700,8 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
     const auto coarse = [](double x, double step) { return std::round(x / step) * step; };
     put(coarse(v.foam.thickness, 5e-4), coarse(v.foam.dome, 0.02), v.params.foam.density, v.params.foam.bubble_size,
         v.params.foam.detail);
+    put(coarse(v.foam.crater_depth, 0.1), coarse(v.foam.crater_xz.x, 2e-3), coarse(v.foam.crater_xz.y, 2e-3),
+        coarse(v.foam.crater_radius, 1e-3));  // (a pour's dimple: its stream retraces the map anyway)
     put(geo.vessels[i].clip.x, geo.vessels[i].clip.y, geo.vessels[i].clip.z, geo.vessels[i].clip.w);
   }
   // The droplets as the march sees them, and each cloud by its points' version (a new one
