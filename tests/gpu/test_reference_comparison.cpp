@@ -158,6 +158,12 @@ TEST_P(ReferenceComparison, RegionsAgreeWithinTheirBounds) {
       region[size_t(y) * size_t(n) + size_t(x)] = r;
     }
   RegionStats stats[kRegions];
+  // With DRAUGHT_COMPARISON_DUMP each pixel of one region is printed: the foam's, or
+  // DRAUGHT_COMPARISON_REGION's (glass, liquid, foam, droplets, cloud).
+  int listed = int(Region::Foam);
+  if (const char* want = std::getenv("DRAUGHT_COMPARISON_REGION"))
+    for (Region r : {Region::Glass, Region::Liquid, Region::Foam, Region::Droplets, Region::Cloud})
+      if (std::string(want) == region_name(r)) listed = int(r);
   for (int y = 1; y + 1 < rows; ++y)
     for (int x = 1; x + 1 < n; ++x) {
       const int r = region[size_t(y) * size_t(n) + size_t(x)];
@@ -168,9 +174,9 @@ TEST_P(ReferenceComparison, RegionsAgreeWithinTheirBounds) {
       const std::uint8_t* a = picture.px(x, y);
       const std::uint8_t* b = reference.px(x, y);
       stats[r].de.push_back(ciede2000(srgb8_to_lab(a[0], a[1], a[2]), srgb8_to_lab(b[0], b[1], b[2])));
-      if (std::getenv("DRAUGHT_COMPARISON_DUMP") && r == int(Region::Foam))
-        std::printf("  foam (%d, %d): picture %d %d %d, reference %d %d %d: %.2f\n", x, y, a[0], a[1], a[2], b[0], b[1],
-                    b[2], stats[r].de.back());
+      if (std::getenv("DRAUGHT_COMPARISON_DUMP") && r == listed)
+        std::printf("  %s (%d, %d): picture %d %d %d, reference %d %d %d: %.2f\n", region_name(Region(r)), x, y, a[0],
+                    a[1], a[2], b[0], b[1], b[2], stats[r].de.back());
     }
 
   // DRAUGHT_COMPARISON_DUMP=folder: the picture, the reference and a map of the
