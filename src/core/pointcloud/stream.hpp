@@ -111,8 +111,9 @@ class PourStream {
   // The most parcels emitted in one step (a very thin, fast stream is drawn sparser:
   // it would break into drops anyway).
   static constexpr int kMaxPerStep = 64;
-  // Over a lip: the parcels side by side across the sheet (its strips).
-  static constexpr int kAcross = 12;
+  // Over a lip: the parcels side by side across the sheet (its strips). Twenty-four: with
+  // twelve the sheet's strips showed as ribs across a room (docs/POINT_CLOUDS.md).
+  static constexpr int kAcross = 24;
 
  private:
   // A Neumaier-compensated sum.
