@@ -60,6 +60,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/bubbles/bubbles.cpp
   src/core/bubbles/bubble_view.cpp
   src/core/reference/intersect.cpp
+  src/core/reference/decal_optics.cpp
   src/core/reference/optics.cpp
   src/core/reference/bodies.cpp
   src/core/reference/path_tracer.cpp

@@ -8,6 +8,7 @@
 #include "core/math/channels.hpp"
 #include "core/math/random.hpp"
 #include "core/reference/bodies.hpp"
+#include "core/reference/decal_optics.hpp"
 #include "core/reference/media.hpp"
 #include "core/reference/free_flight.hpp"
 #include "core/reference/optics.hpp"
@@ -16,9 +17,11 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <limits>
 #include <memory>
+#include <string>
 #include <thread>
 
 namespace draught {
@@ -96,7 +99,8 @@ struct Lane {
 
 class PhotonTracer {
  public:
-  PhotonTracer(const FrameState& f, const FloorLightMap& map) : geo_(scene_geometry(f)), bodies_(f, true), map_(map) {
+  PhotonTracer(const FrameState& f, const FloorLightMap& map)
+      : geo_(scene_geometry(f, true)), bodies_(f, true), map_(map) {  // (with the walls' decals: they cast shadows)
     // The heads without their big bubbles (ignored, as the rising bubbles).
     frames_.reserve(f.vessels.size());
     for (const VesselFrame& vf : f.vessels) {
@@ -202,13 +206,35 @@ class PhotonTracer {
         continue;
       }
       const Medium& m = media_[size_t(h.object)];
-      const bool below = geo_.vessels[size_t(h.object)].liquid.below(m.local_point(p));
+      const VesselGeometry& vg = geo_.vessels[size_t(h.object)];
+      const bool below = vg.liquid.below(m.local_point(p));
       const MediumKind next = medium_across(h.m, medium, below);
       const glm::dvec3 n = glm::dot(h.n, ray.d) < 0 ? h.n : -h.n;
       const double n1 = m.ior(medium), n2 = m.ior(next);
       const double F = fresnel_dielectric(-glm::dot(n, ray.d), n1, n2);
       ray.o = p;
-      fresnel_turn(ray, n, n1, n2, F, rng.uniform(), next, h.object, medium, obj);
+      // A decal on the wall, as the path tracer meets it: from the air under the surface's
+      // gloss (Fresnel first), from inside before it. Its ink, frost or metal turns the
+      // photon and takes its colour: a logo casts its shadow, tinted.
+      double u = rng.uniform();
+      const bool wall = h.m == Material::GlassOuter || h.m == Material::GlassInner;
+      const DecalSample decal = vg.decals && wall ? vg.decals->sample(*vg.vessel, h.m == Material::GlassInner, m.local_point(p))
+                                                  : DecalSample{};
+      if (decal.cover > 0) {
+        const double before_decal = medium == MediumKind::Air ? F : 0.0;
+        const double share = medium == MediumKind::Air ? (1 - F) * decal.cover : decal.cover;
+        if (u >= before_decal && u < before_decal + share) {
+          const glm::dvec3 untinted = power;
+          if (const std::optional<glm::dvec3> side = decal_turn(decal, n, next, h.object, ray, medium, obj, power, rng)) {
+            double cos_t;
+            ray.d = decal_diffuse_direction(*side, rng, cos_t);
+          }
+          lane.stats.absorbed += untinted - power;
+          continue;
+        }
+        if (medium != MediumKind::Air) u = (u - share) / std::max(1 - share, 1e-12);
+      }
+      fresnel_turn(ray, n, n1, n2, F, u, next, h.object, medium, obj);
     }
   }
 
@@ -703,6 +729,12 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
     put(coarse(v.foam.crater_depth, 0.1), coarse(v.foam.crater_xz.x, 2e-3), coarse(v.foam.crater_xz.y, 2e-3),
         coarse(v.foam.crater_radius, 1e-3));  // (a pour's dimple: its stream retraces the map anyway)
     put(geo.vessels[i].clip.x, geo.vessels[i].clip.y, geo.vessels[i].clip.z, geo.vessels[i].clip.w);
+    // Its decals (they cast shadows): each layer's file by name and its placement and look.
+    for (const DecalParams* d : {&v.params.decal_outer, &v.params.decal_inner}) {
+      put(double(std::hash<std::string>{}(d->file) % 1000003), d->kind, d->angle, d->height, d->width, d->repeat,
+          d->opacity, d->roughness);
+      put3(d->color);
+    }
   }
   // The droplets as the march sees them, and each cloud by its points' version (a new one
   // whenever they move: an animated cloud is traced again each frame it moves).

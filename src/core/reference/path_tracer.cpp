@@ -1,5 +1,6 @@
 #include "core/reference/path_tracer.hpp"
 
+
 #include "core/condensation/wall_grid.hpp"
 #include "core/environment/environment_sampling.hpp"
 
@@ -11,6 +12,7 @@
 #include "core/math/random.hpp"
 #include "core/output/tonemap.hpp"
 #include "core/reference/bodies.hpp"
+#include "core/reference/decal_optics.hpp"
 #include "core/reference/media.hpp"
 #include "core/reference/free_flight.hpp"
 #include "core/reference/optics.hpp"
@@ -31,10 +33,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kEps = 1e-7;  // where a path starts again past the surface it left
-// Of the light an etched (frosted) decal scatters, the part it sends back to the side it
-// came from; the rest goes through, scattered (the picture's lib/vessel/decal.glsl uses
-// the same share).
-constexpr double kFrostBackscatter = 0.2;
 
 double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 
@@ -408,27 +406,15 @@ class Tracer {
   bool decal_event(const DecalSample& decal, const glm::dvec3& n, MediumKind next, int object, Ray& ray,
                    MediumKind& medium, int& obj, glm::dvec3& thr, glm::dvec3& L, MisVertex& mis, Rng& rng) const {
     const glm::dvec3 p = ray.o;
-    thr *= decal.tint;
-    if (decal.kind == DecalKind::Metallic) {
-      // A rough mirror: the reflection about a microfacet normal drawn from GGX (alpha =
-      // roughness squared), its colour the decal's (masking left out).
-      const double a = decal.roughness * decal.roughness, u = rng.uniform();
-      const double cos_h = std::sqrt((1 - u) / (1 + (a * a - 1) * u));
-      const glm::dvec3 d = reflect_dir(ray.d, around(n, cos_h, 2 * kPi * rng.uniform()));
-      ray.d = glm::dot(d, n) > 0 ? d : reflect_dir(ray.d, n);
+    const std::optional<glm::dvec3> side = decal_turn(decal, n, next, object, ray, medium, obj, thr, rng);
+    if (!side) {  // metal: a rough mirror
       mis.pdf = -1;
       return max3(thr) > 0;
     }
-    glm::dvec3 side = n;  // the side the light leaves to
-    if (decal.kind == DecalKind::Etched && rng.uniform() >= kFrostBackscatter) {
-      side = -n;
-      medium = next;
-      obj = next == MediumKind::Air ? -1 : object;
-    }
-    L += thr * direct_light(p, side, ray.d, 0.0, rng);
-    const double cos_t = std::sqrt(rng.uniform());
-    ray.d = around(side, cos_t, 2 * kPi * rng.uniform());
-    mis = {cos_t / kPi, p, side};
+    L += thr * direct_light(p, *side, ray.d, 0.0, rng);
+    double cos_t;
+    ray.d = decal_diffuse_direction(*side, rng, cos_t);
+    mis = {cos_t / kPi, p, *side};
     return max3(thr) > 0;
   }
 

@@ -4,7 +4,8 @@
 // absorbed and sent away; a full lager focuses a caustic brighter than the open floor; a
 // tipped glass's shadow moves; a glass cut away entirely casts none; a seed gives one map
 // whatever the thread count; droplets and clouds cast shadows too (opaque droplets: what
-// shadow rays through the droplets' march find), keeping the energy, keyed by their state.
+// shadow rays through the droplets' march find), keeping the energy, keyed by their state;
+// so do decals on the walls.
 #include "core/droplets/field.hpp"
 #include "core/environment/floor_light.hpp"
 #include "core/math/random.hpp"
@@ -167,6 +168,35 @@ TEST(FloorLight, TheChangeIntegratesToMinusThePowerAbsorbedAndSentAway) {
     EXPECT_NEAR(s.landed[c] + s.absorbed[c] + s.escaped[c], s.hit[c], 0.02 * s.hit[c]) << "channel " << c;
   }
   EXPECT_LT(mean(s.outside), 3e-3 * mean(s.hit)) << "the rect misses where the light lands";
+}
+
+// A decal on the wall is in the photons' way as the reference meets it: a black enamel
+// band round an empty pint absorbs what it catches, so the shadow deepens and the energy
+// still adds up; the map's inputs follow the decal.
+TEST(FloorLight, ADecalCastsItsShadowAndTheEnergyAddsUp) {
+  const std::vector<std::string> band = {"liquid.fill=0", "decal_outer.file=gold-band", "decal_outer.width=0",
+                                         "decal_outer.height=0.07", "decal_outer.color=0,0,0"};
+  const FrameState clear = pint({"liquid.fill=0"}), banded = pint(band);
+  const FloorLightMap a = compute_floor_light(clear, budget(200000)), b = compute_floor_light(banded, budget(200000));
+  glm::dvec3 change_a(0.0), change_b(0.0);
+  for (int j = 0; j < a.height; ++j)
+    for (int i = 0; i < a.width; ++i) {
+      change_a += (a.at(i, j) - open_light(clear, a, i, j)) * a.texel_area();
+      change_b += (b.at(i, j) - open_light(banded, b, i, j)) * b.texel_area();
+    }
+  std::printf("clear pint: absorbed %.4f W of %.4f, change %.4f W; with a black band: absorbed %.4f W, change %.4f W\n",
+              mean(a.stats.absorbed), mean(a.stats.hit), mean(change_a), mean(b.stats.absorbed), mean(change_b));
+  EXPECT_GT(mean(b.stats.absorbed), mean(a.stats.absorbed) + 0.05 * mean(b.stats.hit)) << "the band absorbs";
+  EXPECT_LT(mean(change_b), mean(change_a) - 0.05 * mean(b.stats.hit)) << "the shadow deepens";
+  const glm::dvec3 lost = b.stats.absorbed + b.stats.escaped;
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(change_b[c], -lost[c], 0.02 * b.stats.hit[c]) << "channel " << c;
+    EXPECT_NEAR(b.stats.landed[c] + b.stats.absorbed[c] + b.stats.escaped[c], b.stats.hit[c], 0.02 * b.stats.hit[c]);
+  }
+  EXPECT_NE(floor_light_inputs(clear), floor_light_inputs(banded));
+  EXPECT_NE(floor_light_inputs(banded), floor_light_inputs(pint({"liquid.fill=0", "decal_outer.file=gold-band",
+                                                                 "decal_outer.width=0", "decal_outer.height=0.05",
+                                                                 "decal_outer.color=0,0,0"})));
 }
 
 // What the picture reads is the map over the exact open light, where a photon changed it
