@@ -220,19 +220,14 @@ class PhotonTracer {
       const bool wall = h.m == Material::GlassOuter || h.m == Material::GlassInner;
       const DecalSample decal = vg.decals && wall ? vg.decals->sample(*vg.vessel, h.m == Material::GlassInner, m.local_point(p))
                                                   : DecalSample{};
-      if (decal.cover > 0) {
-        const double before_decal = medium == MediumKind::Air ? F : 0.0;
-        const double share = medium == MediumKind::Air ? (1 - F) * decal.cover : decal.cover;
-        if (u >= before_decal && u < before_decal + share) {
-          const glm::dvec3 untinted = power;
-          if (const std::optional<glm::dvec3> side = decal_turn(decal, n, next, h.object, ray, medium, obj, power, rng)) {
-            double cos_t;
-            ray.d = decal_diffuse_direction(*side, rng, cos_t);
-          }
-          lane.stats.absorbed += untinted - power;
-          continue;
+      if (meets_decal(u, F, decal.cover, medium == MediumKind::Air)) {
+        const glm::dvec3 untinted = power;
+        if (const std::optional<glm::dvec3> side = decal_turn(decal, n, next, h.object, ray, medium, obj, power, rng)) {
+          double cos_t;
+          ray.d = decal_diffuse_direction(*side, rng, cos_t);
         }
-        if (medium != MediumKind::Air) u = (u - share) / std::max(1 - share, 1e-12);
+        lane.stats.absorbed += untinted - power;
+        continue;
       }
       fresnel_turn(ray, n, n1, n2, F, u, next, h.object, medium, obj);
     }

@@ -252,6 +252,49 @@ void walk_tree(const CloudTexels& tx, int root, Enter enter, Leaf leaf) {
   }
 }
 
+// Nearest first through the tree from `root` along o + t d (inv = 1 / d): a node is
+// entered while its box's entry, from `from` on, is below `bound()` (which the leaves may
+// lower as they go), its nearer child next (the farther pushed first); `leaf(i)` sees each
+// point texel of the leaves entered. The shader's ordered nearest-entry traversal.
+template <class Bound, class Leaf>
+void walk_nearest_first(const CloudTexels& tx, int root, glm::vec3 o, glm::vec3 inv, float from, Bound bound, Leaf leaf) {
+  int stack[kCloudMaxDepth + 1];
+  float entry[kCloudMaxDepth + 1];
+  int sp = 0;
+  {
+    const NodeTexels r = node_texels(tx, root);
+    const float e = box_entry(r.a, r.b, o, inv, from, bound());
+    if (e == INFINITY) return;
+    stack[sp] = root;
+    entry[sp++] = e;
+  }
+  while (sp > 0) {
+    --sp;
+    if (!(entry[sp] < bound())) continue;
+    const int n = stack[sp];
+    const NodeTexels nd = node_texels(tx, n);
+    const int index = int(nd.a.w), count = int(nd.b.w);
+    if (count > 0) {
+      for (int i = index; i < index + count; ++i) leaf(i);
+      continue;
+    }
+    const float lim = bound();
+    const NodeTexels l = node_texels(tx, n + 1), r = node_texels(tx, index);
+    const float el = box_entry(l.a, l.b, o, inv, from, lim), er = box_entry(r.a, r.b, o, inv, from, lim);
+    const bool left_near = el <= er;
+    const float e_far = left_near ? er : el, e_near = left_near ? el : er;
+    const int far = left_near ? index : n + 1, near = left_near ? n + 1 : index;
+    if (e_far < lim) {
+      stack[sp] = far;
+      entry[sp++] = e_far;
+    }
+    if (e_near < lim) {
+      stack[sp] = near;
+      entry[sp++] = e_near;
+    }
+  }
+}
+
 // Each point whose support the segment [a, b] of o + t d (d unit, inv = 1 / d) crosses:
 // found(i, t0, t1), its span on the ray.
 template <class Found>
@@ -283,46 +326,13 @@ struct TreeQueries {
     return s;
   }
   float next_entry(glm::vec3 o, glm::vec3 d, float tmin, float limit) const {
-    const glm::vec3 inv = 1.0f / d;
     float best = limit;
-    int stack[kCloudMaxDepth + 1];
-    float entry[kCloudMaxDepth + 1];
-    int sp = 0;
-    {
-      const NodeTexels r = node_texels(tx, c.root);
-      const float e = box_entry(r.a, r.b, o, inv, tmin, best);
-      if (e == INFINITY) return INFINITY;
-      stack[sp] = c.root;
-      entry[sp++] = e;
-    }
-    while (sp > 0) {
-      --sp;
-      if (!(entry[sp] < best)) continue;
-      const int n = stack[sp];
-      const NodeTexels nd = node_texels(tx, n);
-      const int index = int(nd.a.w), count = int(nd.b.w);
-      if (count > 0) {
-        for (int i = index; i < index + count; ++i) {
+    walk_nearest_first(
+        tx, c.root, o, 1.0f / d, tmin, [&] { return best; },
+        [&](int i) {
           float t0, t1;
           if (support_span(point_texel(tx, i), o, d, t0, t1) && t1 >= tmin) best = std::min(best, std::max(t0, tmin));
-        }
-        continue;
-      }
-      const NodeTexels l = node_texels(tx, n + 1), r = node_texels(tx, index);
-      const float el = box_entry(l.a, l.b, o, inv, tmin, best), er = box_entry(r.a, r.b, o, inv, tmin, best);
-      // The farther child first onto the stack, so the nearer one is taken next.
-      const bool left_near = el <= er;
-      const float e_far = left_near ? er : el, e_near = left_near ? el : er;
-      const int far = left_near ? index : n + 1, near = left_near ? n + 1 : index;
-      if (e_far < best) {
-        stack[sp] = far;
-        entry[sp++] = e_far;
-      }
-      if (e_near < best) {
-        stack[sp] = near;
-        entry[sp++] = e_near;
-      }
-    }
+        });
     return best < limit ? best : INFINITY;
   }
 };
@@ -398,46 +408,14 @@ struct TreeRayQueries {
     window.clear();
     wa = INFINITY;
     wb = -INFINITY;
-    int stack[kCloudMaxDepth + 1];
-    float entry[kCloudMaxDepth + 1];
-    int sp = 0;
-    {
-      const NodeTexels r = node_texels(tx, c.root);
-      const float e = box_entry(r.a, r.b, o, inv, tmin - pad, best + span + pad);
-      if (e == INFINITY) return INFINITY;
-      stack[sp] = c.root;
-      entry[sp++] = e;
-    }
-    while (sp > 0) {
-      --sp;
-      if (!(entry[sp] < best + span + pad)) continue;
-      const int n = stack[sp];
-      const NodeTexels nd = node_texels(tx, n);
-      const int index = int(nd.a.w), count = int(nd.b.w);
-      if (count > 0) {
-        for (int i = index; i < index + count; ++i) {
+    walk_nearest_first(
+        tx, c.root, o, inv, tmin - pad, [&] { return best + span + pad; },
+        [&](int i) {
           float t0, t1;
-          if (!support_span(point_texel(tx, i), o, d, t0, t1) || t1 < tmin - pad) continue;
+          if (!support_span(point_texel(tx, i), o, d, t0, t1) || t1 < tmin - pad) return;
           if (t1 >= tmin) best = std::min(best, std::max(t0, tmin));
           if (t0 <= best + span + pad) window.push_back({i, t0, t1});
-        }
-        continue;
-      }
-      const float lim = best + span + pad;
-      const NodeTexels l = node_texels(tx, n + 1), r = node_texels(tx, index);
-      const float el = box_entry(l.a, l.b, o, inv, tmin - pad, lim), er = box_entry(r.a, r.b, o, inv, tmin - pad, lim);
-      const bool left_near = el <= er;
-      const float e_far = left_near ? er : el, e_near = left_near ? el : er;
-      const int far = left_near ? index : n + 1, near = left_near ? n + 1 : index;
-      if (e_far < lim) {
-        stack[sp] = far;
-        entry[sp++] = e_far;
-      }
-      if (e_near < lim) {
-        stack[sp] = near;
-        entry[sp++] = e_near;
-      }
-    }
+        });
     if (!(best < limit)) {
       window.clear();
       return INFINITY;

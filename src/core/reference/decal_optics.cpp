@@ -3,10 +3,19 @@
 #include "core/math/basis.hpp"
 #include "core/reference/optics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace draught {
+
+bool meets_decal(double& u, double F, double cover, bool from_air) {
+  if (!(cover > 0)) return false;
+  const double before = from_air ? F : 0.0, share = from_air ? (1 - F) * cover : cover;
+  if (u >= before && u < before + share) return true;
+  if (!from_air) u = (u - share) / std::max(1 - share, 1e-12);
+  return false;
+}
 
 std::optional<glm::dvec3> decal_turn(const DecalSample& decal, const glm::dvec3& n, MediumKind next, int object,
                                      Ray& ray, MediumKind& medium, int& obj, glm::dvec3& thr, Rng& rng) {

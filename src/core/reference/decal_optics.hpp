@@ -19,6 +19,14 @@ namespace draught {
 // came from; the rest goes through, scattered.
 inline constexpr double kFrostBackscatter = 0.2;
 
+// Whether light meeting a wall whose decal covers `cover` of it meets the decal, by the
+// uniform u: from the air the surface's gloss comes first (reflectance F) and the decal
+// takes its cover of the rest; from inside the glass or the drink the ink, frost or metal
+// meets it first (no total internal reflection off a painted face). When it does not, u
+// is what Fresnel's choice takes next (from inside, taken back to [0, 1); from the air,
+// u >= F already refracts).
+bool meets_decal(double& u, double F, double cover, bool from_air);
+
 // Light along ray.d meets `decal` at ray.o (n: the wall's normal facing it; next: the
 // medium beyond the wall; object: the glass). Its power `thr` takes the decal's colour. A
 // metallic decal mirrors it about a microfacet normal drawn from GGX (alpha = roughness

@@ -278,17 +278,10 @@ class Tracer {
       const bool wall = h.m == Material::GlassOuter || h.m == Material::GlassInner;
       const DecalSample decal = g.decals && wall ? g.decals->sample(*g.vessel, h.m == Material::GlassInner, m.local_point(p))
                                                  : DecalSample{};
-      if (decal.cover > 0) {
-        const double before = medium == MediumKind::Air ? F : 0.0;
-        const double share = medium == MediumKind::Air ? (1 - F) * decal.cover : decal.cover;
-        if (u >= before && u < before + share) {
-          if (!decal_event(decal, n, next, h.object, ray, medium, obj, thr, L, mis, rng)) break;
-          if (!roulette(thr, surfaces + scatters, rng)) break;
-          continue;
-        }
-        // Past the decal the rest of the surface as it is: from inside, u is taken back to
-        // [0, 1) for Fresnel's choice; from the air, u >= F already refracts.
-        if (medium != MediumKind::Air) u = (u - share) / std::max(1 - share, 1e-12);
+      if (meets_decal(u, F, decal.cover, medium == MediumKind::Air)) {
+        if (!decal_event(decal, n, next, h.object, ray, medium, obj, thr, L, mis, rng)) break;
+        if (!roulette(thr, surfaces + scatters, rng)) break;
+        continue;
       }
       if (u >= F && h.m == Material::GlassBottom && on_floor(p)) {
         // Out through a foot's underside where it stands on the floor: the path meets the
