@@ -189,6 +189,7 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.wave_cos2a = float(w.cross.x);
   r.wave_sin2a = float(w.cross.y);
   r.wave_radius = float(w.radius);
+  r.dimple = {float(w.dimple_xz.x), float(w.dimple_xz.y), float(w.dimple_radius), float(w.dimple_depth)};
   r.ior = vp.liquid.ior;
   r.haze = vp.liquid.haze;
   r.roughness = vp.liquid.roughness;

@@ -249,7 +249,7 @@ vec3 lacing_light(Vessel v, ObjectFoam f, vec3 d) {
 // cylinder.
 bool foam_interval(Vessel v, ObjectFoam f, vec3 o, vec3 d, inout float t0, inout float t1) {
   vec3 n = v.liquid.plane_normal;
-  float waves = abs(v.liquid.wave_ring) + abs(v.liquid.wave_cos2a) + abs(v.liquid.wave_sin2a);
+  float waves = abs(v.liquid.wave_ring) + abs(v.liquid.wave_cos2a) + abs(v.liquid.wave_sin2a) + v.liquid.dimple.w;
   float top_max = f.thickness * (1.0 + abs(f.dome)) * (1.0 + CRATER_COLLAR * f.crater.w) + waves + 0.006;
   float h0 = dot(n, o) - v.liquid.plane_offset, dh = dot(n, d);
   float lo = -waves;

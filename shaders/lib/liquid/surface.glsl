@@ -14,8 +14,24 @@
 #define SURFACE_WAVES 0
 #endif
 
+// Where a pour's stream plunges in: -depth (1 - s^2) exp(-s^2), s in the dimple's radii
+// (a hollow and a low ring that move no volume; core SurfaceWaves, dimple_height).
+float dimple_height(ObjectLiquid lq, vec2 xz) {
+  if (lq.dimple.w <= 0.0) return 0.0;
+  vec2 q = (xz - lq.dimple.xy) / lq.dimple.z;
+  float s2 = dot(q, q);
+  return -lq.dimple.w * (1.0 - s2) * exp(-s2);
+}
+vec2 dimple_gradient(ObjectLiquid lq, vec2 xz) {
+  if (lq.dimple.w <= 0.0) return vec2(0.0);
+  vec2 q = (xz - lq.dimple.xy) / lq.dimple.z;
+  float s2 = dot(q, q);
+  return 2.0 * lq.dimple.w * exp(-s2) * (2.0 - s2) * q / lq.dimple.z;
+}
+
 // Beyond 1.25 radii the shapes hold their value there (as core/liquid/slosh.cpp).
 float wave_height(ObjectLiquid lq, vec2 xz) {
+  float dimple = dimple_height(lq, xz);
   vec2 q = xz / lq.wave_radius;
   float u2 = dot(q, q);
   if (u2 > 1.5625) {
@@ -23,7 +39,7 @@ float wave_height(ObjectLiquid lq, vec2 xz) {
     u2 = 1.5625;
   }
   return lq.wave_ring * (1.0 - 3.0 * u2 + 1.5 * u2 * u2) + lq.wave_cos2a * (q.x * q.x - q.y * q.y) +
-         lq.wave_sin2a * 2.0 * q.x * q.y;
+         lq.wave_sin2a * 2.0 * q.x * q.y + dimple;
 }
 
 vec2 wave_gradient(ObjectLiquid lq, vec2 xz) {
@@ -38,7 +54,7 @@ vec2 wave_gradient(ObjectLiquid lq, vec2 xz) {
     vec2 dir = q / len;
     g = (1.25 / len) * (g - dir * dot(dir, g));
   }
-  return g / lq.wave_radius;
+  return g / lq.wave_radius + dimple_gradient(lq, xz);
 }
 
 // Signed height of p (local) over the surface of `lq`: negative in the liquid.

@@ -106,7 +106,7 @@ bool HeadVolume::interval(const glm::dvec3& o, const glm::dvec3& d, double& t0, 
   if (!present_) return false;
   const glm::dvec3 n = liquid_.n;
   const SurfaceWaves& w = liquid_.waves;
-  const double waves = std::fabs(w.ring) + std::fabs(w.cross.x) + std::fabs(w.cross.y);
+  const double waves = std::fabs(w.ring) + std::fabs(w.cross.x) + std::fabs(w.cross.y) + w.dimple_depth;
   const double top_max = foam_.thickness * (1 + std::fabs(foam_.dome)) * foam_.crater_headroom() + waves + 0.006;
   const double h0 = glm::dot(n, o) - liquid_.offset, dh = glm::dot(n, d);
   if (std::fabs(dh) > 1e-12) {

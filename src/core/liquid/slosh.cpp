@@ -85,14 +85,27 @@ bool at_rest(const SloshState& s) {
 
 // Beyond 1.25 radii (a flared glass's wider wall) the shapes are held at their value
 // there, so they stay bounded.
+namespace {
+// The dimple's height at (x, z) and, if asked, its gradient (as wave_height and
+// wave_gradient in shaders/lib/liquid/surface.glsl).
+double dimple_height(const SurfaceWaves& w, double x, double z, glm::dvec2* gradient) {
+  if (!(w.dimple_depth > 0 && w.dimple_radius > 0)) return 0.0;
+  const glm::dvec2 q = (glm::dvec2(x, z) - w.dimple_xz) / w.dimple_radius;
+  const double s2 = glm::dot(q, q), e = std::exp(-s2);
+  if (gradient) *gradient += 2.0 * w.dimple_depth * e * (2.0 - s2) * q / w.dimple_radius;
+  return -w.dimple_depth * (1.0 - s2) * e;
+}
+}  // namespace
+
 double SurfaceWaves::height(double x, double z) const {
+  const double dimple = dimple_height(*this, x, z, nullptr);
   x /= radius, z /= radius;
   double u2 = x * x + z * z;
   if (u2 > 1.5625) {
     const double k = 1.25 / std::sqrt(u2);
     x *= k, z *= k, u2 = 1.5625;
   }
-  return ring * (1.0 - 3.0 * u2 + 1.5 * u2 * u2) + cross.x * (x * x - z * z) + cross.y * (2.0 * x * z);
+  return ring * (1.0 - 3.0 * u2 + 1.5 * u2 * u2) + cross.x * (x * x - z * z) + cross.y * (2.0 * x * z) + dimple;
 }
 
 glm::dvec2 SurfaceWaves::gradient(double x, double z) const {
@@ -109,7 +122,9 @@ glm::dvec2 SurfaceWaves::gradient(double x, double z) const {
     const glm::dvec2 dir = q / len;
     g = (1.25 / len) * (g - dir * glm::dot(dir, g));
   }
-  return g / radius;
+  g /= radius;
+  dimple_height(*this, x, z, &g);
+  return g;
 }
 
 }  // namespace draught

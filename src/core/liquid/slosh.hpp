@@ -40,12 +40,17 @@ bool at_rest(const SloshState&);
 // The waves as the renderer draws them, in the glass's local frame: height above the
 // surface plane at (x, z). With u = (x, z) / radius, the ring is 1 - 3u^2 + 1.5u^4 (zero
 // mean over the disk, flat at the wall) and the cross is u^2 cos 2a, u^2 sin 2a (zero
-// mean too): waves move no volume.
+// mean too): waves move no volume. Where a pour's stream plunges in, the surface dips
+// under it: -depth (1 - s^2) exp(-s^2), s the distance from dimple_xz in dimple radii, a
+// hollow with a low raised ring round it that moves no volume either (its integral over
+// the plane is 0).
 struct SurfaceWaves {
   double ring = 0;
   glm::dvec2 cross{0.0};
   double radius = 1;
-  bool flat() const { return ring == 0 && cross.x == 0 && cross.y == 0; }
+  glm::dvec2 dimple_xz{0.0};
+  double dimple_radius = 0, dimple_depth = 0;  // m; depth 0: none
+  bool flat() const { return ring == 0 && cross.x == 0 && cross.y == 0 && !(dimple_depth > 0); }
   double height(double x, double z) const;
   glm::dvec2 gradient(double x, double z) const;  // d(height)/dx, d(height)/dz
 };

@@ -154,7 +154,8 @@ void Simulation::step_streams(double dt, double spilled_before) {
   const double level = fraction_ > kEmpty ? axis_level() : vessel_.base;
   if (pour_) {
     GlassStream& s = *pour_;
-    s.stream.set_target_height(world(glm::dvec3(0, level, 0)).y);
+    // (down in the dimple it opens there)
+    s.stream.set_target_height(world(glm::dvec3(0, level - surface_.waves.dimple_depth, 0)).y);
     // The flow is a clock of its own (started at 0 by pour_over), in step with ours.
     const double t = s.stream.time() + dt;
     if (t >= s.end) s.stream.set_flow(s.end, 0);
@@ -202,9 +203,24 @@ void Simulation::step_crater(double dt) {
     const glm::dvec3 local = glm::inverse(motion_.pose.orientation) * (l->position - motion_.pose.position);
     crater_xz_ = {local.x, local.z};
     crater_radius_ = kWidth * l->radius;
+    stream_radius_ = l->radius;
   }
   crater_depth_ += (target - crater_depth_) * (1 - std::exp(-dt / (target > crater_depth_ ? kOpen : kClose)));
   if (crater_depth_ < 0.01 && !l) crater_depth_ = 0;  // (a dimple of a hundredth is gone)
+  place_dimple();
+}
+
+void Simulation::place_dimple() {
+  // The drink's surface dips under the stream about as deep as the stream is thick (a
+  // plunging jet's cavity at these speeds), never more than 0.4 of the drink's depth at
+  // the axis (it must not reach the glass's floor), nor so far that its ring (0.14 of its
+  // depth) would rise past the rim.
+  SurfaceWaves& w = surface_.waves;
+  const double open = crater_depth_ / FoamFrame::kMaxCraterDepth;
+  const double limit = std::min(0.4 * (axis_level() - vessel_.base), 5.0 * headroom());
+  w.dimple_xz = crater_xz_;
+  w.dimple_radius = crater_radius_;
+  w.dimple_depth = fraction_ > kEmpty && crater_radius_ > 0 ? std::max(open * std::min(stream_radius_, limit), 0.0) : 0.0;
 }
 
 void Simulation::settle_bubbles(double seconds) {
@@ -239,6 +255,7 @@ void Simulation::update_surface() {
   surface_.waves.radius = std::max(vessel_.inner_radius(axis_level()), 1e-3);
   surface_.waves.ring = slosh_.ring;
   surface_.waves.cross = slosh_.cross;
+  place_dimple();
 }
 
 double Simulation::axis_level() const {

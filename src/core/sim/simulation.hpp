@@ -106,11 +106,13 @@ class Simulation {
   bool first_step_ = true;
   std::optional<GlassStream> pour_, spill_;
   void step_streams(double dt, double spilled_before);
-  // Where the pour's stream plunges into the head (glass frame): the dimple opens while it
-  // lands and closes after it (FoamFrame's crater).
+  // Where the pour's stream plunges in (glass frame): a dimple in the head (FoamFrame's
+  // crater) and in the drink's surface (SurfaceWaves::dimple_*), opening while it lands
+  // and closing after it.
   glm::dvec2 crater_xz_{0.0};
-  double crater_radius_ = 0, crater_depth_ = 0;
+  double crater_radius_ = 0, crater_depth_ = 0, stream_radius_ = 0;
   void step_crater(double dt);
+  void place_dimple();  // the surface's dimple from the crater's state
   glm::dvec3 world(const glm::dvec3& local) const;
   // Beads and fog on the outer wall (condensation.enabled): seeded when the glass, its
   // fill or the condensation's settings change, stepped with the scene's time.

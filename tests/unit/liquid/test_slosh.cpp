@@ -145,5 +145,36 @@ TEST(SloshWaves, GradientIsTheHeightsDerivative) {
     }
 }
 
+// Where a pour's stream plunges in: the surface dips by the dimple's depth under it, rises
+// in a low ring round it, moves no volume (the hollow and the ring cancel over the plane),
+// and its gradient is its height's derivative, with waves on it too.
+TEST(SloshWaves, APoursDimpleDipsUnderTheStreamAndMovesNoVolume) {
+  SurfaceWaves w{0.0, {0, 0}, 0.04};
+  w.dimple_xz = {0.004, -0.003};
+  w.dimple_radius = 0.008;
+  w.dimple_depth = 0.003;
+  EXPECT_FALSE(w.flat());
+  EXPECT_NEAR(w.height(0.004, -0.003), -0.003, 1e-15);
+  EXPECT_EQ(w.gradient(0.004, -0.003), glm::dvec2(0.0));
+  // The ring's crest, sqrt(2) radii out: 0.135 of the depth above the plane.
+  EXPECT_NEAR(w.height(0.004 + std::sqrt(2.0) * 0.008, -0.003), 0.003 * std::exp(-2.0), 1e-12);
+  const int n = 1200;
+  const double R = 0.06, h = 2 * R / n;  // (the dimple is 7 radii inside: its tail is below 1e-20)
+  double sum = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) sum += w.height(-R + (i + 0.5) * h + 0.004, -R + (j + 0.5) * h - 0.003) * h * h;
+  EXPECT_NEAR(sum, 0.0, 1e-4 * 0.003 * kPi * 0.008 * 0.008) << "the hollow and its ring move no volume";
+  SurfaceWaves both = w;
+  both.ring = 0.001;
+  both.cross = {0.0005, -0.0007};
+  const double d = 1e-7;
+  for (double x : {-0.01, 0.0, 0.006, 0.012})
+    for (double z : {-0.01, -0.002, 0.004}) {
+      const glm::dvec2 g = both.gradient(x, z);
+      EXPECT_NEAR(g.x, (both.height(x + d, z) - both.height(x - d, z)) / (2 * d), 1e-6) << x << ", " << z;
+      EXPECT_NEAR(g.y, (both.height(x, z + d) - both.height(x, z - d)) / (2 * d), 1e-6) << x << ", " << z;
+    }
+}
+
 }  // namespace
 }  // namespace draught

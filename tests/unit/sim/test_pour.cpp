@@ -93,10 +93,22 @@ TEST(Pour, TheStreamPlungesThroughTheHeadInADimpleThatClosesAfterIt) {
   EXPECT_LT(mid.crater_radius, 0.03);
   const double r = sim.vessel().inner_radius(sim.vessel().fill_height(sim.fraction()));
   EXPECT_LT(mid.thickness_at(mid.crater_xz.x, mid.crater_xz.y, r), 0.2 * mid.thickness_at(-0.8 * r, 0.0, r));
-  // Once the last of it has landed the foam flows back within a second or so.
+  // The drink's surface dips there too, about as deep as the stream is thick, and the
+  // stream goes down into it.
+  const SurfaceWaves& waves = sim.frame().liquid.waves;
+  EXPECT_EQ(waves.dimple_xz, mid.crater_xz);
+  EXPECT_GT(waves.dimple_depth, 0.001);
+  EXPECT_LT(waves.dimple_depth, 0.01);
+  double bottom = 1e9;  // the stream's lowest reach: a blob's centre less its radius
+  for (std::size_t i = 0; i < streams[0].points->size(); ++i)
+    bottom = std::min(bottom, double(streams[0].points->position[i].y) - double(streams[0].points->radius_of(i)));
+  EXPECT_LT(bottom, sim.vessel().fill_height(sim.fraction()) - 0.5 * waves.dimple_depth)
+      << "the stream reaches down into the dimple";
+  // Once the last of it has landed the foam and the drink flow back within a second or so.
   for (int i = 1; i <= int(2.5 / kDt); ++i) sim.step(MotionSample{});
   ASSERT_FALSE(sim.pouring());
   EXPECT_EQ(sim.frame().foam.crater_depth, 0.0);
+  EXPECT_EQ(sim.frame().liquid.waves.dimple_depth, 0.0);
 }
 
 TEST(Pour, NoDurationFillsAtOnce) {
