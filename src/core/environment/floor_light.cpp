@@ -707,6 +707,7 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
     for (double r : ve.r_inner) put(r);
     put(v.has_liquid ? 1 : 0, v.liquid.offset, v.liquid.waves.ring, v.liquid.waves.radius);
     put(v.liquid.waves.cross.x, v.liquid.waves.cross.y);
+    put(v.liquid.waves.dimple_xz.x, v.liquid.waves.dimple_xz.y, v.liquid.waves.dimple_radius, v.liquid.waves.dimple_depth);
     put3(v.liquid.n);
     put3(v.liquid_absorption.fast);
     put3(v.liquid_absorption.slow);
