@@ -337,97 +337,162 @@ struct TreeQueries {
   }
 };
 
-// Queries along one ray through the tree. The supports that cross a window of the ray
-// (kWindowSteps steps) are gathered by one traversal of the tree against the window's
-// segment, with their spans on the ray; the march focuses on one step at a time, and the
-// samples in that step (its end, a dip, the bisections) sum the window's supports whose
-// spans overlap the step. A support that holds a sample point crosses the window and the
-// step, and the gather walks the leaves in the point query's order, so a sample sums the
-// same points in the same order as TreeQueries::field (the GLSL twin's per-sample query)
-// and gets the same value: what is saved is the traversals, one per window instead of
-// one per sample. A jump over empty space finds the next entry and gathers the window
-// that starts there in one ordered traversal; a sample outside any step (the march's
-// first, at the root box) is a point query, not a window's gather.
-struct TreeRayQueries {
-  static constexpr float kWindowSteps = 4.0f;
-  struct Span {
-    int i;
-    float t0, t1;
-  };
-  const CloudTexels& tx;
-  const CloudRef& c;
-  glm::vec3 o, d, inv;
-  float pad;  // a thousandth of a step: rounding in the spans cannot drop a support
-  mutable float wa = INFINITY, wb = -INFINITY, fa = INFINITY, fb = -INFINITY;
-  struct Focused {
-    glm::vec3 centre;
-    float inv_r2;  // as add_point takes it
-    int i;
-  };
-  mutable std::vector<Span> window;
-  mutable std::vector<Focused> focused;
+// Queries along one ray through the tree, in one traversal a ray. The tree is opened
+// in the order the ray enters its boxes (the boxes met and not yet opened, sorted by
+// their entries, the nearest opened first), only as far along the ray as the march has come; the supports of
+// the leaves opened wait in a list, with their spans on the ray, until the march has
+// passed them. A step [a, b] opens every box entered before b (a support inside a box is
+// entered no earlier than the box), and its samples (its end, a dip, the bisections) sum
+// the supports waiting there whose spans overlap the step, in texel order: the leaves'
+// depth-first order, the per-sample point query's order (the GLSL twin's), so a sample
+// sums the same points in the same order and gets the same value. A jump over empty
+// space opens boxes until none left could hold an entry before the nearest known one.
+// What is saved is the walks: each node is opened at most once a ray, however many
+// steps, jumps and samples the march makes.
+class TreeRayQueries {
+ public:
   TreeRayQueries(const CloudTexels& t, const CloudRef& r, glm::vec3 o_, glm::vec3 d_)
-      : tx(t), c(r), o(o_), d(d_), inv(1.0f / d_), pad(1e-3f * kCloudStepFraction * r.min_support) {}
-
-  void gather(float a, float b) const {
-    window.clear();
-    wa = a;
-    wb = b;
-    supports_on_segment(tx, c.root, o, d, inv, a - pad, b + pad,
-                        [&](int i, float t0, float t1) { window.push_back({i, t0, t1}); });
+      : tx(t), c(r), o(o_), d(d_), inv(1.0f / d_), pad(1e-3f * kCloudStepFraction * r.min_support) {
+    ahead.clear();
+    waiting.clear();
+    focused.clear();
+    float t0, t1;
+    if (box_span(node(c.root), -INFINITY, t0, t1)) push_box(c.root, t0, t1);
   }
-  // The samples to come lie in [a, b].
+
+  // The samples to come lie in [a, b] (a never less than an earlier step's).
   void focus(float a, float b) const {
-    if (!(a >= wa && b <= wb)) gather(a, std::max(b, a + kWindowSteps * kCloudStepFraction * c.min_support));
+    pass(a);
+    open_while([&](float entry) { return entry <= b + pad; });
     fa = a;
     fb = b;
     focused.clear();
-    for (const Span& s : window)
-      if (s.t1 >= a - pad && s.t0 <= b + pad) {
-        const glm::vec4 c4 = point_texel(tx, s.i);
-        focused.push_back({glm::vec3(c4), 1.0f / (c4.w * c4.w), s.i});
-      }
+    for (const Support& s : waiting)
+      if (s.t0 <= b + pad) focused.push_back(s);
   }
   CloudSample field(glm::vec3 p, float t, glm::vec4* attrs) const {
-    if (!(t >= fa && t <= fb)) return TreeQueries{tx, c}.field(p, t, attrs);
+    if (!(t >= fa && t <= fb)) {
+      if (!(t - pad >= behind)) return TreeQueries{tx, c}.field(p, t, attrs);
+      focus(t, t);  // (the march's first sample, at the root box)
+    }
     CloudSample s;
     glm::vec4 a(0.0f);
-    for (const Focused& f : focused) {
+    for (const Support& f : focused) {
       const float k = add_point(f.centre, f.inv_r2, p, s);
       if (attrs && k > 0.0f) a += k * attr_texel(tx, f.i);
     }
     if (attrs) *attrs = s.f > 0.0f ? a / s.f : glm::vec4(0.0f);
     return s;
   }
-  // The first support entry at or after tmin (as TreeQueries::next_entry finds it), and
-  // the window from there gathered in the same traversal: boxes are pruned at the best
-  // entry so far plus the window, not at the entry itself.
+  // The first support entry at or after tmin below limit (as TreeQueries::next_entry
+  // finds it): boxes are opened while one could be entered before the best entry known.
   float next_entry(glm::vec3, glm::vec3, float tmin, float limit) const {
-    const float span = kWindowSteps * kCloudStepFraction * c.min_support;
-    float best = limit;
-    window.clear();
-    wa = INFINITY;
-    wb = -INFINITY;
-    walk_nearest_first(
-        tx, c.root, o, inv, tmin - pad, [&] { return best + span + pad; },
-        [&](int i) {
-          float t0, t1;
-          if (!support_span(point_texel(tx, i), o, d, t0, t1) || t1 < tmin - pad) return;
-          if (t1 >= tmin) best = std::min(best, std::max(t0, tmin));
-          if (t0 <= best + span + pad) window.push_back({i, t0, t1});
-        });
-    if (!(best < limit)) {
-      window.clear();
-      return INFINITY;
+    pass(tmin);
+    auto best_known = [&] {
+      float best = limit;
+      for (const Support& s : waiting)
+        if (s.t1 >= tmin) best = std::min(best, std::max(s.t0, tmin));
+      return best;
+    };
+    float best = best_known();
+    while (!ahead.empty() && ahead.back().entry < best) {
+      const std::size_t before = waiting.size();
+      open_nearest();
+      if (waiting.size() != before) best = best_known();
     }
-    // The window [best, best + span], its supports in the point query's order: the
-    // leaves' depth-first order is the texels' order (core/pointcloud/cloud_texels).
-    const float a = best, b = std::max(best, best + span);
-    std::erase_if(window, [&](const Span& s) { return !(s.t1 >= a - pad && s.t0 <= b + pad); });
-    std::sort(window.begin(), window.end(), [](const Span& x, const Span& y) { return x.i < y.i; });
-    wa = a;
-    wb = b;
-    return best;
+    return best < limit ? best : INFINITY;
+  }
+
+ private:
+  struct Box {
+    float entry, exit;
+    int node;
+  };
+  struct Support {
+    glm::vec3 centre;
+    float inv_r2;  // as add_point takes it
+    float t0, t1;  // its span on the ray
+    int i;         // its texel
+  };
+  const CloudTexels& tx;
+  const CloudRef& c;
+  glm::vec3 o, d, inv;
+  float pad;  // a thousandth of a step: rounding in the spans cannot drop a support
+  mutable float behind = -INFINITY;  // the march has passed every t below this (less pad)
+  mutable float fa = INFINITY, fb = -INFINITY;
+  // (The three lists live as long as the thread, so that a ray allocates nothing: one
+  // TreeRayQueries a thread at a time, as march_cloud makes them.)
+  std::vector<Box>& ahead = lists().ahead;          // boxes met, not yet opened, by entry, the nearest last
+  std::vector<Support>& waiting = lists().waiting; // supports of the leaves opened, not yet passed, by texel
+  std::vector<Support>& focused = lists().focused; // those the current step's samples sum
+  struct Lists {
+    std::vector<Box> ahead;
+    std::vector<Support> waiting, focused;
+  };
+  static Lists& lists() {
+    thread_local Lists l;
+    return l;
+  }
+
+  const float* node(int n) const { return &tx.nodes[std::size_t(n) * 8]; }
+  // The span of the ray in node n's box from `from` on; false when it misses.
+  bool box_span(const float* n, float from, float& t0, float& t1) const {
+    const float ax = (n[0] - o.x) * inv.x, bx = (n[4] - o.x) * inv.x;
+    const float ay = (n[1] - o.y) * inv.y, by = (n[5] - o.y) * inv.y;
+    const float az = (n[2] - o.z) * inv.z, bz = (n[6] - o.z) * inv.z;
+    t0 = std::max(std::max(std::min(ax, bx), std::min(ay, by)), std::max(std::min(az, bz), from));
+    t1 = std::min(std::min(std::max(ax, bx), std::max(ay, by)), std::max(az, bz));
+    return t0 <= t1;
+  }
+  void push_box(int n, float t0, float t1) const {
+    // Sorted, the nearest last: a new box is entered no earlier than the one just opened,
+    // so it goes in near the end.
+    std::size_t k = ahead.size();
+    ahead.push_back({t0, t1, n});
+    for (; k > 0 && ahead[k - 1].entry < t0; --k) ahead[k] = ahead[k - 1];
+    ahead[k] = {t0, t1, n};
+  }
+  // The march is at t: the supports it has passed leave the list.
+  void pass(float t) const {
+    if (t - pad > behind) {
+      behind = t - pad;
+      std::erase_if(waiting, [&](const Support& s) { return s.t1 < behind; });
+    }
+  }
+  // Opens the box the ray enters first: a leaf's supports join the list (in texel order),
+  // an inner node's children's boxes the boxes ahead. Boxes the march has passed are dropped.
+  void open_nearest() const {
+    const Box b = ahead.back();
+    ahead.pop_back();
+    if (b.exit < behind) return;
+    const float* n = node(b.node);
+    const int index = int(n[3]), count = int(n[7]);
+    if (count > 0) {
+      for (int i = index; i < index + count; ++i) {
+        const glm::vec4 p = point_texel(tx, i);
+        float t0, t1;
+        if (!support_span(p, o, d, t0, t1) || t1 < behind) continue;
+        const Support s{glm::vec3(p), 1.0f / (p.w * p.w), t0, t1, i};
+        waiting.insert(std::upper_bound(waiting.begin(), waiting.end(), i,
+                                        [](int j, const Support& x) { return j < x.i; }),
+                       s);
+      }
+      return;
+    }
+    float l0, l1, r0, r1;
+    const bool l = box_span(node(b.node + 1), behind, l0, l1), r = box_span(node(index), behind, r0, r1);
+    // The farther first: the nearer then goes in at the end.
+    if (l && r && l0 < r0) {
+      push_box(index, r0, r1);
+      push_box(b.node + 1, l0, l1);
+    } else {
+      if (l) push_box(b.node + 1, l0, l1);
+      if (r) push_box(index, r0, r1);
+    }
+  }
+  template <class While>
+  void open_while(While go_on) const {
+    while (!ahead.empty() && go_on(ahead.back().entry)) open_nearest();
   }
 };
 
