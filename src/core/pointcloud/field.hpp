@@ -93,8 +93,9 @@ struct CloudHit {
 // samples' values and slopes predict (the cubic Hermite minimum, sampled when predicted
 // within a tenth of the threshold), is bisected kCloudBisections times. At most
 // kCloudMaxSteps iterations. Twin: march_cloud in lib/pointcloud/march.glsl, which makes
-// each sample a point query; here the supports crossing a window of the ray are gathered
-// once and each sample sums those (the same points in the same order, so the same value).
+// each sample a point query; here the tree is opened once a ray, in the order the ray
+// enters its boxes, and each sample sums the supports met that overlap its step (the same
+// points in the same order, so the same value).
 std::optional<CloudHit> march_cloud(const CloudTexels&, const CloudRef&, glm::vec3 o, glm::vec3 d, float tmin,
                                     float tmax, bool inside);
 // The same march with every query a loop over all the cloud's points (the benchmark's
