@@ -151,6 +151,50 @@ TEST(CloudMarch, GlslTwinMatchesCpp) {
   }
 }
 
+// Deep in a dense cloud (20,000 points, each support holding about 50 others) the march from
+// inside strides where its lower bound on the field clears the threshold: the GLSL twin
+// strides where the C++ does and finds the same exits.
+TEST(CloudMarch, GlslTwinStridesAsTheCppDoesInsideADenseCloud) {
+  Gpu& g = gpu_instance();
+  (void)g;
+  const PointCloud dense = blob(20000, 0.0022f, {0.0f, 0.1f, 0.0f}, 9);
+  CloudTexels tx;
+  const CloudRange range = tx.append(dense, build_cloud_bvh(dense, float(cloud_support_scale(kCloudThreshold))));
+  const CloudRef ref = cloud_ref(range);
+  gpu::CloudTextures textures;
+  textures.upload(tx);
+  textures.bind();
+  gpu::ShaderSource vert = gpu::assemble_shader("passes/fullscreen.vert.glsl");
+  gpu::ShaderSource frag = gpu::assemble_shader("lib/pointcloud/march.glsl");
+  frag.text = "#version 300 es\n" + frag.text + kProbeMain;
+  gpu::Program prog(vert, frag);
+  const Camera inside{{0.002f, 0.101f, -0.001f}, {0.0f, 0.0f, -1.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 0.75f, 0.0f}};
+  const std::vector<float> img = draw(prog, inside, ref, 2);
+  int hits = 0, disagree = 0, far = 0, strided = 0;
+  double worst_dt = 0;
+  const float h = kCloudStepFraction * ref.min_support;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const float* px = &img[(std::size_t(y) * kW + std::size_t(x)) * 4];
+      const auto m = march_cloud(tx, ref, inside.eye, inside.dir(x, y), 0.0f, 10.0f, true);
+      if (bool(m) != (px[0] != -1.0f || px[1] != -1.0f)) {
+        ++disagree;
+        continue;
+      }
+      if (!m) continue;
+      ++hits;
+      strided += float(m->steps) < 0.5f * m->t / h;
+      const double dt = std::abs(double(px[0]) - double(m->t));
+      worst_dt = std::max(worst_dt, dt);
+      far += dt > 1e-5;
+    }
+  std::printf("[dense, inside] %d hits, %d strided, %d disagree, |dt| > 10 um %d (worst %.3g m)\n", hits, strided,
+              disagree, far, worst_dt);
+  EXPECT_EQ(hits, kW * kH);
+  EXPECT_GT(strided, hits / 2);
+  EXPECT_LE(disagree, kW * kH / 200);
+  EXPECT_LE(far, hits / 100);
+}
 
 // A cloud moved in place and one appended after an upload: the textures then updated by the
 // changed span only draw both clouds exactly as textures uploaded whole from the same arrays.

@@ -36,11 +36,15 @@ float cloud_box_entry(vec3 lo, vec3 hi, vec3 o, vec3 inv, float tmin, float tmax
 }
 
 // Twin of TreeQueries::field: F (w) and grad F (xyz) at p; with_attrs also returns the
-// k-weighted temperature and colour.
-vec4 cloud_field_at(CloudRef c, vec3 p, bool with_attrs, out vec4 attrs) {
+// k-weighted temperature and colour; with_ahead also the lower bounds on F over the
+// segments from p to near_end and to far_end (twin: CloudAhead in field.cpp, which says
+// why they hold).
+vec4 cloud_field_ahead(CloudRef c, vec3 p, bool with_attrs, out vec4 attrs, bool with_ahead, vec3 near_end,
+                       vec3 far_end, out vec2 bounds) {
   float f = 0.0;
   vec3 grad = vec3(0.0);
   vec4 acc = vec4(0.0);
+  bounds = vec2(0.0);
   int stack[CLOUD_MAX_DEPTH + 1];
   int sp = 0;
   stack[sp++] = c.root;
@@ -65,6 +69,11 @@ vec4 cloud_field_at(CloudRef c, vec3 p, bool with_attrs, out vec4 attrs) {
         f += k;
         grad += (-6.0 * w * w * inv_r2) * q;
         if (with_attrs) acc += k * cloud_attr(i);
+        if (with_ahead) {
+          vec3 qn = near_end - pt.xyz, qf = far_end - pt.xyz;
+          vec2 wa = 1.0 - min(max(vec2(u), vec2(dot(qn, qn), dot(qf, qf)) * inv_r2), 1.0);
+          bounds += wa * wa * wa;
+        }
       }
     } else {
       stack[sp++] = index;
@@ -73,6 +82,10 @@ vec4 cloud_field_at(CloudRef c, vec3 p, bool with_attrs, out vec4 attrs) {
   }
   attrs = f > 0.0 ? acc / f : vec4(0.0);
   return vec4(grad, f);
+}
+vec4 cloud_field_at(CloudRef c, vec3 p, bool with_attrs, out vec4 attrs) {
+  vec2 unused;
+  return cloud_field_ahead(c, p, with_attrs, attrs, false, p, p, unused);
 }
 
 // Twin of TreeQueries::next_entry: the smallest t >= tmin below limit where o + t d is
@@ -143,12 +156,24 @@ float cloud_hermite_min(float g0, float m0, float g1, float m1, out float value)
   return u;
 }
 
-// sgn (threshold - F) at o + t d and its slope; INF where no support holds the point (outside only).
-float cloud_g(CloudRef c, vec3 o, vec3 d, float t, float sgn, bool inside, out float slope) {
+// sgn (threshold - F) at o + t d and its slope; INF where no support holds the point
+// (outside only). With `ahead` (a step's end inside), also how far the march may stride
+// from there: the stride (far_reach) or half of it where the lower bound over it clears
+// the threshold, else one step h (twin: march's `sample` with a stride in field.cpp).
+float cloud_g_stride(CloudRef c, vec3 o, vec3 d, float t, float sgn, bool inside, bool ahead, float h,
+                     float far_reach, out float slope, out float stride) {
   vec4 unused;
-  vec4 s = cloud_field_at(c, o + t * d, false, unused);
+  vec2 bounds;
+  vec4 s = cloud_field_ahead(c, o + t * d, false, unused, ahead, o + (t + 0.5 * far_reach) * d, o + (t + far_reach) * d,
+                             bounds);
   slope = sgn * -dot(s.xyz, d);
+  float sure = CLOUD_STRIDE_MARGIN * c.threshold;
+  stride = !ahead ? h : bounds.y > sure ? far_reach : bounds.x > sure ? 0.5 * far_reach : h;
   return s.w == 0.0 && !inside ? INF : sgn * (c.threshold - s.w);
+}
+float cloud_g(CloudRef c, vec3 o, vec3 d, float t, float sgn, bool inside, out float slope) {
+  float unused;
+  return cloud_g_stride(c, o, d, t, sgn, inside, false, 0.0, 0.0, slope, unused);
 }
 
 // Twin of field.cpp's cloud_bracket_crossing: the crossing lies between t (g > 0 there;
@@ -178,8 +203,9 @@ bool march_cloud(CloudRef c, vec3 o, vec3 d, float tmin, float tmax, bool inside
   float t1 = min(min(mx.x, mx.y), min(mx.z, tmax));
   if (!inside && !(t0 <= t1)) return false;
   float h = CLOUD_STEP_FRACTION * c.min_support, sgn = inside ? -1.0 : 1.0;
-  float t = t0, slope;
-  float g = cloud_g(c, o, d, t, sgn, inside, slope);
+  float far_reach = float(CLOUD_STRIDE_STEPS) * h;
+  float t = t0, slope, stride;  // stride: how far the sample at t lets the march go
+  float g = cloud_g_stride(c, o, d, t, sgn, inside, inside, h, far_reach, slope, stride);
   bool found = g <= 0.0;
   float a = t, b = t, ga = 0.0, gb = 0.0;
   for (int i = 0; i < CLOUD_MAX_STEPS; ++i) {
@@ -191,12 +217,12 @@ bool march_cloud(CloudRef c, vec3 o, vec3 d, float tmin, float tmax, bool inside
       g = c.threshold;
       slope = 0.0;
     }
-    float next = min(t + h, t1), sn;
-    float gn = cloud_g(c, o, d, next, sgn, inside, sn);
+    float next = min(t + stride, t1), sn, stride_next;
+    float gn = cloud_g_stride(c, o, d, next, sgn, inside, inside, h, far_reach, sn, stride_next);
     float gv = gn == INF ? c.threshold : gn;
     if (gv <= 0.0) {
       cloud_bracket_crossing(c.threshold, t, g, next, gv, found, a, b, ga, gb);
-    } else if (slope < 0.0 && sn > 0.0) {
+    } else if (stride == h && slope < 0.0 && sn > 0.0) {
       float predicted;
       float u = cloud_hermite_min(g, slope * (next - t), gv, sn * (next - t), predicted);
       if (predicted < 0.1 * c.threshold) {
@@ -223,6 +249,7 @@ bool march_cloud(CloudRef c, vec3 o, vec3 d, float tmin, float tmax, bool inside
     t = next;
     g = gn;
     slope = sn;
+    stride = stride_next;
   }
   if (!found && !inside) return false;
   if (!found) {  // out of steps (or of llvmpipe's loop budget) inside: leave straight on (twin: field.cpp)

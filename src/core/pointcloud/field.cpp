@@ -207,17 +207,39 @@ float box_entry(glm::vec3 lo, glm::vec3 hi, glm::vec3 o, glm::vec3 inv, float tm
   return t0 <= t1 ? t0 : INFINITY;
 }
 
-// One point's share: adds its kernel (and gradient) at p; returns the kernel.
-float add_point(glm::vec3 centre, float inv_r2, glm::vec3 p, CloudSample& s) {
+// A lower bound on F over the segments from a sample point p to two points ahead of it,
+// p + reach d (twin: cloud_field_at's `ahead` in march.glsl). Every point of a segment is
+// no farther from a centre than the farther of the segment's ends (distance is convex),
+// and the kernel falls with distance, so a support that holds p adds at least
+// k(max(|p - c|, |end - c|)) everywhere on the segment; supports that do not hold p add
+// something or nothing. A march from inside that finds a bound above the threshold cannot
+// leave the surface before that end (docs/POINT_CLOUDS.md).
+struct CloudAhead {
+  glm::vec3 near_end, far_end;  // p + reach d for the two reaches
+  float near_bound = 0, far_bound = 0;
+};
+
+// One point's share: adds its kernel (and gradient) at p, and to the bounds ahead when
+// asked; returns the kernel.
+float add_point(glm::vec3 centre, float inv_r2, glm::vec3 p, CloudSample& s, CloudAhead* ahead = nullptr) {
   const glm::vec3 q = p - centre;
   const float u = glm::dot(q, q) * inv_r2;
   if (u >= 1.0f) return 0.0f;
   const float w = 1.0f - u;
   s.f += w * w * w;
   s.grad += (-6.0f * w * w * inv_r2) * q;
+  if (ahead) {
+    const glm::vec3 qn = ahead->near_end - centre, qf = ahead->far_end - centre;
+    const float wn = 1.0f - std::min(std::max(u, glm::dot(qn, qn) * inv_r2), 1.0f);
+    const float wf = 1.0f - std::min(std::max(u, glm::dot(qf, qf) * inv_r2), 1.0f);
+    ahead->near_bound += wn * wn * wn;
+    ahead->far_bound += wf * wf * wf;
+  }
   return w * w * w;
 }
-float add_point(glm::vec4 c, glm::vec3 p, CloudSample& s) { return add_point(glm::vec3(c), 1.0f / (c.w * c.w), p, s); }
+float add_point(glm::vec4 c, glm::vec3 p, CloudSample& s, CloudAhead* ahead = nullptr) {
+  return add_point(glm::vec3(c), 1.0f / (c.w * c.w), p, s, ahead);
+}
 
 // The span of o + t d (d unit) in point c's support; false when it misses.
 bool support_span(glm::vec4 c, glm::vec3 o, glm::vec3 d, float& t0, float& t1) {
@@ -313,13 +335,13 @@ struct TreeQueries {
   const CloudTexels& tx;
   const CloudRef& c;
   void focus(float, float) const {}
-  CloudSample field(glm::vec3 p, float /*t on the march's ray*/, glm::vec4* attrs) const {
+  CloudSample field(glm::vec3 p, float /*t on the march's ray*/, glm::vec4* attrs, CloudAhead* ahead = nullptr) const {
     CloudSample s;
     glm::vec4 a(0.0f);
     walk_tree(
         tx, c.root, [&](const NodeTexels& nd) { return in_box(nd, p); },
         [&](int i) {
-          const float k = add_point(point_texel(tx, i), p, s);
+          const float k = add_point(point_texel(tx, i), p, s, ahead);
           if (attrs && k > 0.0f) a += k * attr_texel(tx, i);
         });
     if (attrs) *attrs = s.f > 0.0f ? a / s.f : glm::vec4(0.0f);
@@ -370,15 +392,15 @@ class TreeRayQueries {
     for (const Support& s : waiting)
       if (s.t0 <= b + pad) focused.push_back(s);
   }
-  CloudSample field(glm::vec3 p, float t, glm::vec4* attrs) const {
+  CloudSample field(glm::vec3 p, float t, glm::vec4* attrs, CloudAhead* ahead = nullptr) const {
     if (!(t >= fa && t <= fb)) {
-      if (!(t - pad >= behind)) return TreeQueries{tx, c}.field(p, t, attrs);
+      if (!(t - pad >= behind)) return TreeQueries{tx, c}.field(p, t, attrs, ahead);
       focus(t, t);  // (the march's first sample, at the root box)
     }
     CloudSample s;
     glm::vec4 a(0.0f);
     for (const Support& f : focused) {
-      const float k = add_point(f.centre, f.inv_r2, p, s);
+      const float k = add_point(f.centre, f.inv_r2, p, s, ahead);
       if (attrs && k > 0.0f) a += k * attr_texel(tx, f.i);
     }
     if (attrs) *attrs = s.f > 0.0f ? a / s.f : glm::vec4(0.0f);
@@ -501,11 +523,11 @@ struct AllPointQueries {
   const CloudTexels& tx;
   const CloudRange& range;
   void focus(float, float) const {}
-  CloudSample field(glm::vec3 p, float /*t on the march's ray*/, glm::vec4* attrs) const {
+  CloudSample field(glm::vec3 p, float /*t on the march's ray*/, glm::vec4* attrs, CloudAhead* ahead = nullptr) const {
     CloudSample s;
     glm::vec4 a(0.0f);
     for (int i = range.first_point; i < range.first_point + range.point_count; ++i) {
-      const float k = add_point(point_texel(tx, i), p, s);
+      const float k = add_point(point_texel(tx, i), p, s, ahead);
       if (attrs && k > 0.0f) a += k * attr_texel(tx, i);
     }
     if (attrs) *attrs = s.f > 0.0f ? a / s.f : glm::vec4(0.0f);
@@ -562,15 +584,24 @@ std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::v
   const float t1 = std::min(std::min(mx.x, mx.y), std::min(mx.z, tmax));
   if (!inside && !(t0 <= t1)) return std::nullopt;
   const float h = kCloudStepFraction * c.min_support, sgn = inside ? -1.0f : 1.0f;
+  // Inside, a step's sample also bounds F from below over a stride and half a stride
+  // ahead (CloudAhead): the march strides as far as a bound clears the threshold, since it
+  // cannot leave before (no sign change, no dip to look for).
+  const float far_reach = float(kCloudStrideSteps) * h, near_reach = 0.5f * far_reach;
   CloudHit hit;
-  auto sample = [&](float t, float& slope) {
-    const CloudSample s = q.field(o + t * d, t, nullptr);
+  auto sample = [&](float t, float& slope, float* stride = nullptr) {
+    CloudAhead ahead{o + (t + near_reach) * d, o + (t + far_reach) * d};
+    const CloudSample s = q.field(o + t * d, t, nullptr, stride ? &ahead : nullptr);
     ++hit.queries;
     slope = sgn * -glm::dot(s.grad, d);
+    if (stride) {
+      const float sure = kCloudStrideMargin * c.threshold;
+      *stride = ahead.far_bound > sure ? far_reach : ahead.near_bound > sure ? near_reach : h;
+    }
     return s.f == 0.0f && !inside ? INFINITY : sgn * (c.threshold - s.f);  // INFINITY: in no support
   };
-  float t = t0, slope;
-  float g = sample(t, slope);
+  float t = t0, slope, stride = h;  // stride: how far the sample at t lets the march go
+  float g = sample(t, slope, inside ? &stride : nullptr);
   bool found = g <= 0.0f;
   float a = t, b = t, ga = 0.0f, gb = 0.0f;
   for (int i = 0; i < kCloudMaxSteps && !found; ++i) {
@@ -585,14 +616,14 @@ std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::v
       g = c.threshold;
       slope = 0.0f;
     }
-    const float next = std::min(t + h, t1);
+    const float next = std::min(t + stride, t1);
     q.focus(t, next);  // this step's samples lie in [t, next]
-    float sn;
-    float gn = sample(next, sn);
+    float sn, stride_next = h;
+    float gn = sample(next, sn, inside ? &stride_next : nullptr);
     const float gv = gn == INFINITY ? c.threshold : gn;
     if (gv <= 0.0f) {
       cloud_bracket_crossing(c.threshold, t, g, next, gv, found, a, b, ga, gb);
-    } else if (slope < 0.0f && sn > 0.0f) {
+    } else if (stride == h && slope < 0.0f && sn > 0.0f) {
       // A dip between the samples: where the Hermite cubic says it comes within a tenth of
       // the threshold, look at its bottom.
       float predicted;
@@ -618,6 +649,7 @@ std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::v
     t = next;
     g = gn;
     slope = sn;
+    stride = stride_next;
   }
   if (!found && !inside) return std::nullopt;
   if (!found) {

@@ -23,6 +23,8 @@ namespace draught {
 inline constexpr int kCloudMaxSteps = contract::kCloudMaxSteps;
 inline constexpr int kCloudBisections = contract::kCloudBisections;
 inline constexpr float kCloudStepFraction = contract::kCloudStepFraction;
+inline constexpr int kCloudStrideSteps = contract::kCloudStrideSteps;
+inline constexpr float kCloudStrideMargin = contract::kCloudStrideMargin;
 inline constexpr float kCloudThreshold = contract::kCloudThreshold;
 
 // The support radius over the blob radius: a lone point of blob radius r is a sphere of
@@ -91,7 +93,9 @@ struct CloudHit {
 // to the next support entry; inside, steps of kCloudStepFraction * min_support, each
 // sample a point query; a sign change of F - threshold, or a dip towards it that the
 // samples' values and slopes predict (the cubic Hermite minimum, sampled when predicted
-// within a tenth of the threshold), is bisected kCloudBisections times. At most
+// within a tenth of the threshold), is bisected kCloudBisections times. A march from
+// inside strides kCloudStrideSteps steps (or half of them) where its sample's lower bound
+// on F over the stride clears the threshold: it cannot leave before. At most
 // kCloudMaxSteps iterations. Twin: march_cloud in lib/pointcloud/march.glsl, which makes
 // each sample a point query; here the tree is opened once a ray, in the order the ray
 // enters its boxes, and each sample sums the supports met that overlap its step (the same

@@ -130,6 +130,32 @@ TEST(PointCloudField, MarchMatchesReferenceFromInside) {
   EXPECT_GT(s.hits, 490);  // every inside ray exits (500 rays: about a minute under AddressSanitizer)
 }
 
+// A dense cloud (20,000 points in the ball, each support holding about 50 others, as in
+// the benchmark's blobs): deep inside, a sample's lower bound on F clears the threshold a
+// stride ahead, so a march from inside strides instead of stepping, and still finds the
+// reference's exit.
+TEST(PointCloudField, AMarchFromInsideStridesWhereItCannotLeave) {
+  const PointCloud c = blob(20000, 0.0022f, kCentre, 9);
+  const Stats s = compare_rays(c, 150, true, 23);
+  EXPECT_GT(s.hits, 140);
+  const Prepared p = prepare(c);
+  const CloudRef ref = cloud_ref(p.range);
+  const float h = kCloudStepFraction * ref.min_support;
+  std::mt19937 rng(24);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  double steps = 0, unstrided = 0;
+  for (int k = 0; k < 150; ++k) {
+    const glm::vec3 d = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)));
+    const glm::vec3 o = kCentre + 0.01f * glm::vec3(u(rng), u(rng), u(rng));
+    const auto m = march_cloud(p.tx, ref, o, d, 0.0f, 1.0f, true);
+    ASSERT_TRUE(m) << "ray " << k;
+    steps += m->steps;
+    unstrided += std::ceil(m->t / h);
+  }
+  std::printf("inside a dense cloud: %.1f steps an exit, %.1f without strides\n", steps / 150, unstrided / 150);
+  EXPECT_LT(steps, 0.5 * unstrided);
+}
+
 TEST(PointCloudField, SparsePointsToo) {
   // Separate blobs and narrow necks: most surface is a lone point's sphere.
   const Stats s = compare_rays(blob(150, 0.004f, kCentre, 3), 3000, false, 19);
