@@ -176,15 +176,35 @@ float cloud_g(CloudRef c, vec3 o, vec3 d, float t, float sgn, bool inside, out f
   return cloud_g_stride(c, o, d, t, sgn, inside, false, 0.0, 0.0, slope, unused);
 }
 
-// Twin of field.cpp's cloud_bracket_crossing: the crossing lies between t (g > 0 there;
-// INF, in no support, is F = 0) and end (g_end <= 0), the bracket the bisection narrows.
-void cloud_bracket_crossing(float threshold, float t, float g, float end, float g_end, out bool found, out float a,
-                            out float b, out float ga, out float gb) {
+// Twin of field.cpp's cloud_bracket_crossing: the crossing lies between t (g > 0 there,
+// slope its derivative; INF, in no support, is F = 0 with zero slope) and end
+// (g_end <= 0), the bracket the refinements narrow.
+void cloud_bracket_crossing(float threshold, float t, float g, float slope, float end, float g_end, float slope_end,
+                            out bool found, out float a, out float b, out float ga, out float gb, out float sa,
+                            out float sb) {
   found = true;
   a = t;
   b = end;
   ga = g == INF ? threshold : g;
+  sa = g == INF ? 0.0 : slope;
   gb = g_end;
+  sb = slope_end;
+}
+
+// Twin of hermite_root: a root in (0, 1) of the cubic Hermite interpolant of (g0, m0) at 0
+// and (g1, m1) at 1 (g0 > 0 >= g1): Newton's steps from the secant's root, each kept
+// inside the bracket the signs so far leave (else its middle is taken).
+float cloud_hermite_root(float g0, float m0, float g1, float m1) {
+  float c2 = -3.0 * g0 - 2.0 * m0 + 3.0 * g1 - m1, c3 = 2.0 * g0 + m0 - 2.0 * g1 + m1;
+  float lo = 0.0, hi = 1.0, u = g0 / (g0 - g1);
+  for (int k = 0; k < 10; ++k) {
+    float p = ((c3 * u + c2) * u + m0) * u + g0, dp = (3.0 * c3 * u + 2.0 * c2) * u + m0;
+    if (p > 0.0) lo = u;
+    else hi = u;
+    float next = u - p / dp;
+    u = next > lo && next < hi ? next : 0.5 * (lo + hi);
+  }
+  return u;
 }
 
 // Twin of march_cloud: the first crossing of F = threshold along o + t d (d unit), t in
@@ -207,7 +227,7 @@ bool march_cloud(CloudRef c, vec3 o, vec3 d, float tmin, float tmax, bool inside
   float t = t0, slope, stride;  // stride: how far the sample at t lets the march go
   float g = cloud_g_stride(c, o, d, t, sgn, inside, inside, h, far_reach, slope, stride);
   bool found = g <= 0.0;
-  float a = t, b = t, ga = 0.0, gb = 0.0;
+  float a = t, b = t, ga = 0.0, gb = 0.0, sa = 0.0, sb = 0.0;
   for (int i = 0; i < CLOUD_MAX_STEPS; ++i) {
     if (found) break;
     if (g == INF) {
@@ -221,26 +241,29 @@ bool march_cloud(CloudRef c, vec3 o, vec3 d, float tmin, float tmax, bool inside
     float gn = cloud_g_stride(c, o, d, next, sgn, inside, inside, h, far_reach, sn, stride_next);
     float gv = gn == INF ? c.threshold : gn;
     if (gv <= 0.0) {
-      cloud_bracket_crossing(c.threshold, t, g, next, gv, found, a, b, ga, gb);
+      cloud_bracket_crossing(c.threshold, t, g, slope, next, gv, sn, found, a, b, ga, gb, sa, sb);
     } else if (stride == h && slope < 0.0 && sn > 0.0) {
       float predicted;
       float u = cloud_hermite_min(g, slope * (next - t), gv, sn * (next - t), predicted);
       if (predicted < 0.1 * c.threshold) {
         float tm = t + u * (next - t), sm;
         float gm = cloud_g(c, o, d, tm, sgn, inside, sm);
-        if (gm <= 0.0) cloud_bracket_crossing(c.threshold, t, g, tm, gm, found, a, b, ga, gb);
+        if (gm <= 0.0) cloud_bracket_crossing(c.threshold, t, g, slope, tm, gm, sm, found, a, b, ga, gb, sa, sb);
       }
     }
     if (found) {
-      for (int k = 0; k < CLOUD_BISECTIONS; ++k) {
-        float m = 0.5 * (a + b), sm;
+      for (int k = 0; k < CLOUD_REFINEMENTS; ++k) {  // (twin: field.cpp says why)
+        float u = k < CLOUD_BISECTIONS ? 0.5 : clamp(cloud_hermite_root(ga, sa * (b - a), gb, sb * (b - a)), 1.0 / 64.0, 63.0 / 64.0);
+        float m = a + u * (b - a), sm;
         float gm = cloud_g(c, o, d, m, sgn, inside, sm);
         if (gm <= 0.0) {
           b = m;
           gb = gm;
+          sb = sm;
         } else {
           a = m;
           ga = gm;
+          sa = sm;
         }
       }
       break;
@@ -258,8 +281,8 @@ bool march_cloud(CloudRef c, vec3 o, vec3 d, float tmin, float tmax, bool inside
     n = -d;
     return true;
   }
-  // The line through the bracket's ends meets the level (twin: field.cpp says why).
-  t_hit = ga - gb > 0.0 ? clamp(a + (b - a) * (ga / (ga - gb)), a, b) : b;
+  // The cubic through the narrowed bracket's ends meets the level (twin: field.cpp says why).
+  t_hit = a + (b - a) * cloud_hermite_root(ga, sa * (b - a), gb, sb * (b - a));
   vec4 s = cloud_field_at(c, o + t_hit * d, true, attrs);
   n = length(s.xyz) > 0.0 ? -normalize(s.xyz) : vec3(0.0);
   return true;

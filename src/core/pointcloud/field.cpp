@@ -559,17 +559,36 @@ float hermite_min(float g0, float m0, float g1, float m1, float& value) {
   return u;
 }
 
-// The crossing lies between t (g > 0 there; INFINITY, in no support, is F = 0) and end
-// (g_end <= 0): the bracket the bisection narrows. One helper for a step's and a dip's
+// The crossing lies between t (g > 0 there, slope its derivative; INFINITY, in no support,
+// is F = 0 with zero slope) and end (g_end <= 0): the bracket the refinements narrow. One helper for a step's and a dip's
 // crossing, as in the GLSL twin.
-void cloud_bracket_crossing(float threshold, float t, float g, float end, float g_end, bool& found, float& a, float& b,
-                            float& ga, float& gb) {
+void cloud_bracket_crossing(float threshold, float t, float g, float slope, float end, float g_end, float slope_end,
+                            bool& found, float& a, float& b, float& ga, float& gb, float& sa, float& sb) {
   found = true;
   a = t;
   b = end;
   ga = g == INFINITY ? threshold : g;
+  sa = g == INFINITY ? 0.0f : slope;
   gb = g_end;
+  sb = slope_end;
 }
+
+// A root in (0, 1) of the cubic Hermite interpolant of (g0, m0) at 0 and (g1, m1) at 1
+// (g0 > 0 >= g1: one lies between): Newton's steps on the cubic from the secant's root,
+// each kept inside the bracket the signs so far leave (else its middle is taken).
+float hermite_root(float g0, float m0, float g1, float m1) {
+  const float c2 = -3.0f * g0 - 2.0f * m0 + 3.0f * g1 - m1, c3 = 2.0f * g0 + m0 - 2.0f * g1 + m1;
+  float lo = 0.0f, hi = 1.0f, u = g0 / (g0 - g1);
+  for (int k = 0; k < 10; ++k) {
+    const float p = ((c3 * u + c2) * u + m0) * u + g0, dp = (3.0f * c3 * u + 2.0f * c2) * u + m0;
+    if (p > 0.0f) lo = u;
+    else hi = u;
+    const float next = u - p / dp;
+    u = next > lo && next < hi ? next : 0.5f * (lo + hi);
+  }
+  return u;
+}
+
 
 template <class Q>
 std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::vec3 d, float tmin, float tmax,
@@ -603,7 +622,7 @@ std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::v
   float t = t0, slope, stride = h;  // stride: how far the sample at t lets the march go
   float g = sample(t, slope, inside ? &stride : nullptr);
   bool found = g <= 0.0f;
-  float a = t, b = t, ga = 0.0f, gb = 0.0f;
+  float a = t, b = t, ga = 0.0f, gb = 0.0f, sa = 0.0f, sb = 0.0f;
   for (int i = 0; i < kCloudMaxSteps && !found; ++i) {
     ++hit.steps;
     if (g == INFINITY) {
@@ -622,7 +641,7 @@ std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::v
     float gn = sample(next, sn, inside ? &stride_next : nullptr);
     const float gv = gn == INFINITY ? c.threshold : gn;
     if (gv <= 0.0f) {
-      cloud_bracket_crossing(c.threshold, t, g, next, gv, found, a, b, ga, gb);
+      cloud_bracket_crossing(c.threshold, t, g, slope, next, gv, sn, found, a, b, ga, gb, sa, sb);
     } else if (stride == h && slope < 0.0f && sn > 0.0f) {
       // A dip between the samples: where the Hermite cubic says it comes within a tenth of
       // the threshold, look at its bottom.
@@ -632,16 +651,22 @@ std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::v
         const float tm = t + u * (next - t);
         float sm;
         const float gm = sample(tm, sm);
-        if (gm <= 0.0f) cloud_bracket_crossing(c.threshold, t, g, tm, gm, found, a, b, ga, gb);
+        if (gm <= 0.0f) cloud_bracket_crossing(c.threshold, t, g, slope, tm, gm, sm, found, a, b, ga, gb, sa, sb);
       }
     }
     if (found) {
-      for (int k = 0; k < kCloudBisections; ++k) {
-        const float m = 0.5f * (a + b);
+      // The first samples halve the bracket (a shrink the cubic alone does not promise);
+      // the rest go where the cubic through its ends (values and slopes) crosses the
+      // level, kept off the ends.
+      for (int k = 0; k < kCloudRefinements; ++k) {
+        const float u = k < kCloudBisections
+                            ? 0.5f
+                            : std::clamp(hermite_root(ga, sa * (b - a), gb, sb * (b - a)), 1.0f / 64.0f, 63.0f / 64.0f);
+        const float m = a + u * (b - a);
         float sm;
         const float gm = sample(m, sm);
-        if (gm <= 0.0f) b = m, gb = gm;
-        else a = m, ga = gm;
+        if (gm <= 0.0f) b = m, gb = gm, sb = sm;
+        else a = m, ga = gm, sa = sm;
       }
       break;
     }
@@ -662,12 +687,11 @@ std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::v
     hit.attrs = attrs;
     return hit;
   }
-  // The crossing where the line through the bracket's ends meets the level (F is nearly
-  // linear over a bracket of step / 2^kCloudBisections, a few micrometres: the error is
-  // nanometres), held inside the bracket. A path crossing here marches on from 2 um
-  // beyond, well on the side it believes it is on (a path starting on the wrong side
-  // would cross back at once).
-  hit.t = ga - gb > 0.0f ? std::clamp(a + (b - a) * (ga / (ga - gb)), a, b) : b;
+  // The crossing where the cubic through the narrowed bracket's ends meets the level
+  // (within 0.3 um of the double reference's at worst in the tests, most far closer). A
+  // path crossing here marches on from 2 um beyond, well on the side it believes it is on
+  // (a path starting on the wrong side would cross back at once).
+  hit.t = a + (b - a) * hermite_root(ga, sa * (b - a), gb, sb * (b - a));
   glm::vec4 attrs;
   const CloudSample s = q.field(o + hit.t * d, hit.t, &attrs);
   ++hit.queries;

@@ -22,6 +22,7 @@ namespace draught {
 
 inline constexpr int kCloudMaxSteps = contract::kCloudMaxSteps;
 inline constexpr int kCloudBisections = contract::kCloudBisections;
+inline constexpr int kCloudRefinements = contract::kCloudRefinements;
 inline constexpr float kCloudStepFraction = contract::kCloudStepFraction;
 inline constexpr int kCloudStrideSteps = contract::kCloudStrideSteps;
 inline constexpr float kCloudStrideMargin = contract::kCloudStrideMargin;
@@ -93,7 +94,9 @@ struct CloudHit {
 // to the next support entry; inside, steps of kCloudStepFraction * min_support, each
 // sample a point query; a sign change of F - threshold, or a dip towards it that the
 // samples' values and slopes predict (the cubic Hermite minimum, sampled when predicted
-// within a tenth of the threshold), is bisected kCloudBisections times. A march from
+// within a tenth of the threshold), is narrowed by kCloudRefinements samples (the first
+// kCloudBisections at its middle, the rest at the root of the cubic Hermite interpolant
+// of the bracket's ends) and the crossing placed at that cubic's root. A march from
 // inside strides kCloudStrideSteps steps (or half of them) where its sample's lower bound
 // on F over the stride clears the threshold: it cannot leave before. At most
 // kCloudMaxSteps iterations. Twin: march_cloud in lib/pointcloud/march.glsl, which makes
