@@ -30,7 +30,7 @@ const std::vector<ObjectParamInfo>& point_cloud_param_table() {
       {"loop", 0, 1, "", "file sequences: true loops, false holds the last frame"},
       {"scale", 1e-6, 1e3, "m", "file source: metres per unit of the file's coordinates"},
       {"blob_radius", 0, 0.1, "m", "a lone point's radius (points without their own, the gob's particles); 0: "
-                                   "automatic (files 2 mm, the gob 1.35 x its particles' spacing, which blends them smooth)"},
+                                   "automatic (files 2 mm, the gob 1.7 x its particles' spacing, which blends them smooth)"},
       {"threshold", 0.05, 0.95, "", "level of the summed field that is the surface"},
       {"material", 0, 1, "", "\"molten_glass\" (the default) or \"drink\""},
       {"temperature", 250, 2500, "K", "the gob's start temperature; file points without their own"},
@@ -291,11 +291,11 @@ std::vector<CloudFrame> CloudSource::frames() const {
       PointCloudParams unit = params_;
       unit.scale = 1.0f;
       PointCloud gob = s.gob->cloud();
-      // Automatic: blobs 1.35 spacings wide blend the particles into one glossy surface
-      // (0.8, the gob's own choice, leaves a crumpled skin of particle bumps; wider blobs
-      // are smoother but every sample then sums more points, and llvmpipe stops a pixel's
-      // loops after 65535 iterations in all: docs/POINT_CLOUDS.md).
-      if (params_.blob_radius == 0) gob.default_radius = float(1.35 * s.gob->spacing());
+      // Automatic: blobs 1.7 spacings wide blend the particles into one glossy surface
+      // (0.8, the gob's own choice, leaves a crumpled skin of particle bumps, 1.35 a light
+      // hammered one; wider blobs are smoother but every sample then sums more points, and
+      // llvmpipe stops a pixel's loops after 65535 iterations in all: docs/POINT_CLOUDS.md).
+      if (params_.blob_radius == 0) gob.default_radius = float(1.7 * s.gob->spacing());
       unit.blob_radius = gob.default_radius;
       s.placed = place_cloud(gob, unit, position_, yaw_, kelvin);
     } else if (s.stream) {

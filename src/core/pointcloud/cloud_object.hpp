@@ -40,7 +40,7 @@ struct PointCloudParams {
   bool loop = true;                // File sequences: loop (or hold the last frame)
   float scale = 1.0f;              // File: metres per unit of the file's coordinates
   float blob_radius = 0;           // m: a lone point's radius (points without their own; the gob's);
-                                   // 0: automatic (files 2 mm, the gob 1.35 x its particles' spacing)
+                                   // 0: automatic (files 2 mm, the gob 1.7 x its particles' spacing)
   float threshold = 0.5f;          // the summed field's level that is the surface
   int material = 0;                // CloudMaterial
   float temperature = 1373.15f;    // K: the gob's start; file points without their own
