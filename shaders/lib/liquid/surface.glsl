@@ -15,53 +15,41 @@
 #endif
 
 // Where a pour's stream plunges in: -depth (1 - s^2) exp(-s^2), s in the dimple's radii
-// (a hollow and a low ring that move no volume; core SurfaceWaves, dimple_height).
-float dimple_height(ObjectLiquid lq, vec2 xz) {
-  if (lq.dimple.w <= 0.0) return 0.0;
+// (a hollow and a low ring that move no volume; core SurfaceWaves, dimple_height), and its
+// gradient: (height, d/dx, d/dz), one exp for both.
+vec3 dimple_shape(ObjectLiquid lq, vec2 xz) {
+  if (lq.dimple.w <= 0.0) return vec3(0.0);
   vec2 q = (xz - lq.dimple.xy) / lq.dimple.z;
-  float s2 = dot(q, q);
-  return -lq.dimple.w * (1.0 - s2) * exp(-s2);
-}
-vec2 dimple_gradient(ObjectLiquid lq, vec2 xz) {
-  if (lq.dimple.w <= 0.0) return vec2(0.0);
-  vec2 q = (xz - lq.dimple.xy) / lq.dimple.z;
-  float s2 = dot(q, q);
-  return 2.0 * lq.dimple.w * exp(-s2) * (2.0 - s2) * q / lq.dimple.z;
+  float s2 = dot(q, q), e = lq.dimple.w * exp(-s2);
+  return vec3(-e * (1.0 - s2), 2.0 * e * (2.0 - s2) * q / lq.dimple.z);
 }
 
-// Beyond 1.25 radii the shapes hold their value there (as core/liquid/slosh.cpp).
-float wave_height(ObjectLiquid lq, vec2 xz) {
-  float dimple = dimple_height(lq, xz);
-  vec2 q = xz / lq.wave_radius;
-  float u2 = dot(q, q);
-  if (u2 > 1.5625) {
-    q *= 1.25 / sqrt(u2);
-    u2 = 1.5625;
-  }
-  return lq.wave_ring * (1.0 - 3.0 * u2 + 1.5 * u2 * u2) + lq.wave_cos2a * (q.x * q.x - q.y * q.y) +
-         lq.wave_sin2a * 2.0 * q.x * q.y + dimple;
-}
-
-vec2 wave_gradient(ObjectLiquid lq, vec2 xz) {
+// The waves' height over the plane and its gradient: (height, d/dx, d/dz). Beyond 1.25
+// radii the shapes hold their value there (as core/liquid/slosh.cpp), the gradient by the
+// chain rule through the pull-in.
+vec3 wave_shape(ObjectLiquid lq, vec2 xz) {
   vec2 q = xz / lq.wave_radius;
   float len = length(q);
-  bool held = len > 1.25;  // chain rule through the pull-in (as core/liquid/slosh.cpp)
+  bool held = len > 1.25;
   vec2 c = held ? q * (1.25 / len) : q;
-  float dr = lq.wave_ring * (-6.0 + 6.0 * dot(c, c));
+  float u2 = dot(c, c);
+  float height = lq.wave_ring * (1.0 - 3.0 * u2 + 1.5 * u2 * u2) + lq.wave_cos2a * (c.x * c.x - c.y * c.y) +
+                 lq.wave_sin2a * 2.0 * c.x * c.y;
+  float dr = lq.wave_ring * (-6.0 + 6.0 * u2);
   vec2 g = vec2(dr * c.x + 2.0 * lq.wave_cos2a * c.x + 2.0 * lq.wave_sin2a * c.y,
                 dr * c.y - 2.0 * lq.wave_cos2a * c.y + 2.0 * lq.wave_sin2a * c.x);
   if (held) {
     vec2 dir = q / len;
     g = (1.25 / len) * (g - dir * dot(dir, g));
   }
-  return g / lq.wave_radius + dimple_gradient(lq, xz);
+  return vec3(height, g / lq.wave_radius) + dimple_shape(lq, xz);
 }
 
 // Signed height of p (local) over the surface of `lq`: negative in the liquid.
 float level_over(ObjectLiquid lq, vec3 p) {
   float level = dot(lq.plane_normal, p) - lq.plane_offset;
 #if SURFACE_WAVES
-  level -= wave_height(lq, p.xz);
+  level -= wave_shape(lq, p.xz).x;
 #endif
   return level;
 }
@@ -77,17 +65,17 @@ Hit hit_liquid_surface(Vessel v, vec3 o, vec3 d, float tmin) {
 #if SURFACE_WAVES
   for (int it = 0; it < 4; ++it) {  // Newton steps from the plane onto the waves
     vec3 p = o + t * d;
-    vec2 g = wave_gradient(v.liquid, p.xz);
-    float slope = dn - dot(g, d.xz);
+    vec3 w = wave_shape(v.liquid, p.xz);
+    float slope = dn - dot(w.yz, d.xz);
     if (abs(slope) < 1e-12) break;
-    t -= level_over(v.liquid, p) / slope;
+    t -= (dot(n, p) - v.liquid.plane_offset - w.x) / slope;
   }
 #endif
   vec3 p = o + t * d;
   if (t <= tmin || p.y <= v.shape.base || p.y >= v.body.height || length(p.xz) >= inner_radius(v, p.y) || clipped(v, p))
     return no_hit();
 #if SURFACE_WAVES
-  vec2 g = wave_gradient(v.liquid, p.xz);
+  vec2 g = wave_shape(v.liquid, p.xz).yz;
   return Hit(t, normalize(n - vec3(g.x, 0.0, g.y)), M_LIQUID_SURFACE, v.row);
 #else
   return Hit(t, n, M_LIQUID_SURFACE, v.row);

@@ -86,8 +86,8 @@ bool at_rest(const SloshState& s) {
 // Beyond 1.25 radii (a flared glass's wider wall) the shapes are held at their value
 // there, so they stay bounded.
 namespace {
-// The dimple's height at (x, z) and, if asked, its gradient (as wave_height and
-// wave_gradient in shaders/lib/liquid/surface.glsl).
+// The dimple's height at (x, z) and, if asked, its gradient (as dimple_shape in
+// shaders/lib/liquid/surface.glsl).
 double dimple_height(const SurfaceWaves& w, double x, double z, glm::dvec2* gradient) {
   if (!(w.dimple_depth > 0 && w.dimple_radius > 0)) return 0.0;
   const glm::dvec2 q = (glm::dvec2(x, z) - w.dimple_xz) / w.dimple_radius;
