@@ -44,6 +44,14 @@ void main() {
 }
 )";
 
+// The probe: the march library under kProbeMain.
+gpu::Program probe_program() {
+  gpu::ShaderSource vert = gpu::assemble_shader("passes/fullscreen.vert.glsl");
+  gpu::ShaderSource frag = gpu::assemble_shader("lib/pointcloud/march.glsl");
+  frag.text = "#version 300 es\n" + frag.text + kProbeMain;
+  return gpu::Program(vert, frag);
+}
+
 struct Camera {
   glm::vec3 eye, fwd, right, up;
   glm::vec3 dir(int x, int y) const {
@@ -99,10 +107,7 @@ TEST(CloudMarch, GlslTwinMatchesCpp) {
   gpu::CloudTextures textures;
   textures.upload(tx);
   textures.bind();
-  gpu::ShaderSource vert = gpu::assemble_shader("passes/fullscreen.vert.glsl");
-  gpu::ShaderSource frag = gpu::assemble_shader("lib/pointcloud/march.glsl");
-  frag.text = "#version 300 es\n" + frag.text + kProbeMain;
-  gpu::Program prog(vert, frag);
+  gpu::Program prog = probe_program();
 
   const Camera outside{{0.0f, 0.12f, 0.15f}, {0.0f, -0.02f / 0.15f, -1.0f}, {0.3f, 0.0f, 0.0f}, {0.0f, 0.225f, 0.0f}};
   const Camera inside{{0.003f, 0.101f, -0.002f}, {0.0f, 0.0f, -1.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 0.75f, 0.0f}};
@@ -164,10 +169,7 @@ TEST(CloudMarch, GlslTwinStridesAsTheCppDoesInsideADenseCloud) {
   gpu::CloudTextures textures;
   textures.upload(tx);
   textures.bind();
-  gpu::ShaderSource vert = gpu::assemble_shader("passes/fullscreen.vert.glsl");
-  gpu::ShaderSource frag = gpu::assemble_shader("lib/pointcloud/march.glsl");
-  frag.text = "#version 300 es\n" + frag.text + kProbeMain;
-  gpu::Program prog(vert, frag);
+  gpu::Program prog = probe_program();
   const Camera inside{{0.002f, 0.101f, -0.001f}, {0.0f, 0.0f, -1.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 0.75f, 0.0f}};
   const std::vector<float> img = draw(prog, inside, ref, 2);
   int hits = 0, disagree = 0, far = 0, strided = 0;
@@ -222,10 +224,7 @@ TEST(CloudMarch, ASpanUploadDrawsAsAWholeOne) {
   gpu::CloudTextures whole;
   whole.upload(tx);
 
-  gpu::ShaderSource vert = gpu::assemble_shader("passes/fullscreen.vert.glsl");
-  gpu::ShaderSource frag = gpu::assemble_shader("lib/pointcloud/march.glsl");
-  frag.text = "#version 300 es\n" + frag.text + kProbeMain;
-  gpu::Program prog(vert, frag);
+  gpu::Program prog = probe_program();
   const Camera cam{{0.0f, 0.12f, 0.15f}, {0.0f, -0.02f / 0.15f, -1.0f}, {0.3f, 0.0f, 0.0f}, {0.0f, 0.225f, 0.0f}};
   for (std::size_t k = 0; k < 3; ++k) {
     const CloudRef ref = cloud_ref(tx.clouds[k]);
