@@ -253,7 +253,8 @@ bool march_cloud(CloudRef c, vec3 o, vec3 d, float tmin, float tmax, bool inside
     }
     if (found) {
       for (int k = 0; k < CLOUD_REFINEMENTS; ++k) {  // (twin: field.cpp says why)
-        float u = k < CLOUD_BISECTIONS ? 0.5 : clamp(cloud_hermite_root(ga, sa * (b - a), gb, sb * (b - a)), 1.0 / 64.0, 63.0 / 64.0);
+        float u = 0.5;  // (k is the same in every pixel: the halvings skip the cubic's root)
+        if (k >= CLOUD_BISECTIONS) u = clamp(cloud_hermite_root(ga, sa * (b - a), gb, sb * (b - a)), 1.0 / 64.0, 63.0 / 64.0);
         float m = a + u * (b - a), sm;
         float gm = cloud_g(c, o, d, m, sgn, inside, sm);
         if (gm <= 0.0) {

@@ -359,18 +359,18 @@ struct TreeQueries {
   }
 };
 
-// Queries along one ray through the tree, in one traversal a ray. The tree is opened
-// in the order the ray enters its boxes (the boxes met and not yet opened, sorted by
-// their entries, the nearest opened first), only as far along the ray as the march has come; the supports of
-// the leaves opened wait in a list, with their spans on the ray, until the march has
-// passed them. A step [a, b] opens every box entered before b (a support inside a box is
-// entered no earlier than the box), and its samples (its end, a dip, the bisections) sum
-// the supports waiting there whose spans overlap the step, in texel order: the leaves'
-// depth-first order, the per-sample point query's order (the GLSL twin's), so a sample
-// sums the same points in the same order and gets the same value. A jump over empty
-// space opens boxes until none left could hold an entry before the nearest known one.
-// What is saved is the walks: each node is opened at most once a ray, however many
-// steps, jumps and samples the march makes.
+// Queries along one ray through the tree, in one traversal a ray. The tree is opened in
+// the order the ray enters its boxes (the boxes met and not yet opened, sorted by their
+// entries, the nearest opened first), only as far along the ray as the march has come;
+// the supports of the leaves opened wait in a list, with their spans on the ray, until
+// the march has passed them. A step [a, b] opens every box entered before b (a support
+// inside a box is entered no earlier than the box), and its samples (its end, a dip, the
+// refinements) sum the supports waiting there whose spans overlap the step, in texel
+// order: the leaves' depth-first order, the per-sample point query's order (the GLSL
+// twin's), so a sample sums the same points in the same order and gets the same value. A
+// jump over empty space opens boxes until none left could hold an entry before the
+// nearest known one. What is saved is the walks: each node is opened at most once a ray,
+// however many steps, jumps and samples the march makes.
 class TreeRayQueries {
  public:
   TreeRayQueries(const CloudTexels& t, const CloudRef& r, glm::vec3 o_, glm::vec3 d_)
@@ -560,8 +560,8 @@ float hermite_min(float g0, float m0, float g1, float m1, float& value) {
 }
 
 // The crossing lies between t (g > 0 there, slope its derivative; INFINITY, in no support,
-// is F = 0 with zero slope) and end (g_end <= 0): the bracket the refinements narrow. One helper for a step's and a dip's
-// crossing, as in the GLSL twin.
+// is F = 0 with zero slope) and end (g_end <= 0): the bracket the refinements narrow. One
+// helper for a step's and a dip's crossing, as in the GLSL twin.
 void cloud_bracket_crossing(float threshold, float t, float g, float slope, float end, float g_end, float slope_end,
                             bool& found, float& a, float& b, float& ga, float& gb, float& sa, float& sb) {
   found = true;
@@ -589,7 +589,6 @@ float hermite_root(float g0, float m0, float g1, float m1) {
   return u;
 }
 
-
 template <class Q>
 std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::vec3 d, float tmin, float tmax,
                               bool inside) {
@@ -609,7 +608,8 @@ std::optional<CloudHit> march(const Q& q, const CloudRef& c, glm::vec3 o, glm::v
   const float far_reach = float(kCloudStrideSteps) * h, near_reach = 0.5f * far_reach;
   CloudHit hit;
   auto sample = [&](float t, float& slope, float* stride = nullptr) {
-    CloudAhead ahead{o + (t + near_reach) * d, o + (t + far_reach) * d};
+    CloudAhead ahead;
+    if (stride) ahead.near_end = o + (t + near_reach) * d, ahead.far_end = o + (t + far_reach) * d;
     const CloudSample s = q.field(o + t * d, t, nullptr, stride ? &ahead : nullptr);
     ++hit.queries;
     slope = sgn * -glm::dot(s.grad, d);
