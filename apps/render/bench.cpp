@@ -85,7 +85,7 @@ long measure_covered(gpu::Renderer& renderer, const FrameState& f, int size) {
 // Median frame times of several frames drawn in turn, frame by frame.
 std::vector<double> interleaved_medians(gpu::Renderer& renderer, const std::vector<FrameState>& states, int size,
                                         int frames) {
-  gpu::RenderTarget target(size, size, false);
+  gpu::RenderTarget target(size, size, gpu::RenderTarget::Format::Rgba8);
   std::vector<std::vector<double>> ms(states.size());
   for (int i = 0; i < frames + 2; ++i)
     for (size_t k = 0; k < states.size(); ++k) {
@@ -130,7 +130,7 @@ Measured measure(gpu::Renderer& renderer, const FrameState& f, int size, int fra
 }
 
 double median_ms(gpu::Renderer& renderer, const FrameState& f, int w, int h, int frames, std::vector<double>* all) {
-  gpu::RenderTarget target(w, h, false);
+  gpu::RenderTarget target(w, h, gpu::RenderTarget::Format::Rgba8);
   std::vector<double> ms;
   for (int i = 0; i < frames + 2; ++i) {
     auto t0 = std::chrono::steady_clock::now();

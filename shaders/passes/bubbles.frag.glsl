@@ -27,12 +27,11 @@ void main() {
   vec2 glint_at = 0.45 * vec2(dot(frame.glint_dir, frame.cam_right), -dot(frame.glint_dir, frame.cam_up));
   float glint = exp(-dot(v_q - glint_at, v_q - glint_at) * 40.0);
   vec3 c = v_tint * (reflected + frame.glint * 0.8 * glint) * frame.exposure;
-  c = frame.tonemap == 1 ? aces_filmic(c) : c;
   // A bubble under the impostor's least radius (0.75 px, bubbles.vert.glsl: so that it
   // still covers a sample) covers only its own area of that disc: drawn whole, a bubble a
   // fifth of a pixel across was a pixel-sized dot of what it mirrors, which reads as a
   // dark speck over a lit drink (the flight's weizen). So tiny bubbles fade out.
   float area = min(v_radius * v_radius / (0.75 * 0.75), 1.0);
   float alpha = area * edge * clamp(max(F, glint) * 0.85 + 0.08 * cos_i, 0.0, 1.0);
-  frag_color = vec4(linear_to_srgb(c) * alpha, alpha);
+  frag_color = vec4(output_transform(c, frame.tonemap, frame.output_linear != 0) * alpha, alpha);
 }

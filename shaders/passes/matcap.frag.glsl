@@ -356,7 +356,5 @@ void main() {
     radiance += thr * seen_straight(frame.cam_eye, dir);
 #endif
   }
-  vec3 c = radiance * frame.exposure;
-  c = frame.tonemap == 1 ? aces_filmic(c) : c;
-  frag_color = vec4(linear_to_srgb(c), alpha);
+  frag_color = vec4(output_transform(radiance * frame.exposure, frame.tonemap, frame.output_linear != 0), alpha);
 }

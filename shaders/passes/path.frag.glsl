@@ -672,7 +672,6 @@ void main() {
   return;
 #endif
   vec3 c = radiance * frame.exposure;
-  c = frame.tonemap == 1 ? aces_filmic(c) : c;
   float alpha = frame.transparent != 0 ? clamp(1.0 - see_through, 0.0, 1.0) : 1.0;
-  frag_color = vec4(linear_to_srgb(c), alpha);
+  frag_color = vec4(output_transform(c, frame.tonemap, frame.output_linear != 0), alpha);
 }

@@ -1,6 +1,7 @@
 #include "gpu/renderer.hpp"
 
 #include "core/bubbles/bubble_view.hpp"
+#include "core/output/resolve.hpp"
 #include "gpu/decal_textures.hpp"
 #include "gpu/matcap_texture.hpp"
 #include "gpu/reflection_panoramas.hpp"
@@ -21,10 +22,12 @@
 
 namespace draught::gpu {
 
-RenderTarget::RenderTarget(int w, int h, bool float_target) : width_(w), height_(h) {
+RenderTarget::RenderTarget(int w, int h, Format format) : width_(w), height_(h) {
+  const bool float_target = format != Format::Rgba8;
   glGenTextures(1, &tex_);
   glBindTexture(GL_TEXTURE_2D, tex_);
-  glTexStorage2D(GL_TEXTURE_2D, 1, float_target ? GL_RGBA32F : GL_RGBA8, w, h);
+  glTexStorage2D(GL_TEXTURE_2D, 1, format == Format::Rgba32F ? GL_RGBA32F : format == Format::Rgba16F ? GL_RGBA16F : GL_RGBA8,
+                 w, h);
   glGenFramebuffers(1, &fbo_);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex_, 0);
@@ -42,7 +45,7 @@ RenderTarget::RenderTarget(int w, int h, bool float_target) : width_(w), height_
                                "driver's limit of " + std::to_string(limit) + " pixels a side (GL_MAX_TEXTURE_SIZE " +
                                std::to_string(max_tex) + ", GL_MAX_RENDERBUFFER_SIZE " + std::to_string(max_rb) + ")");
     throw std::runtime_error(float_target ? "float render targets are not supported by this GL driver "
-                                            "(EXT_color_buffer_float); debug views need them"
+                                            "(EXT_color_buffer_float); debug views and supersampled pictures need them"
                                           : "cannot create an offscreen framebuffer of " + size + " pixels: " +
                                                 (err == GL_OUT_OF_MEMORY ? "out of GPU memory" : "refused by the GL driver"));
   }
@@ -143,6 +146,10 @@ void Renderer::set_floor_light(const FloorLightSettings& s, bool on, int draft_p
 }
 
 void Renderer::draw(const FrameState& f, int width, int height, DebugView debug, int event) {
+  draw_picture(f, width, height, debug, event, false);
+}
+
+void Renderer::draw_picture(const FrameState& f, int width, int height, DebugView debug, int event, bool linear) {
   // The MatCap tier draws the picture with its own pass (and the thickness view is its);
   // the other debug views are the path pass's.
   const bool matcap = debug == DebugView::Thickness ||
@@ -166,6 +173,7 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   const bool clouds = !f.clouds.empty() && debug != DebugView::Thickness;
   if (clouds) clouds_->bind();
   contract::FrameBlock block = pack_frame_block(f, width, height, debug, event);
+  block.output_linear = linear ? 1 : 0;
   if (clouds) pack_clouds(f, cloud_scene_, block);
   block.matcap_max_lod = matcap_->max_lod();
   block.matcap_frost_lod = f.params.matcap.frost * std::max(matcap_->max_lod() - 3.0f, 0.0f);
@@ -433,7 +441,23 @@ void Renderer::finish() { glFinish(); }
 Image Renderer::render(const FrameState& f, int width, int height) {
   const int ss = std::clamp(f.params.render.supersample, 1, 4);
   const int w = width * ss, h = height * ss;
-  RenderTarget target(w, h, false);
+  if (ss > 1 && !f.params.render.transparent) {
+    // Supersamples averaged in scene-linear light, then the output transform (a camera's
+    // pixel integrates light before its response; the reference resolves its paths so):
+    // averaged after the tone map, a thin highlight or a band of bright stripes came out
+    // darker than its light (the concave tone map of each sample; docs/REFERENCE.md). A
+    // transparent picture keeps the per-sample transform and averages its premultiplied
+    // display values (downsample), so that its edges keep their colour for compositing.
+    RenderTarget target(w, h, RenderTarget::Format::Rgba16F);
+    draw_picture(f, w, h, DebugView::None, 0, true);
+    std::vector<float> rows(size_t(w) * size_t(h) * 4), samples(rows.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, rows.data());
+    for (int y = 0; y < h; ++y)  // GL rows are bottom-up; images are top-down.
+      std::copy_n(&rows[size_t(h - 1 - y) * size_t(w) * 4], size_t(w) * 4, &samples[size_t(y) * size_t(w) * 4]);
+    return resolve_linear(samples, width, height, ss, f.params.render.tonemap);
+  }
+  RenderTarget target(w, h, RenderTarget::Format::Rgba8);
   draw(f, w, h);
   Image img{w, h, std::vector<std::uint8_t>(size_t(w) * size_t(h) * 4)};
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -445,7 +469,7 @@ Image Renderer::render(const FrameState& f, int width, int height) {
 }
 
 DebugImage Renderer::render_debug(const FrameState& f, int width, int height, DebugView view, int event) {
-  RenderTarget target(width, height, true);
+  RenderTarget target(width, height, RenderTarget::Format::Rgba32F);
   draw(f, width, height, view, event);
   DebugImage out{width, height, std::vector<float>(size_t(width) * size_t(height) * 4)};
   std::vector<float> rows(out.rgba.size());

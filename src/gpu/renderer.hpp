@@ -57,12 +57,14 @@ struct DebugImage {
   const float* px(int x, int y) const { return &rgba[(size_t(y) * size_t(width) + size_t(x)) * 4]; }
 };
 
-// An offscreen colour target, bound on creation: RGBA8 for pictures, RGBA32F for debug
-// channels. Unbinds and frees itself when it goes out of scope; one kept across frames
-// (the viewer's low quality tiers) is bound again with bind().
+// An offscreen colour target, bound on creation: RGBA8 for pictures, RGBA16F for a
+// supersampled picture in scene-linear light (blendable, for the bubbles' sprites),
+// RGBA32F for debug channels. Unbinds and frees itself when it goes out of scope; one kept
+// across frames (the viewer's low quality tiers) is bound again with bind().
 class RenderTarget {
  public:
-  RenderTarget(int width, int height, bool float_target);
+  enum class Format { Rgba8, Rgba16F, Rgba32F };
+  RenderTarget(int width, int height, Format);
   ~RenderTarget();
   RenderTarget(const RenderTarget&) = delete;
   RenderTarget& operator=(const RenderTarget&) = delete;
@@ -120,6 +122,9 @@ class Renderer {
   void set_moving_drafts(bool on) { moving_drafts_ = on; }
 
  private:
+  // draw(), the passes leaving scene-linear light instead of display values with `linear`
+  // (render's supersampled pictures: Frame::output_linear).
+  void draw_picture(const FrameState&, int width, int height, DebugView, int event, bool linear);
   void draw_bubbles(const FrameState&, int width, int height);
 
   // What the path pass is compiled with (software rasterizers pay for code even where a

@@ -255,7 +255,7 @@ TEST(MatCapTier, TheBackgroundIsKeptOncePerHeldViewAndDrawnSmallerWhileMoving) {
   Gpu& g = gpu_instance();
   FrameState f = matcap_tier(pint_front());
   f.camera.eye.y += 0.003f;  // a view no other test draws
-  gpu::RenderTarget target(48, 48, false);
+  gpu::RenderTarget target(48, 48, gpu::RenderTarget::Format::Rgba8);
   const int before = g.renderer->matcap_background().draws();
   g.renderer->draw(f, 48, 48);  // seen once: inline
   EXPECT_EQ(g.renderer->matcap_background().draws(), before);

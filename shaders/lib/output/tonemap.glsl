@@ -20,4 +20,14 @@ vec3 linear_to_srgb(vec3 c) {
   return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
 }
 
+// A pass's output of c (linear light times the exposure): tone mapped (tonemap 1: ACES)
+// and sRGB-encoded; or, with `linear`, c itself (no tone map, no clamp but to a half
+// float's range): supersamples are then averaged in scene-linear light before the output
+// transform, as a camera's pixel integrates light and as the reference resolves its
+// paths (core/output/resolve; twin of display_channel in core/output/tonemap.hpp).
+vec3 output_transform(vec3 c, int tonemap, bool linear) {
+  if (linear) return clamp(c, 0.0, 65504.0);
+  return linear_to_srgb(tonemap == 1 ? aces_filmic(c) : c);
+}
+
 #endif  // LIB_OUTPUT_TONEMAP_GLSL

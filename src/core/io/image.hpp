@@ -16,9 +16,11 @@ struct Image {
   const std::uint8_t* px(int x, int y) const { return &rgba[(size_t(y) * size_t(width) + size_t(x)) * 4]; }
 };
 
-// Box filter over factor x factor blocks (supersampling resolve), averaged in linear
-// light: the sRGB codes are decoded, averaged and encoded again, so an edge between
-// black and white comes out as half the light (188), not half the code (128).
+// Box filter over factor x factor blocks of display values (a transparent picture's
+// supersamples, each already tone mapped; opaque ones are resolved before the tone map:
+// core/output/resolve), averaged in linear light: the sRGB codes are decoded, averaged
+// and encoded again, so an edge between black and white comes out as half the light
+// (188), not half the code (128).
 Image downsample(const Image&, int factor);
 std::string encode_png(const Image&);
 void write_png(const std::filesystem::path&, const Image&);  // atomic

@@ -1,6 +1,7 @@
 // Output transforms, C++ twin of shaders/lib/output/tonemap.glsl: linear light ->
-// exposure -> (ACES filmic | clamp) -> sRGB. The reference renderer's pictures go through
-// the same transform as the GPU's.
+// exposure -> (ACES filmic | clamp) -> sRGB. The reference renderer's pictures and the
+// GPU's supersampled ones (core/output/resolve) go through the same transform as the
+// GPU's single samples.
 #pragma once
 
 #include "core/params/params.hpp"
@@ -34,14 +35,18 @@ inline double linear_to_srgb(double c) {
   return c < 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
 }
 
+// One channel of linear light already times the exposure to its 8-bit display code: the
+// tone map (`tonemap`: Tonemap), then sRGB. Twin of output_transform in the GLSL.
+inline std::uint8_t display_code(double c, int tonemap) {
+  if (!(c > 0.0)) c = 0.0;  // (and NaN)
+  if (tonemap == int(Tonemap::Aces)) c = aces_filmic(std::min(c, 1e30));
+  return std::uint8_t(std::lround(linear_to_srgb(c) * 255.0));
+}
+
 // One linear radiance to its 8-bit display value under the render settings.
 inline glm::u8vec3 display_rgb8(const glm::dvec3& radiance, const RenderParams& r) {
   glm::u8vec3 out;
-  for (int i = 0; i < 3; ++i) {
-    double c = radiance[i] * r.exposure;
-    if (r.tonemap == int(Tonemap::Aces)) c = aces_filmic(c);
-    out[i] = std::uint8_t(std::lround(linear_to_srgb(c) * 255.0));
-  }
+  for (int i = 0; i < 3; ++i) out[i] = display_code(radiance[i] * r.exposure, r.tonemap);
   return out;
 }
 

@@ -1,0 +1,19 @@
+// Supersampling's resolve in scene-linear light: each pixel the mean of its samples'
+// light, then the output transform once (a camera's pixel integrates light before its
+// response is applied; the reference resolves its paths the same way). The GPU's passes
+// leave such samples when Frame::output_linear is set (gpu::Renderer::render).
+#pragma once
+
+#include "core/io/image.hpp"
+
+#include <vector>
+
+namespace draught {
+
+// samples: (width * factor) x (height * factor) RGBA samples, rows top-down: linear light
+// already times the exposure, and coverage. Each output pixel is the mean of its factor x
+// factor block, through display_code (the tone map `tonemap`, then sRGB) and alpha 0-255.
+// Throws std::invalid_argument when the sizes do not match.
+Image resolve_linear(const std::vector<float>& samples, int width, int height, int factor, int tonemap);
+
+}  // namespace draught
