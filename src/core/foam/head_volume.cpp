@@ -59,7 +59,7 @@ HeadVolume::HeadVolume(const VesselFrame& vf, const VesselGeometry& geometry) {
   vessel_ = &vf.vessel;
   liquid_ = vf.liquid;
   clip_ = geometry.clip;
-  foam_ = vf.foam;
+  foam_ = &vf.foam;
   radius_ = vf.liquid.waves.radius;
   const FoamParams& fp = vf.params.foam;
   density_ = fp.density;
@@ -79,7 +79,7 @@ HeadVolume::HeadVolume(const VesselFrame& vf, const VesselGeometry& geometry) {
   majorant_ = density_ * (1 + 0.8 * detail_) * rings * 1.001;
 }
 
-double HeadVolume::thickness_at(double x, double z) const { return foam_.thickness_at(x, z, radius_); }
+double HeadVolume::thickness_at(double x, double z) const { return foam_->thickness_at(x, z, radius_); }
 
 double HeadVolume::density(const glm::dvec3& p) const {
   if (!present_) return 0;
@@ -107,7 +107,7 @@ bool HeadVolume::interval(const glm::dvec3& o, const glm::dvec3& d, double& t0, 
   const glm::dvec3 n = liquid_.n;
   const SurfaceWaves& w = liquid_.waves;
   const double waves = std::fabs(w.ring) + std::fabs(w.cross.x) + std::fabs(w.cross.y) + w.dimple_depth;
-  const double top_max = foam_.thickness * (1 + std::fabs(foam_.dome)) * foam_.crater_headroom() + waves + 0.006;
+  const double top_max = foam_->thickness * (1 + std::fabs(foam_->dome)) * foam_->crater_headroom() + waves + 0.006;
   const double h0 = glm::dot(n, o) - liquid_.offset, dh = glm::dot(n, d);
   if (std::fabs(dh) > 1e-12) {
     const double ta = (-waves - h0) / dh, tb = (top_max - h0) / dh;

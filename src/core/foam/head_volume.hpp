@@ -53,7 +53,7 @@ class HeadVolume {
   const Vessel* vessel_ = nullptr;
   LiquidPlane liquid_;
   glm::dvec4 clip_{0, 0, 0, 1};
-  FoamFrame foam_;      // its thickness_at (the dome, a pour's crater)
+  const FoamFrame* foam_ = nullptr;  // its thickness_at (the dome, a pour's crater); the frame's, as vessel_
   double radius_ = 1;   // the surface's, for the dome
   double density_ = 0, bubble_size_ = 1, detail_ = 0;
   double majorant_ = 0;
