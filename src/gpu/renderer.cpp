@@ -441,14 +441,21 @@ void Renderer::finish() { glFinish(); }
 Image Renderer::render(const FrameState& f, int width, int height) {
   const int ss = std::clamp(f.params.render.supersample, 1, 4);
   const int w = width * ss, h = height * ss;
+  // Supersamples averaged in scene-linear light, then the output transform (a camera's
+  // pixel integrates light before its response; the reference resolves its paths so):
+  // averaged after the tone map, a thin highlight or a band of bright stripes came out
+  // darker than its light (the concave tone map of each sample; docs/REFERENCE.md). A
+  // transparent picture keeps the per-sample transform and averages its premultiplied
+  // display values (downsample), so that its edges keep their colour for compositing; so
+  // does a driver that cannot draw into half floats (no EXT_color_buffer_float).
+  std::optional<RenderTarget> linear;
   if (ss > 1 && !f.params.render.transparent) {
-    // Supersamples averaged in scene-linear light, then the output transform (a camera's
-    // pixel integrates light before its response; the reference resolves its paths so):
-    // averaged after the tone map, a thin highlight or a band of bright stripes came out
-    // darker than its light (the concave tone map of each sample; docs/REFERENCE.md). A
-    // transparent picture keeps the per-sample transform and averages its premultiplied
-    // display values (downsample), so that its edges keep their colour for compositing.
-    RenderTarget target(w, h, RenderTarget::Format::Rgba16F);
+    try {
+      linear.emplace(w, h, RenderTarget::Format::Rgba16F);
+    } catch (const std::runtime_error&) {
+    }
+  }
+  if (linear) {
     draw_picture(f, w, h, DebugView::None, 0, true);
     std::vector<float> rows(size_t(w) * size_t(h) * 4), samples(rows.size());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
