@@ -527,7 +527,8 @@ void Viewer::draw_scene(int width, int height) {
     // One target kept across frames, made again only when the window or the tier resizes it.
     if (!tier_target_ || tier_target_->width() != sw || tier_target_->height() != sh) {
       tier_target_.reset();
-      tier_target_ = std::make_unique<gpu::RenderTarget>(sw, sh, gpu::RenderTarget::Format::Rgba8);  // bound for drawing and reading
+      // (bound for drawing and reading)
+      tier_target_ = std::make_unique<gpu::RenderTarget>(sw, sh, gpu::RenderTarget::Format::Rgba8);
     } else {
       tier_target_->bind();
     }

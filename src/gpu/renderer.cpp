@@ -26,8 +26,8 @@ RenderTarget::RenderTarget(int w, int h, Format format) : width_(w), height_(h) 
   const bool float_target = format != Format::Rgba8;
   glGenTextures(1, &tex_);
   glBindTexture(GL_TEXTURE_2D, tex_);
-  glTexStorage2D(GL_TEXTURE_2D, 1, format == Format::Rgba32F ? GL_RGBA32F : format == Format::Rgba16F ? GL_RGBA16F : GL_RGBA8,
-                 w, h);
+  const GLenum internal = format == Format::Rgba32F ? GL_RGBA32F : format == Format::Rgba16F ? GL_RGBA16F : GL_RGBA8;
+  glTexStorage2D(GL_TEXTURE_2D, 1, internal, w, h);
   glGenFramebuffers(1, &fbo_);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex_, 0);
@@ -45,7 +45,7 @@ RenderTarget::RenderTarget(int w, int h, Format format) : width_(w), height_(h) 
                                "driver's limit of " + std::to_string(limit) + " pixels a side (GL_MAX_TEXTURE_SIZE " +
                                std::to_string(max_tex) + ", GL_MAX_RENDERBUFFER_SIZE " + std::to_string(max_rb) + ")");
     throw std::runtime_error(float_target ? "float render targets are not supported by this GL driver "
-                                            "(EXT_color_buffer_float); debug views and supersampled pictures need them"
+                                            "(EXT_color_buffer_float); debug views need them"
                                           : "cannot create an offscreen framebuffer of " + size + " pixels: " +
                                                 (err == GL_OUT_OF_MEMORY ? "out of GPU memory" : "refused by the GL driver"));
   }

@@ -24,7 +24,7 @@ vec3 linear_to_srgb(vec3 c) {
 // and sRGB-encoded; or, with `linear`, c itself (no tone map, no clamp but to a half
 // float's range): supersamples are then averaged in scene-linear light before the output
 // transform, as a camera's pixel integrates light and as the reference resolves its
-// paths (core/output/resolve; twin of display_channel in core/output/tonemap.hpp).
+// paths (core/output/resolve; twin of display_code in core/output/tonemap.hpp).
 vec3 output_transform(vec3 c, int tonemap, bool linear) {
   if (linear) return clamp(c, 0.0, 65504.0);
   return linear_to_srgb(tonemap == 1 ? aces_filmic(c) : c);
