@@ -71,6 +71,29 @@ SceneRequest timeline_scene(const RenderRequest& req, const AnimateRequest& anim
 
 }  // namespace
 
+int render_timeline_still(const RenderRequest& req, const AnimateRequest& anim, double at) {
+  const fs::path timeline_path = timeline_file(anim.timeline);
+  Timeline timeline = load_timeline(timeline_path.string());
+  std::vector<InputFile> inputs = {{"--timeline", timeline_path}};
+  const SceneRequest scene = timeline_scene(req, anim, timeline, inputs);
+  const double fps = anim.fps > 0 ? anim.fps : (timeline.fps > 0 ? timeline.fps : 30.0);
+  const fs::path dest = still_destination(req);
+  refuse_overwriting_inputs(dest, req.output, inputs, false);
+  std::string log;
+  const Scene base = resolve_scene_objects(scene, &log);
+  check_camera(base.params, req.camera_given);
+  bind_timeline(timeline, base);
+  if (req.verbose) std::fprintf(stderr, "%stimeline: %s at %g s (played at %g fps)\n", log.c_str(), timeline.file.c_str(), at, fps);
+  SceneSimulation sim(timeline.scene_at(0, base));
+  sim.settle_bubbles(4.0);  // as animate
+  std::vector<TimelineDriver> drivers = timeline_drivers(timeline, sim);
+  // Frame by frame, as animate plays it (a parameter the timeline moves takes each
+  // frame's value for the steps up to the next), then on to `at`.
+  for (int i = 0; i / fps < at - 1e-9; ++i) play_timeline(sim, drivers, timeline, base, i / fps);
+  play_timeline(sim, drivers, timeline, base, at);
+  return render_still(req, sim.frame(), dest);
+}
+
 int animate(const RenderRequest& req, const AnimateRequest& anim) {
   const fs::path timeline_path = timeline_file(anim.timeline);
   Timeline timeline = load_timeline(timeline_path.string());

@@ -98,35 +98,36 @@ int render_reference_still(const RenderRequest& req, const FrameState& frame, co
   return 0;
 }
 
+// --debug's view (None for the picture); throws InputError for another name.
+gpu::DebugView debug_view(const std::string& debug) {
+  if (debug.empty()) return gpu::DebugView::None;
+  if (debug == "depth") return gpu::DebugView::Depth;
+  if (debug == "normal") return gpu::DebugView::Normal;
+  if (debug == "material") return gpu::DebugView::Material;
+  if (debug == "cost") return gpu::DebugView::Cost;
+  throw InputError("--debug " + debug + ": expected depth, normal, material or cost");
+}
+
 }  // namespace
 
-int render(const RenderRequest& req) {
-  std::filesystem::path out(req.output);
+// The PNG -o names for a still: its destination (a symbolic link followed). Throws
+// InputError for another extension.
+std::filesystem::path still_destination(const RenderRequest& req) {
+  const std::filesystem::path out(req.output);
   if (out.extension() != ".png")
     throw InputError("-o " + shorten(req.output, kEchoPathBytes) + ": expected a file name ending in .png");
-  gpu::DebugView view = gpu::DebugView::None;
-  if (req.debug == "depth") view = gpu::DebugView::Depth;
-  else if (req.debug == "normal") view = gpu::DebugView::Normal;
-  else if (req.debug == "material") view = gpu::DebugView::Material;
-  else if (req.debug == "cost") view = gpu::DebugView::Cost;
-  else if (!req.debug.empty()) throw InputError("--debug " + req.debug + ": expected depth, normal, material or cost");
+  return write_destination(out);
+}
 
-  // Names resolved first, so a typo gets its "did you mean"; what is read is never written.
-  std::vector<InputFile> inputs = {{"--preset", preset_file(req.scene.preset, "drink", "--preset")}};
-  if (!req.scene.glass.empty()) inputs.push_back({"--glass", preset_file(req.scene.glass, "glass", "--glass")});
-  if (!req.shader_dir.empty()) inputs.push_back({"--shader-dir", req.shader_dir});
-  const std::filesystem::path dest = write_destination(out);
-  refuse_overwriting_inputs(dest, req.output, inputs, false);
-  std::string log;
-  const Scene scene = resolve_scene_objects(req.scene, &log);
-  check_camera(scene.params, req.camera_given);
-  if (req.verbose) std::fprintf(stderr, "%s", log.c_str());
-  const FrameState frame = make_frame(scene);
+int render_still(const RenderRequest& req, const FrameState& frame, const std::filesystem::path& dest) {
+  const std::filesystem::path out(req.output);
+  const gpu::DebugView view = debug_view(req.debug);
   if (req.reference) return render_reference_still(req, frame, dest, out);
   auto ctx = gpu::HeadlessContext::create();
   if (req.verbose) std::fprintf(stderr, "renderer: %s (%s)\n", ctx->renderer().c_str(), ctx->platform().c_str());
   gpu::Renderer renderer(req.shader_dir);
   auto t0 = std::chrono::steady_clock::now();
+  const int supersample = view == gpu::DebugView::None ? frame.params.render.supersample : 1;
   Image img;
   try {
     img = view == gpu::DebugView::None
@@ -134,14 +135,28 @@ int render(const RenderRequest& req) {
               : gpu::visualize_debug(renderer.render_debug(frame, req.width, req.height, view), view,
                                     depth_range(frame, req.width, req.height));
   } catch (const std::runtime_error& e) {
-    explain_size_error(e, req, view == gpu::DebugView::None ? scene.params.render.supersample : 1);
+    explain_size_error(e, req, supersample);
   }
   auto ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (req.verbose)
-    std::fprintf(stderr, "rendered %dx%d (supersample %d) in %.1f ms\n", req.width, req.height,
-                 view == gpu::DebugView::None ? scene.params.render.supersample : 1, ms);
+    std::fprintf(stderr, "rendered %dx%d (supersample %d) in %.1f ms\n", req.width, req.height, supersample, ms);
   write_still(dest, out, img);
   return 0;
+}
+
+int render(const RenderRequest& req) {
+  debug_view(req.debug);  // (its error before any file is looked at)
+  const std::filesystem::path dest = still_destination(req);
+  // Names resolved first, so a typo gets its "did you mean"; what is read is never written.
+  std::vector<InputFile> inputs = {{"--preset", preset_file(req.scene.preset, "drink", "--preset")}};
+  if (!req.scene.glass.empty()) inputs.push_back({"--glass", preset_file(req.scene.glass, "glass", "--glass")});
+  if (!req.shader_dir.empty()) inputs.push_back({"--shader-dir", req.shader_dir});
+  refuse_overwriting_inputs(dest, req.output, inputs, false);
+  std::string log;
+  const Scene scene = resolve_scene_objects(req.scene, &log);
+  check_camera(scene.params, req.camera_given);
+  if (req.verbose) std::fprintf(stderr, "%s", log.c_str());
+  return render_still(req, make_frame(scene), dest);
 }
 
 int list_presets() {

@@ -2,7 +2,9 @@
 #pragma once
 
 #include "core/params/preset.hpp"
+#include "core/scene/frame.hpp"
 
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -37,6 +39,15 @@ struct AnimateRequest {
 
 int render(const RenderRequest&);
 int animate(const RenderRequest&, const AnimateRequest&);
+// The timeline's frame at `at` seconds as a still (the picture, a debug view or the
+// reference), played as an animation is, frame by frame at its rate, so that it is the
+// animation's frame there.
+int render_timeline_still(const RenderRequest&, const AnimateRequest&, double at);
+// The destination of the still -o names (a .png; a symbolic link followed); throws InputError.
+std::filesystem::path still_destination(const RenderRequest&);
+// Renders `frame` as RenderRequest asks (the GPU's picture or debug view, or the reference)
+// and writes it to `dest` atomically.
+int render_still(const RenderRequest&, const FrameState& frame, const std::filesystem::path& dest);
 int list_presets();
 int validate(const std::vector<std::string>& files);
 int print_params(bool markdown);

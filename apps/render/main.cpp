@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
   // Values are taken as text and checked by cli::*_flag, so every bad value gets the
   // same kind of message (flag, value, what was expected) and exit code 1.
   cli::RenderRequest rr;
-  std::string size = "512x512", tonemap, debug, supersample, fps, duration;
+  std::string size = "512x512", tonemap, debug, supersample, fps, duration, at;
   bool transparent = false;
   auto* render = app.add_subcommand("render", "Render a preset to a PNG");
   render->add_option("-p,--preset", rr.scene.preset, "Drink or scene preset: a name or a JSON file")
@@ -55,6 +55,9 @@ int main(int argc, char** argv) {
                      ".mp4/.gif file");
   render->add_option("--fps", fps, "Frames per second of the animation, 1-120 (default: the timeline's, else 30)");
   render->add_option("--duration", duration, "Seconds to render, 0.01-600 (default: the timeline's)");
+  render->add_option("--at", at,
+                     "With --timeline: render the timeline's frame at this time, 0-600 seconds, as a still PNG "
+                     "(the picture, --debug or --reference; played at --fps)");
   render->add_flag("--progress", anim.progress, "Show the progress bar even when stderr is not a terminal");
   render->add_flag("--overwrite", anim.overwrite,
                    "Let a PNG sequence replace a folder that holds other files (all of them are removed)");
@@ -109,8 +112,15 @@ int main(int argc, char** argv) {
       rr.camera_given = render->count("--camera") > 0;
       if (render->count("--spp")) rr.samples = cli::integer_flag("--spp", spp, 1, 100000);
       if (render->count("--threads")) rr.threads = cli::integer_flag("--threads", threads, 1, 256);
+      const bool still_of_timeline = render->count("--at") > 0;
+      if (still_of_timeline) {
+        if (anim.timeline.empty()) throw InputError("--at needs --timeline (it is a time in a timeline)");
+        for (const char* flag : {"--duration", "--overwrite"})
+          if (render->count(flag)) throw InputError(std::string(flag) + " is about animations: --at renders a still");
+      }
       if (rr.reference) {
-        if (!anim.timeline.empty()) throw InputError("--reference renders a still: leave out --timeline");
+        if (!anim.timeline.empty() && !still_of_timeline)
+          throw InputError("--reference renders a still: leave out --timeline, or give --at");
         if (!rr.debug.empty()) throw InputError("--reference renders the picture: leave out --debug");
         if (transparent) throw InputError("--reference renders an opaque picture: leave out --transparent");
         if (!rr.shader_dir.empty()) throw InputError("--reference uses no shaders: leave out --shader-dir");
@@ -119,8 +129,13 @@ int main(int argc, char** argv) {
         for (const char* flag : {"--spp", "--threads"})
           if (render->count(flag)) throw InputError(std::string(flag) + " needs --reference (it is about the path tracer)");
       }
+      if (still_of_timeline) {
+        anim.preset_given = render->count("--preset") > 0;
+        anim.glass_given = render->count("--glass") > 0;
+        return cli::render_timeline_still(rr, anim, cli::number_flag("--at", at, 0, 600, "seconds"));
+      }
       if (!anim.timeline.empty()) {
-        if (!rr.debug.empty()) throw InputError("--debug renders a still: leave out --timeline");
+        if (!rr.debug.empty()) throw InputError("--debug renders a still: leave out --timeline, or give --at");
         anim.output = rr.output_given ? rr.output : "";
         anim.preset_given = render->count("--preset") > 0;
         anim.glass_given = render->count("--glass") > 0;
