@@ -69,37 +69,76 @@ SceneRequest timeline_scene(const RenderRequest& req, const AnimateRequest& anim
   return scene;
 }
 
+// A timeline read, the scene it plays in and the rate it is played at; `inputs`: every
+// file it reads (the output may replace none).
+struct TimelineToPlay {
+  Timeline timeline;
+  std::vector<InputFile> inputs;
+  SceneRequest scene;
+  double fps = 30;
+};
+
+TimelineToPlay read_timeline(const RenderRequest& req, const AnimateRequest& anim) {
+  TimelineToPlay t;
+  const fs::path path = timeline_file(anim.timeline);
+  t.timeline = load_timeline(path.string());
+  t.inputs = {{"--timeline", path}};
+  t.scene = timeline_scene(req, anim, t.timeline, t.inputs);
+  t.fps = anim.fps > 0 ? anim.fps : (t.timeline.fps > 0 ? t.timeline.fps : 30.0);
+  return t;
+}
+
+// The timeline's scene resolved and its camera checked, the timeline bound to it (the
+// objects its actions address are in this scene); what was resolved goes to `log`.
+Scene bind_scene(const RenderRequest& req, TimelineToPlay& t, std::string& log) {
+  Scene base = resolve_scene_objects(t.scene, &log);
+  check_camera(base.params, req.camera_given);
+  bind_timeline(t.timeline, base);
+  return base;
+}
+
+// The timeline played from its start through the simulation, frame by frame: drinks that
+// have been standing (a pour clears them), one driver per object.
+class Playback {
+ public:
+  Playback(const Timeline& tl, const Scene& base) : tl_(tl), base_(base), sim_(tl.scene_at(0, base)) {
+    sim_.settle_bubbles(4.0);
+    drivers_ = timeline_drivers(tl, sim_);
+  }
+  // On to time t (a parameter the timeline moves takes the value at t for the steps up to
+  // the next call).
+  void to(double t) { play_timeline(sim_, drivers_, tl_, base_, t); }
+  const SceneSimulation& sim() const { return sim_; }
+
+ private:
+  const Timeline& tl_;
+  const Scene& base_;
+  SceneSimulation sim_;
+  std::vector<TimelineDriver> drivers_;
+};
+
 }  // namespace
 
 int render_timeline_still(const RenderRequest& req, const AnimateRequest& anim, double at) {
-  const fs::path timeline_path = timeline_file(anim.timeline);
-  Timeline timeline = load_timeline(timeline_path.string());
-  std::vector<InputFile> inputs = {{"--timeline", timeline_path}};
-  const SceneRequest scene = timeline_scene(req, anim, timeline, inputs);
-  const double fps = anim.fps > 0 ? anim.fps : (timeline.fps > 0 ? timeline.fps : 30.0);
+  TimelineToPlay t = read_timeline(req, anim);
   const fs::path dest = still_destination(req);
-  refuse_overwriting_inputs(dest, req.output, inputs, false);
+  refuse_overwriting_inputs(dest, req.output, t.inputs, false);
   std::string log;
-  const Scene base = resolve_scene_objects(scene, &log);
-  check_camera(base.params, req.camera_given);
-  bind_timeline(timeline, base);
-  if (req.verbose) std::fprintf(stderr, "%stimeline: %s at %g s (played at %g fps)\n", log.c_str(), timeline.file.c_str(), at, fps);
-  SceneSimulation sim(timeline.scene_at(0, base));
-  sim.settle_bubbles(4.0);  // as animate
-  std::vector<TimelineDriver> drivers = timeline_drivers(timeline, sim);
-  // Frame by frame, as animate plays it (a parameter the timeline moves takes each
-  // frame's value for the steps up to the next), then on to `at`.
-  for (int i = 0; i / fps < at - 1e-9; ++i) play_timeline(sim, drivers, timeline, base, i / fps);
-  play_timeline(sim, drivers, timeline, base, at);
-  return render_still(req, sim.frame(), dest);
+  const Scene base = bind_scene(req, t, log);
+  if (req.verbose)
+    std::fprintf(stderr, "%stimeline: %s at %g s (played at %g fps)\n", log.c_str(), t.timeline.file.c_str(), at,
+                 t.fps);
+  // Frame by frame as animate plays it, then on to `at`: the animation's frame there.
+  Playback play(t.timeline, base);
+  for (int i = 0; i / t.fps < at - 1e-9; ++i) play.to(i / t.fps);
+  play.to(at);
+  return render_still(req, play.sim().frame(), dest);
 }
 
 int animate(const RenderRequest& req, const AnimateRequest& anim) {
-  const fs::path timeline_path = timeline_file(anim.timeline);
-  Timeline timeline = load_timeline(timeline_path.string());
-  std::vector<InputFile> inputs = {{"--timeline", timeline_path}};
-  const SceneRequest scene = timeline_scene(req, anim, timeline, inputs);
-  const double fps = anim.fps > 0 ? anim.fps : (timeline.fps > 0 ? timeline.fps : 30.0);
+  TimelineToPlay t = read_timeline(req, anim);
+  const Timeline& timeline = t.timeline;
+  const double fps = t.fps;
   const double duration = anim.duration > 0 ? anim.duration : timeline.duration;
   const int frames = std::max(1, int(std::floor(duration * fps + 1e-9)));
 
@@ -114,12 +153,10 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
                      "or .gif");
   // Links are followed: the file or folder they point to is what gets replaced.
   const fs::path dest = video ? write_destination(shown) : SequenceFolder::destination(shown);
-  refuse_overwriting_inputs(dest, shown, inputs, !video);
+  refuse_overwriting_inputs(dest, shown, t.inputs, !video);
 
   std::string log;
-  const Scene base = resolve_scene_objects(scene, &log);
-  check_camera(base.params, req.camera_given);
-  bind_timeline(timeline, base);  // the objects its actions address are in this scene
+  const Scene base = bind_scene(req, t, log);
   if (req.verbose)
     std::fprintf(stderr, "%stimeline: %s (%d frames at %g fps)\n", log.c_str(), timeline.file.c_str(), frames, fps);
 
@@ -140,16 +177,14 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
   auto ctx = gpu::HeadlessContext::create();
   if (req.verbose) std::fprintf(stderr, "renderer: %s (%s)\n", ctx->renderer().c_str(), ctx->platform().c_str());
   gpu::Renderer renderer(req.shader_dir);
-  SceneSimulation sim(timeline.scene_at(0, base));
-  sim.settle_bubbles(4.0);  // drinks that have been standing (a pour clears them)
-  std::vector<TimelineDriver> drivers = timeline_drivers(timeline, sim);  // one per object
+  Playback play(timeline, base);
   const bool progress = anim.progress || isatty(STDERR_FILENO);
   const auto t0 = std::chrono::steady_clock::now();
   for (int i = 0; i < frames; ++i) {
-    play_timeline(sim, drivers, timeline, base, i / fps);
+    play.to(i / fps);
     Image img;
     try {
-      img = renderer.render(sim.frame(), req.width, req.height);
+      img = renderer.render(play.sim().frame(), req.width, req.height);
     } catch (const std::runtime_error& e) {
       explain_size_error(e, req, base.params.render.supersample);
     }
@@ -169,7 +204,7 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
       fs::is_symlink(fs::symlink_status(given, ec)) ? "through the symbolic link, to " + dest.string() + "; " : "";
   double spilled = 0;  // the most any glass spilled
   for (int i = 0; i < int(base.objects.size()); ++i)
-    if (const Simulation* v = sim.vessel(i)) spilled = std::max(spilled, v->spilled());
+    if (const Simulation* v = play.sim().vessel(i)) spilled = std::max(spilled, v->spilled());
   std::printf("wrote %s (%s%d frame%s, %g fps, %.2f s; spilled %.1f %% of the glass%s)\n", shown.c_str(),
               through.c_str(), frames, frames == 1 ? "" : "s", fps, frames / fps, 100.0 * spilled,
               base.objects.size() > 1 ? " that spilled most" : "");

@@ -438,6 +438,20 @@ void Renderer::draw_bubbles(const FrameState& f, int width, int height) {
 
 void Renderer::finish() { glFinish(); }
 
+namespace {
+
+// The bound float target's RGBA, rows top-down (GL's are bottom-up).
+std::vector<float> read_float_rows(int w, int h) {
+  std::vector<float> rows(size_t(w) * size_t(h) * 4), out(rows.size());
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, rows.data());
+  for (int y = 0; y < h; ++y)
+    std::copy_n(&rows[size_t(h - 1 - y) * size_t(w) * 4], size_t(w) * 4, &out[size_t(y) * size_t(w) * 4]);
+  return out;
+}
+
+}  // namespace
+
 Image Renderer::render(const FrameState& f, int width, int height) {
   const int ss = std::clamp(f.params.render.supersample, 1, 4);
   const int w = width * ss, h = height * ss;
@@ -457,12 +471,7 @@ Image Renderer::render(const FrameState& f, int width, int height) {
   }
   if (linear) {
     draw_picture(f, w, h, DebugView::None, 0, true);
-    std::vector<float> rows(size_t(w) * size_t(h) * 4), samples(rows.size());
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, rows.data());
-    for (int y = 0; y < h; ++y)  // GL rows are bottom-up; images are top-down.
-      std::copy_n(&rows[size_t(h - 1 - y) * size_t(w) * 4], size_t(w) * 4, &samples[size_t(y) * size_t(w) * 4]);
-    return resolve_linear(samples, width, height, ss, f.params.render.tonemap);
+    return resolve_linear(read_float_rows(w, h), width, height, ss, f.params.render.tonemap);
   }
   RenderTarget target(w, h, RenderTarget::Format::Rgba8);
   draw(f, w, h);
@@ -478,13 +487,7 @@ Image Renderer::render(const FrameState& f, int width, int height) {
 DebugImage Renderer::render_debug(const FrameState& f, int width, int height, DebugView view, int event) {
   RenderTarget target(width, height, RenderTarget::Format::Rgba32F);
   draw(f, width, height, view, event);
-  DebugImage out{width, height, std::vector<float>(size_t(width) * size_t(height) * 4)};
-  std::vector<float> rows(out.rgba.size());
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rows.data());
-  for (int y = 0; y < height; ++y)
-    std::copy_n(&rows[size_t(height - 1 - y) * size_t(width) * 4], size_t(width) * 4,
-                &out.rgba[size_t(y) * size_t(width) * 4]);
-  return out;
+  return DebugImage{width, height, read_float_rows(width, height)};
 }
 
 Image visualize_debug(const DebugImage& d, DebugView view, DepthRange depth) {
