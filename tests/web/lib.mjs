@@ -10,6 +10,13 @@ import { serve, defaultRoot } from './server.mjs';
 const here = path.dirname(fileURLToPath(import.meta.url));
 export const artifacts = path.resolve(here, '../../out/web-tests');
 
+// The waits' limits say when a test has hung, not how fast the page is: SwiftShader's frames
+// take seconds on a slow or busy machine (the flight with reflections drew 4 frames in over
+// 30 s beside the GPU tests on CI). Every limit is a nominal figure times this factor
+// (DRAUGHT_WEB_PATIENCE, 4 unless set); it costs time only when a test fails.
+const PATIENCE = Number(process.env.DRAUGHT_WEB_PATIENCE) > 0 ? Number(process.env.DRAUGHT_WEB_PATIENCE) : 4;
+export const patience = (ms) => ms * PATIENCE;
+
 // Software WebGL (SwiftShader through ANGLE): no GPU or display needed.
 export const chromiumFlags = [
   '--headless',
@@ -65,7 +72,7 @@ export async function openPage(env, { query = testQuery, context = {} } = {}) {
   page.on('console', (m) => log.push(`${m.type()}: ${m.text()}`));
   page.on('pageerror', (e) => log.push(`pageerror: ${e.message}`));
   await page.goto(env.base + 'index.html?' + query);
-  await page.waitForFunction(() => window.draught && (window.draught.ready || window.draught.error), null, { timeout: 30000 });
+  await page.waitForFunction(() => window.draught && (window.draught.ready || window.draught.error), null, { timeout: patience(30000) });
   const error = await page.evaluate(() => window.draught.error);
   if (error) throw new Error('page did not start: ' + error + '\n' + log.join('\n'));
   await waitFrames(page, 2);
@@ -73,9 +80,18 @@ export async function openPage(env, { query = testQuery, context = {} } = {}) {
   return page;
 }
 
-export async function waitFrames(page, n, timeout = 30000) {
-  const f0 = await page.evaluate(() => window.draught.frames());
-  await page.waitForFunction((f) => window.draught.frames() >= f, f0 + n, { timeout, polling: 20 });
+// Waits for n more frames; fails only when one frame takes longer than `stall` (so n slow
+// frames never add up to a failure).
+export async function waitFrames(page, n, stall = patience(30000)) {
+  const frames = () => page.evaluate(() => window.draught.frames());
+  const target = (await frames()) + n;
+  for (let seen = target - n; seen < target; seen = await frames()) {
+    try {
+      await page.waitForFunction((f) => window.draught.frames() > f, seen, { timeout: stall, polling: 20 });
+    } catch (e) {
+      throw new Error(`no frame drawn in ${(stall / 1000).toFixed(0)} s (waiting for frame ${target}, at ${seen}): ${e.message}`);
+    }
+  }
 }
 
 // The canvas as RGBA bytes (needs ?preserve), with its size.

@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { spawnSync } from 'node:child_process';
-import { start, openPage, waitFrames, snapshot, difference, blockDifference, stats, artifacts } from './lib.mjs';
+import { start, openPage, waitFrames, snapshot, difference, blockDifference, stats, artifacts, patience } from './lib.mjs';
 
 const tests = [];
 const test = (name, fn) => tests.push({ name, fn });
@@ -286,7 +286,7 @@ test('a point cloud file is shown on its own, fitted to the view; a broken one c
     assert.deepEqual(await values(page), v0, 'nothing applied');
 
     await page.setInputFiles('#cloud', { name: 'blob.xyz', mimeType: 'text/plain', buffer: blobXyz(300, 20) });
-    await page.waitForFunction(() => /point cloud blob\.xyz/.test(document.getElementById('message').textContent), null, { timeout: 30000 });
+    await page.waitForFunction(() => /point cloud blob\.xyz/.test(document.getElementById('message').textContent), null, { timeout: patience(30000) });
     const ok = await message(page);
     note(ok.text);
     assert.ok(!ok.error);
@@ -342,10 +342,10 @@ test('devicemotion tilts the liquid (rig picks up the gyro)', async () => {
 test('adaptive quality lowers the render scale to hold the frame budget and says so', async () => {
   const page = await desktop();
   await page.evaluate(() => window.draught.api.quality(0, 5));  // adaptive, 5 ms: SwiftShader cannot
-  await page.waitForFunction(() => window.draught.status().scale < 1, null, { timeout: 30000, polling: 100 });
+  await page.waitForFunction(() => window.draught.status().scale < 1, null, { timeout: patience(30000), polling: 100 });
   await page.waitForFunction(() => /quality \d+ %/.test(document.getElementById('quality').textContent) &&
                                    !/quality 100 %/.test(document.getElementById('quality').textContent),
-                             null, { timeout: 5000 });
+                             null, { timeout: patience(5000) });
   const s = await status(page);
   assert.ok(s.width < 160 && s.height < 120, `backing store ${s.width}x${s.height}`);
   await page.screenshot({ path: path.join(artifacts, 'adaptive.png') });
@@ -479,7 +479,7 @@ async function settled(page, from = null, near = 0.002, gathered = 0.004) {
     const dist = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1]);
     return d.droplets && (!from || dist(d.pointer, from) > 0.01) && dist(d.spheres[0], d.pointer) < near &&
       d.spheres.every((s) => dist(s, d.spheres[0]) < gathered);
-  }, { from, near, gathered }, { timeout: 30000, polling: 50 });
+  }, { from, near, gathered }, { timeout: patience(30000), polling: 50 });
   return droplets(page);
 }
 // A CSS pixel of the canvas (fractions of its size from the top-left) in page coordinates, and
@@ -621,7 +621,7 @@ async function objectRegions(page, step = 2) {
   });
 }
 const objects = (page) => page.evaluate(() => window.draught.objects());
-const waitSelected = (page, i) => page.waitForFunction((i) => window.draught.objects().selected === i, i, { timeout: 5000 });
+const waitSelected = (page, i) => page.waitForFunction((i) => window.draught.objects().selected === i, i, { timeout: patience(5000) });
 
 test('several glasses: a click, a tap and the picker select one; the panel edits it alone', async () => {
   // Three copies of the glass (the page's test hook): selection needs no scene preset.
@@ -777,7 +777,7 @@ async function typeValue(page, path, text) {
 }
 const pageErrors = (page) => page.draughtLog.filter((l) => l.startsWith('pageerror'));
 const waitMessage = (page, re) => page.waitForFunction((src) => new RegExp(src).test(document.getElementById('message').textContent),
-                                                      re.source, { timeout: 20000 });
+                                                      re.source, { timeout: patience(20000) });
 // A normal edit after the hostile input still works: the value is applied and the picture
 // changes by more than its own motion.
 async function editStillWorks(page, path, text) {
@@ -947,7 +947,7 @@ test('a lost WebGL context is restored: programs and textures rebuilt, drawing a
     await page.mouse.move(c.x, c.y);
     await page.mouse.down();  // held through the loss: the glass stays tilted
     await page.mouse.move(c.x + 30, c.y, { steps: 4 });
-    await page.waitForFunction(() => window.draught.status().tilt > 10, null, { timeout: 10000 });
+    await page.waitForFunction(() => window.draught.status().tilt > 10, null, { timeout: patience(10000) });
     await waitFrames(page, 3);
     const before = { values: await values(page), objects: await objects(page), status: await status(page) };
     const picture = await snapshot(page);
@@ -956,7 +956,7 @@ test('a lost WebGL context is restored: programs and textures rebuilt, drawing a
       window.loseContextExt = document.getElementById('canvas').getContext('webgl2').getExtension('WEBGL_lose_context');
       window.loseContextExt.loseContext();
     });
-    await page.waitForFunction(() => window.draught.status().context_lost === true, null, { timeout: 10000 });
+    await page.waitForFunction(() => window.draught.status().context_lost === true, null, { timeout: patience(10000) });
     assert.match((await message(page)).text, /WebGL context was lost/);
     const f0 = (await status(page)).frames;
     await page.waitForTimeout(500);
@@ -964,7 +964,7 @@ test('a lost WebGL context is restored: programs and textures rebuilt, drawing a
 
     await page.evaluate(() => window.loseContextExt.restoreContext());
     await page.waitForFunction((f) => !window.draught.status().context_lost && window.draught.frames() >= f + 3, f0,
-                               { timeout: 30000, polling: 50 });
+                               { timeout: patience(30000), polling: 50 });
     const after = await status(page);
     assert.equal(after.error, '');
     assert.equal(after.context_restores, 1);
@@ -980,7 +980,7 @@ test('a lost WebGL context is restored: programs and textures rebuilt, drawing a
     assert.equal(after.drink, 'stout');
     assert.ok(Math.abs(after.tilt - before.status.tilt) < 2, `tilt kept: ${before.status.tilt.toFixed(1)} -> ${after.tilt.toFixed(1)} degrees`);
     await page.mouse.up();
-    await page.waitForFunction(() => window.draught.status().tilt < 0.5, null, { timeout: 10000 });  // upright again
+    await page.waitForFunction(() => window.draught.status().tilt < 0.5, null, { timeout: patience(10000) });  // upright again
 
     // And it keeps working: an edit changes the picture.
     await editStillWorks(page, 'env.sweep_color', '0.8,0.2,0.2');  // the whole backdrop, not one glass of three
@@ -1017,7 +1017,7 @@ function differenceAt(a, b, pixels) {
 const uploads = (page) => page.evaluate(() => window.draught.screen.uploads());
 async function waitUploads(page, n) {
   const u0 = await uploads(page);
-  await page.waitForFunction((u) => window.draught.screen.uploads() >= u, u0 + n, { timeout: 30000, polling: 50 });
+  await page.waitForFunction((u) => window.draught.screen.uploads() >= u, u0 + n, { timeout: patience(30000), polling: 50 });
 }
 
 test('the camera on the screen: its moving picture is seen through the drink', async () => {
@@ -1071,7 +1071,7 @@ test('a video file on the screen plays behind the glass; a file that is no video
     await page.evaluate(() => window.draught.setParam('bubbles.max_bubbles', '0'));
     const inDrink = await drinkPixels(page);
     await page.setInputFiles('#screen-file', clip);
-    await page.waitForFunction(() => /the screen plays screen-test\.webm/.test(document.getElementById('message').textContent), null, { timeout: 30000 });
+    await page.waitForFunction(() => /the screen plays screen-test\.webm/.test(document.getElementById('message').textContent), null, { timeout: patience(30000) });
     await waitUploads(page, 5);
     await waitFrames(page, 2);
     const a = await snapshot(page);
@@ -1085,7 +1085,7 @@ test('a video file on the screen plays behind the glass; a file that is no video
 
     const before = await uploads(page);
     await page.setInputFiles('#screen-file', { name: 'notes.webm', mimeType: 'video/webm', buffer: Buffer.from('not a video at all') });
-    await page.waitForFunction(() => /notes\.webm/.test(document.getElementById('message').textContent), null, { timeout: 30000 });
+    await page.waitForFunction(() => /notes\.webm/.test(document.getElementById('message').textContent), null, { timeout: patience(30000) });
     const m = await message(page);
     assert.ok(m.error, 'shown as an error');
     assert.match(m.text, /notes\.webm: .*the screen keeps what it showed/);
@@ -1102,8 +1102,8 @@ test('the shipped screen scene plays its clip through the browser', async () => 
   const page = await openPage(env);
   try {
     await page.selectOption('#drink', 'screen-lager');
-    await page.waitForFunction(() => window.draught.status().screen_file === '/presets/videos/draught-loop.mp4', null, { timeout: 30000 });
-    await page.waitForFunction(() => window.draught.screen.uploads() >= 5, null, { timeout: 30000, polling: 50 });
+    await page.waitForFunction(() => window.draught.status().screen_file === '/presets/videos/draught-loop.mp4', null, { timeout: patience(30000) });
+    await page.waitForFunction(() => window.draught.screen.uploads() >= 5, null, { timeout: patience(30000), polling: 50 });
     const st = await status(page);
     assert.equal(st.screen_size, '480x270');
     assert.equal((await values(page))['screen.source'], 'draught-loop', 'the preset keeps its source');
@@ -1112,7 +1112,7 @@ test('the shipped screen scene plays its clip through the browser', async () => 
     await page.screenshot({ path: path.join(artifacts, 'screen-lager.png') });
     // Back to a drink without a screen: the clip stops.
     await page.selectOption('#drink', 'lager');
-    await page.waitForFunction(() => window.draught.status().screen_file === '', null, { timeout: 10000 });
+    await page.waitForFunction(() => window.draught.status().screen_file === '', null, { timeout: patience(10000) });
     await page.waitForTimeout(600);
     const u = await uploads(page);
     await page.waitForTimeout(600);
