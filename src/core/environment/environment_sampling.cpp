@@ -22,13 +22,29 @@ EnvironmentSampler::EnvironmentSampler(const Studio& studio) {
   const HdrImage& img = map.levels[level];
   width_ = img.width;
   height_ = img.height;
-  std::vector<double> weight(size_t(width_) * size_t(height_));
+  std::vector<double> luminance(size_t(width_) * size_t(height_));
+  for (int j = 0; j < height_; ++j)
+    for (int i = 0; i < width_; ++i) {
+      const glm::vec3 c = img.at(i, j);
+      luminance[size_t(j) * size_t(width_) + size_t(i)] = 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+    }
+  // A texel's weight is the brightest of it and its eight neighbours (across the seam, not
+  // past the poles): the bilinear look-up inside a texel blends only those, so the light
+  // seen anywhere in it is at most its weight. Weighted by its own luminance alone, the
+  // texels around a small lamp were picked at the uniform share's rate while seeing a good
+  // part of the lamp, and single samples carried 2 % of a 200,000-sample estimate.
+  std::vector<double> weight(luminance.size());
   double total = 0;
   for (int j = 0; j < height_; ++j) {
     const double solid = (row_cos(j) - row_cos(j + 1)) * 2 * kPi / width_;
     for (int i = 0; i < width_; ++i) {
-      const glm::vec3 c = img.at(i, j);
-      const double w = (0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b) * solid;
+      double brightest = 0;
+      for (int dj = -1; dj <= 1; ++dj) {
+        const int jj = std::clamp(j + dj, 0, height_ - 1);
+        for (int di = -1; di <= 1; ++di)
+          brightest = std::max(brightest, luminance[size_t(jj) * size_t(width_) + size_t((i + di + width_) % width_)]);
+      }
+      const double w = brightest * solid;
       weight[size_t(j) * size_t(width_) + size_t(i)] = w;
       total += w;
     }

@@ -4,9 +4,9 @@
 // image lights the floor and the head without a storm of fireflies.
 //
 // The density is piecewise constant over the texels of the image's first level at most 256
-// wide: a texel is chosen in proportion to its mean luminance times its solid angle (plus
-// a tenth of the sphere's uniform share, so no direction the bilinear look-up lights is
-// left out), then a direction uniform in solid angle within it.
+// wide: a texel is chosen in proportion to the brightest mean luminance of it and its eight
+// neighbours (what the bilinear look-up can blend into it) times its solid angle, plus a
+// tenth of the sphere's uniform share, then a direction uniform in solid angle within it.
 #pragma once
 
 #include "core/environment/studio.hpp"

@@ -176,21 +176,31 @@ TEST_F(EnvironmentImage, SamplingFollowsTheImagesLightAndItsDensityIsRight) {
   Rng rng(7, 0, 0);
   const int n = 200000;
   glm::dvec3 estimate(0.0);
+  double largest = 0;  // the largest single sample (red)
   int towards_lamp = 0;
   const glm::dvec3 lamp_world = studio.world_direction(lamp);
   for (int k = 0; k < n; ++k) {
-    double pdf;
-    const glm::dvec3 d = sampler.sample(rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform(), pdf);
+    double pdf, u[4];
+    for (double& x : u) x = rng.uniform();  // in order (arguments' order is the compiler's)
+    const glm::dvec3 d = sampler.sample(u[0], u[1], u[2], u[3], pdf);
     ASSERT_NEAR(glm::length(d), 1.0, 1e-9);
     ASSERT_NEAR(pdf, sampler.pdf(d), 1e-9 * pdf);  // the density it reports is the one it samples by
-    estimate += studio.sky(d) / pdf;
+    const glm::dvec3 value = studio.sky(d) / pdf;
+    estimate += value;
+    largest = std::max(largest, value.r);
     towards_lamp += glm::dot(d, lamp_world) > std::cos(glm::radians(8.0));
   }
   estimate /= n;
   // Against the image's integral over the sphere, texel by texel (4 pi x the mean radiance).
   const SkyIrradiance sky = sky_irradiance(studio);
   const glm::dvec3 integral = sky.coef[0] * SkyIrradiance::basis({0, 1, 0})[0] / kPi * 4.0 * kPi;
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(estimate[c], integral[c], 0.03 * integral[c]) << c;
+  // Within 1.5 %: eight seeds in both orders of the four uniforms came within 0.7 %.
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(estimate[c], integral[c], 0.015 * integral[c]) << c;
+  // No sample carries much of the estimate: the texels beside the lamp, which the bilinear
+  // look-up lights with part of it, are picked for it (25 here, 9 x the mean; by each
+  // texel's own light alone they were picked at the uniform share's rate: 12,000, and the
+  // estimate of a seed 13 % off).
+  EXPECT_LT(largest, 20 * integral.r);
   EXPECT_GT(towards_lamp, n / 2);  // the lamp gives most of the light: most samples go there
   // The density integrates to one over the sphere: summed over cells of a finer grid, each
   // inside one of its texels, times their exact solid angles (in the image's own frame).
