@@ -171,7 +171,8 @@ class PhotonTracer {
             return;
           }
           ray.o = ray.at(t_scatter);
-          ray.d = around(ray.d, 1 - 2 * rng.uniform(), 2 * kPi * rng.uniform());  // haze: isotropic
+          const double spin = rng.uniform(), cos_t = 1 - 2 * rng.uniform();  // (drawn in this order)
+          ray.d = around(ray.d, cos_t, 2 * kPi * spin);  // haze: isotropic
           continue;
         }
       } else {

@@ -321,7 +321,8 @@ class Tracer {
     if (mist > 0 && rng.uniform() < mist) {
       thr *= contract::kFogAlbedo;
       const bool outwards = rng.uniform() < 0.5;
-      const glm::dvec3 d = around(outwards ? out : -out, std::sqrt(rng.uniform()), 2 * kPi * rng.uniform());
+      const double spin = rng.uniform(), cos_t = std::sqrt(rng.uniform());  // (drawn in this order)
+      const glm::dvec3 d = around(outwards ? out : -out, cos_t, 2 * kPi * spin);
       if (outwards) {  // into the air
         ray.d = d;
         medium = MediumKind::Air;
@@ -578,7 +579,9 @@ class Tracer {
     size_t j = 0;
     while (j + 1 < lights_.size() && u >= prob[j]) u -= prob[j++];
     AreaLight::Sample s;
-    if (prob[j] <= 0 || !lights_[j].sample_from(p, rng.uniform(), rng.uniform(), s)) return glm::dvec3(0.0);
+    if (prob[j] <= 0) return glm::dvec3(0.0);
+    const double v = rng.uniform(), u1 = rng.uniform();  // (drawn in this order)
+    if (!lights_[j].sample_from(p, u1, v, s)) return glm::dvec3(0.0);
     const bool surface = glm::length(n) > 0;
     const double f = surface ? std::max(glm::dot(s.dir, n), 0.0) / kPi : hg_phase(glm::dot(d, s.dir), g);
     if (f <= 0) return glm::dvec3(0.0);
@@ -649,7 +652,8 @@ RadianceImage render_reference(const FrameState& f, int width, int height, const
         glm::dvec3 sum(0.0);
         for (int i = 0; i < spp; ++i) {
           // A box filter over the pixel, as the picture's supersampling.
-          const Ray r = camera_ray(cam, x + rng.uniform(), y + rng.uniform(), width, height);
+          const double jy = rng.uniform(), jx = rng.uniform();  // (drawn in this order)
+          const Ray r = camera_ray(cam, x + jx, y + jy, width, height);
           const glm::dvec3 L = tracer.radiance(r, rng);
           if (std::isfinite(L.x) && std::isfinite(L.y) && std::isfinite(L.z)) sum += L;
         }

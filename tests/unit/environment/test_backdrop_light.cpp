@@ -61,7 +61,8 @@ double worst_step(const FrameState& f, const BackdropLightMap& m, int points, bo
   const glm::dvec2 texel = m.size / glm::dvec2(m.width, m.height);
   double worst = 0;
   for (int k = 0; k < points; ++k) {
-    glm::dvec2 xs = m.origin + texel * 0.5 + glm::dvec2(rng.uniform(), rng.uniform()) * (m.size - texel);
+    const double v = rng.uniform(), u = rng.uniform();  // (drawn in this order)
+    glm::dvec2 xs = m.origin + texel * 0.5 + glm::dvec2(u, v) * (m.size - texel);
     if (k % 2) xs = m.origin + (glm::floor((xs - m.origin) / texel - 0.5) + 1.0) * texel;  // a cell's middle
     if (!m.covers(xs)) continue;
     glm::dvec3 n;

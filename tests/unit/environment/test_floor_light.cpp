@@ -75,7 +75,8 @@ glm::dvec3 backward_irradiance(const FrameState& f, glm::dvec3 p, int samples, R
   for (const AreaLight& l : f.lights.lights)
     for (int k = 0; k < samples; ++k) {
       AreaLight::Sample s;
-      if (!l.sample_from(p, rng.uniform(), rng.uniform(), s) || s.dir.y <= 0) continue;
+      const double v = rng.uniform(), u = rng.uniform();  // (drawn in this order)
+      if (!l.sample_from(p, u, v, s) || s.dir.y <= 0) continue;
       if (blocked(p + glm::dvec3(0, 1e-7, 0), s.dir, s.dist)) continue;
       e += l.radiance * s.dir.y / s.pdf / double(samples);
     }

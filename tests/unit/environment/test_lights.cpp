@@ -41,7 +41,8 @@ double monte_carlo_factor(const AreaLight& l, glm::dvec3 x, glm::dvec3 n, int co
   double sum = 0;
   for (int i = 0; i < count; ++i) {
     AreaLight::Sample s;
-    if (!l.sample_from(x, rng.uniform(), rng.uniform(), s)) continue;
+    const double v = rng.uniform(), u = rng.uniform();  // (drawn in this order)
+    if (!l.sample_from(x, u, v, s)) continue;
     sum += std::max(glm::dot(s.dir, n), 0.0) / s.pdf;
   }
   return sum / count;
@@ -94,7 +95,8 @@ TEST(Lights, SamplingDensitiesAgreeWithTheLookUp) {
                              sphere({0.1, 0.4, -0.3}, 0.07)}) {
     for (int i = 0; i < 100; ++i) {
       AreaLight::Sample s;
-      ASSERT_TRUE(l.sample_from({0, 0, 0}, rng.uniform(), rng.uniform(), s));
+      const double v = rng.uniform(), u = rng.uniform();  // (drawn in this order)
+      ASSERT_TRUE(l.sample_from({0, 0, 0}, u, v, s));
       EXPECT_NEAR(l.pdf_from({0, 0, 0}, s.dir), s.pdf, 1e-6 * s.pdf);
       double t;
       ASSERT_TRUE(l.intersect({0, 0, 0}, s.dir, 0, t));
