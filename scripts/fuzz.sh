@@ -24,7 +24,8 @@ if ! clang++ -fsanitize=fuzzer,address,undefined "$probe/p.cpp" -o "$probe/p" 2>
 fi
 
 [ -f build-fuzz/CMakeCache.txt ] || cmake -S fuzz -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ >/dev/null
-cmake --build build-fuzz -j"$(nproc)" >/dev/null
+targets=(preset timeline hdr_image decal_image video_source point_cloud)
+cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]/#/fuzz_}" >/dev/null
 
 declare -A seeds=(
   [preset]="presets/glasses presets/drinks presets/scenes"
@@ -36,7 +37,7 @@ declare -A seeds=(
 )
 declare -A dicts=([preset]=fuzz/json.dict [timeline]=fuzz/json.dict [hdr_image]=fuzz/hdr.dict [decal_image]=fuzz/png.dict [video_source]=fuzz/video.dict [point_cloud]=fuzz/ply.dict)
 status=0
-for target in preset timeline hdr_image decal_image video_source point_cloud; do
+for target in "${targets[@]}"; do
   corpus="build-fuzz/corpus/$target"
   mkdir -p "$corpus" build-fuzz/findings
   log="build-fuzz/fuzz_$target.log"
