@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages draught needs, skipping those already there
 # (idempotent). Uses sudo when not root. clang and libclang-rt-14-dev (its runtime
-# libraries, libFuzzer among them) build the fuzz targets (scripts/fuzz.sh).
+# libraries, libFuzzer among them) build the fuzz targets (scripts/fuzz.sh) and the unit
+# suite under the sanitizers (scripts/test.sh).
 set -euo pipefail
 
 packages=(
