@@ -22,7 +22,11 @@ std::string mutate(std::string s, std::mt19937& rng) {
     switch (rng() % 5) {
       case 0: s[at] = char(rng() % 256); break;
       case 1: s.erase(at, 1 + rng() % 8); break;
-      case 2: s.insert(at, s.substr(rng() % s.size(), 1 + rng() % 16)); break;
+      case 2: {  // (drawn in this order: compilers take a call's arguments in either)
+        const size_t length = 1 + rng() % 16, from = rng() % s.size();
+        s.insert(at, s.substr(from, length));
+        break;
+      }
       case 3: s.insert(at, tokens[rng() % std::size(tokens)]); break;
       case 4: s.resize(at); break;
     }
