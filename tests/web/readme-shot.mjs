@@ -9,7 +9,7 @@ const out = process.argv[2] || path.join(artifacts, 'web.png');
 const env = await start();
 try {
   const page = await openPage(env, { query: 'size=360x420&scale=1' });
-  await waitFrames(page, 104, 300000);  // the floor's light refines over a hundred frames once still
+  await waitFrames(page, 104);  // the floor's light refines over a hundred frames once still
   await page.screenshot({ path: out });
   console.log(`wrote ${out}`);
 } finally {

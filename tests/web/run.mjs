@@ -390,7 +390,7 @@ test('an emulated phone settles at a higher resolution scale with the MatCap tie
   let probeMs;
   try {
     assert.equal(await probe.evaluate(() => window.draught.setParam('render.tier', 'matcap')), '');
-    await waitFrames(probe, 20, 120000);
+    await waitFrames(probe, 20);
     probeMs = (await status(probe)).frame_ms;
   } finally {
     await probe.context().close();
