@@ -57,6 +57,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/environment/environment_bake.cpp
   src/core/environment/screen.cpp
   src/core/environment/matcap.cpp
+  src/core/quality/adaptive_quality.cpp
   src/core/bubbles/bubbles.cpp
   src/core/bubbles/bubble_view.cpp
   src/core/reference/intersect.cpp

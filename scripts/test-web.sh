@@ -14,7 +14,14 @@ fail_setup() {
 }
 
 if command -v emcmake >/dev/null; then
-  scripts/build-web.sh || fail_setup "the web build failed"
+  # The build's log is shown only when it fails: the tests' lines are what a log's tail
+  # should show.
+  build_log=$(mktemp)
+  if ! scripts/build-web.sh >"$build_log" 2>&1; then
+    cat "$build_log"; rm -f "$build_log"
+    fail_setup "the web build failed"
+  fi
+  grep '^build-web:' "$build_log"; rm -f "$build_log"
 elif [ -f out/web/draught.wasm ]; then
   echo "test-web: emscripten is not installed; testing the existing out/web" >&2
 else

@@ -10,6 +10,7 @@
 #include "core/params/params.hpp"
 #include "core/params/preset.hpp"
 #include "core/params/timeline.hpp"
+#include "core/quality/adaptive_quality.hpp"
 #include "core/pointcloud/cloud_files.hpp"
 #include "core/pointcloud/cloud_viewing.hpp"
 #include "core/scene/scene.hpp"
@@ -39,69 +40,6 @@ namespace {
 using namespace draught;
 using nlohmann::json;
 
-// Adaptive quality: the canvas's backing store is its CSS size x devicePixelRatio x scale
-// (the browser stretches it). When the budget cannot be held at 50 % resolution the page
-// falls to the MatCap tier (render.tier matcap, docs/MATCAP.md: about 5x cheaper) and
-// says so; when even the smallest scale misses the budget in the full tier (the fall
-// turned off), the number of surface interactions per pixel is capped too.
-struct Quality {
-  bool adaptive = true;
-  double scale = 1.0;
-  double budget_ms = 33.0;
-  double ema_ms = 0;     // smoothed time between frames since the last change
-  double shown_ms = 0;   // the same, never reset (for the page)
-  int samples = 0;       // frames in ema_ms
-  int events_cap = 0;    // 0: render.max_events as set
-  bool matcap_fallback = true;  // fall to the MatCap tier below kMatCapBelow
-  bool matcap = false;          // drawing the MatCap tier because of the budget
-  static constexpr double kMinScale = 0.3, kMaxScale = 1.0, kMatCapBelow = 0.5;
-  // The MatCap tier costs about a fifth of the full one (docs/PERFORMANCE.md): the full tier
-  // comes back when, by that, it would take under 60 % of the budget at kMatCapBelow.
-  static constexpr double kMatCapCostRatio = 5.0;
-  static constexpr int kCapEvents = 6;
-  static constexpr double kStartPixels = 5e5;
-
-  // What a full-tier frame at kMatCapBelow would take, from the MatCap tier's frames now
-  // (pixels cost scale^2).
-  double full_estimate_ms() const { return ema_ms * kMatCapCostRatio * (kMatCapBelow / scale) * (kMatCapBelow / scale); }
-
-  // dt: milliseconds since the previous frame. Waits for a dozen frames after each change
-  // (three when far too slow), so one slow frame (a shader compiled) does not move it.
-  void update(double dt) {
-    if (!(dt > 0) || dt > 10000) return;  // a hidden tab, a debugger
-    shown_ms = shown_ms == 0 ? dt : 0.9 * shown_ms + 0.1 * dt;
-    if (!adaptive) return;
-    ema_ms = samples == 0 ? dt : 0.85 * ema_ms + 0.15 * dt;
-    if (++samples < (ema_ms > 3 * budget_ms ? 3 : 12)) return;
-    const double before = scale;
-    const int cap_before = events_cap;
-    const bool matcap_before = matcap;
-    // The full tier goes no lower than kMatCapBelow while it can fall to the MatCap tier.
-    const double lowest = matcap_fallback && !matcap ? kMatCapBelow : kMinScale;
-    if (ema_ms > budget_ms * 1.15) {
-      if (scale > lowest + 1e-9) {  // pixels cost scale^2
-        scale *= std::clamp(std::sqrt(budget_ms / ema_ms) * 0.97, 0.5, 0.95);
-        scale = std::max(lowest, std::round(scale * 20) / 20);
-      } else if (matcap_fallback && !matcap) {
-        if (samples < 12) return;  // a fall needs a dozen frames, not the three of "far too slow"
-        matcap = true;
-      } else if (!matcap) {
-        events_cap = kCapEvents;
-      }
-    } else if (ema_ms < budget_ms * 0.6) {
-      if (events_cap) events_cap = 0;
-      else if (matcap && full_estimate_ms() < budget_ms * 0.6) {  // the full tier would hold 50 % after all
-        matcap = false;
-        scale = kMatCapBelow;
-      } else {
-        scale = std::min(kMaxScale, std::round(scale * 1.12 * 20) / 20);
-      }
-    }
-    if (scale != before || events_cap != cap_before || matcap != matcap_before) samples = 0;
-    else samples = 6;  // keep watching, a little less eagerly
-  }
-};
-
 // Where the mouse or a finger put the droplets' pointer since the last frame: CSS pixels of a
 // width x height canvas (draught_pointer).
 struct PendingPointer {
@@ -120,7 +58,7 @@ struct App {
   std::string drink = "lager", glass;  // the picker's selection ("" glass: the drink's own)
   double t0 = 0, last = -1;
   long frames = 0;
-  Quality quality;
+  AdaptiveQuality quality;  // the backing store is CSS size x devicePixelRatio x quality.scale
   double css_w = 0, css_h = 0, dpr = 1;
   int width = 0, height = 0;
   bool context_lost = false;
@@ -300,7 +238,7 @@ EM_BOOL on_context_restored(int, const void*, void*) {
   }
   ++app->restores;
   app->last = -1;  // the pause is no frame time
-  app->quality.samples = 0;
+  app->quality.restart();
   return EM_TRUE;
 }
 
@@ -391,25 +329,20 @@ EMSCRIPTEN_KEEPALIVE void draught_resize(double css_w, double css_h, double dpr)
   app->css_h = css_h;
   app->dpr = dpr > 0 ? dpr : 1;
   // Adaptive: start at about half a megapixel; the measured frame times take it from there.
-  Quality& q = app->quality;
-  if (q.adaptive && app->frames == 0) {
-    const double pixels = css_w * css_h * app->dpr * app->dpr;
-    if (pixels > Quality::kStartPixels)
-      q.scale = std::max(Quality::kMinScale, std::round(std::sqrt(Quality::kStartPixels / pixels) * 20) / 20);
-  }
+  if (app->frames == 0) app->quality.start(css_w * css_h * app->dpr * app->dpr);
 }
 
 // scale <= 0: adaptive to budget_ms per frame; else pinned.
 EMSCRIPTEN_KEEPALIVE void draught_set_quality(double scale, double budget_ms) {
   if (!app) return;
-  Quality& q = app->quality;
+  AdaptiveQuality& q = app->quality;
   q.adaptive = !(scale > 0);
   if (!q.adaptive) {
     q.scale = std::clamp(scale, 0.1, 2.0);
     q.events_cap = 0;
   }
   if (budget_ms > 1) q.budget_ms = budget_ms;
-  q.samples = 0;
+  q.restart();
 }
 
 // on = 0: the adaptive quality never falls to the MatCap tier (the full tier only, as
@@ -418,7 +351,7 @@ EMSCRIPTEN_KEEPALIVE void draught_set_matcap_fallback(int on) {
   if (!app) return;
   app->quality.matcap_fallback = on != 0;
   if (!on) app->quality.matcap = false;
-  app->quality.samples = 0;
+  app->quality.restart();
 }
 
 EMSCRIPTEN_KEEPALIVE int draught_frames() { return app ? int(app->frames) : 0; }

@@ -354,56 +354,49 @@ test('adaptive quality lowers the render scale to hold the frame budget and says
   desk = null;
 });
 
-// An emulated phone (390 x 844 CSS px at DPR 3, touch, as issue 11 asks): the adaptive
-// quality settles at a
-// higher resolution scale when it may fall to the MatCap tier (docs/MATCAP.md) than when it
-// may not (?nomatcap), and says so. Settled: the scale and tier unchanged for 8 s and 18
-// frames (a decision waits a dozen frames, so one decision passed without a change).
-test('an emulated phone settles at a higher resolution scale with the MatCap tier', async () => {
+// An emulated phone (390 x 844 CSS px at DPR 3, touch, as issue 11 asks) given a frame
+// budget no device holds (2 ms): with the MatCap tier the page falls to it and says so;
+// with ?nomatcap it keeps the full tier at the smallest scale with the interactions capped.
+// Either way the backing store follows the scale. Where between those a real device settles
+// (higher with the MatCap tier) is the controller's logic, asserted against a model of a
+// phone's frame times in tests/unit/quality: on this shared machine a budget derived from
+// one moment's speed made that comparison depend on the load minutes later.
+test('an emulated phone falls to the MatCap tier when the full tier misses the budget', async () => {
   const phone = { viewport: { width: 390, height: 844 }, deviceScaleFactor: 3, hasTouch: true, isMobile: true };
-  const settle = async (query) => {
+  // The quality readout follows the status on the page's own timer: both are read together.
+  const read = async (page) => ({ ...(await status(page)), text: await page.evaluate(() => document.getElementById('quality').textContent) });
+  const settle = async (query, done) => {
     const page = await openPage(env, { query, context: phone });
     try {
-      let last = null, since = Date.now();
       const t0 = Date.now();
-      while (Date.now() - t0 < 200000) {
-        const s = await status(page);
-        if (!last || s.scale !== last.scale || s.tier !== last.tier || s.events_cap !== last.events_cap) {
-          last = s;
-          since = Date.now();
-        } else if (Date.now() - since > 8000 && s.frames - last.frames >= 18) {
-          break;
-        }
-        await page.waitForTimeout(500);
+      let s = await read(page);
+      // A decision waits 3-12 frames; each frame gets the per-frame limit.
+      while (!done(s) && s.frames <= 200) {
+        await waitFrames(page, 1);
+        s = await read(page);
       }
-      const text = await page.evaluate(() => document.getElementById('quality').textContent);
       await page.screenshot({ path: path.join(artifacts, `phone-${query.includes('nomatcap') ? 'full' : 'matcap'}.png`) });
-      return { ...last, text, settled_s: (since - t0) / 1000 };
+      return { ...s, after_s: (Date.now() - t0) / 1000 };
     } finally {
       await page.context().close();
     }
   };
-  // The budget from this machine's speed (shared, its load changes): two and a half MatCap
-  // frames at the lowest scale, so the MatCap tier can rise above it and the full tier
-  // (about 5x the cost) cannot.
-  const probe = await openPage(env, { query: 'scale=0.3', context: phone });
-  let probeMs;
-  try {
-    assert.equal(await probe.evaluate(() => window.draught.setParam('render.tier', 'matcap')), '');
-    await waitFrames(probe, 20);
-    probeMs = (await status(probe)).frame_ms;
-  } finally {
-    await probe.context().close();
-  }
-  const budget = `budget=${Math.round(2.5 * probeMs)}`;
-  const full = await settle(`nomatcap&${budget}`);
-  const matcap = await settle(budget);
-  note(`${budget} (a MatCap frame at 30 %: ${probeMs.toFixed(0)} ms); full tier only: scale ${full.scale} (${full.width}x${full.height}, events cap ${full.events_cap}, ${full.frame_ms.toFixed(0)} ms/frame, settled after ${full.settled_s.toFixed(0)} s); ` +
-       `with the MatCap tier: scale ${matcap.scale} (${matcap.width}x${matcap.height}, tier ${matcap.tier}, ${matcap.frame_ms.toFixed(0)} ms/frame, settled after ${matcap.settled_s.toFixed(0)} s); "${matcap.text}"`);
+  const smallest = 0.3;
+  const full = await settle('nomatcap&budget=2', (s) => s.scale <= smallest && s.events_cap > 0 && /events\)/.test(s.text));
+  const matcap = await settle('budget=2', (s) => s.tier === 'matcap' && s.scale <= smallest && /quality 30 % · MatCap/.test(s.text));
+  note(`full tier only: scale ${full.scale} (${full.width}x${full.height}, events cap ${full.events_cap}, after ${full.frames} frames, ${full.after_s.toFixed(0)} s); ` +
+       `with the MatCap tier: scale ${matcap.scale} (${matcap.width}x${matcap.height}, tier ${matcap.tier}, after ${matcap.frames} frames, ${matcap.after_s.toFixed(0)} s); "${matcap.text}"`);
   assert.equal(full.tier, 'full');
+  assert.equal(full.scale, smallest);
+  assert.equal(full.events_cap, 6);
+  assert.match(full.text, /quality 30 % \(6 events\)/);
+  assert.doesNotMatch(full.text, /MatCap/);
   assert.equal(matcap.tier, 'matcap');
+  assert.equal(matcap.scale, smallest);
+  assert.equal(matcap.events_cap, 0);
   assert.match(matcap.text, /MatCap tier: the full tier missed the frame budget at 50 % resolution/);
-  assert.ok(matcap.scale > full.scale, `MatCap ${matcap.scale} vs full ${full.scale}`);
+  // The backing store: CSS width x device pixel ratio x scale.
+  for (const s of [full, matcap]) assert.ok(Math.abs(s.width - 390 * 3 * smallest) <= 1, `width ${s.width}`);
 });
 
 test('deviceorientation tilts the liquid', async () => {
@@ -1127,6 +1120,7 @@ test('the shipped screen scene plays its clip through the browser', async () => 
 const only = process.argv[2];
 const t0 = Date.now();
 let passed = 0, failed = 0;
+const failures = [];  // repeated at the end, where a truncated log's tail still shows them
 try {
   env = await start();
   for (const t of tests) {
@@ -1139,16 +1133,20 @@ try {
       console.log(`ok   ${t.name} (${((Date.now() - t1) / 1000).toFixed(1)} s${notes.length ? '; ' + notes.join(', ') : ''})`);
     } catch (e) {
       ++failed;
-      console.log(`FAIL ${t.name} (${((Date.now() - t1) / 1000).toFixed(1)} s)\n     ${String(e && e.stack || e).split('\n').slice(0, 6).join('\n     ')}`);
+      const why = String(e && e.stack || e).split('\n').slice(0, 6).join('\n     ');
+      console.log(`FAIL ${t.name} (${((Date.now() - t1) / 1000).toFixed(1)} s)\n     ${why}`);
+      failures.push(`${t.name}: ${why.split('\n')[0]}`);
       if (desk && desk.draughtLog.length) console.log('     page log: ' + desk.draughtLog.slice(-5).join(' | '));
     }
   }
 } catch (e) {
   ++failed;
   console.log(`FAIL setting up the browser: ${e && e.stack || e}`);
+  failures.push(`setting up the browser: ${String(e && e.message || e)}`);
 } finally {
   if (env) await env.close();
 }
 console.log(`${((Date.now() - t0) / 1000).toFixed(1)} s; pictures in ${artifacts}`);
+for (const f of failures) console.log(`failed: ${f}`);
 console.log(`web tests: ${passed} passed, ${failed} failed`);
 process.exit(failed ? 1 : 0);
