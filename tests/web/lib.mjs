@@ -67,6 +67,8 @@ export const testQuery = 'size=160x120&scale=1&preserve';
 
 export async function openPage(env, { query = testQuery, context = {} } = {}) {
   const ctx = await env.browser.newContext({ viewport: { width: 720, height: 560 }, acceptDownloads: true, ...context });
+  // Playwright's own waits (navigation, clicks, waits without a timeout) scale like ours.
+  ctx.setDefaultTimeout(patience(30000));
   const page = await ctx.newPage();
   const log = [];
   page.on('console', (m) => log.push(`${m.type()}: ${m.text()}`));
