@@ -301,10 +301,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_start(const char* canvas, int preserve,
   emscripten_webgl_make_context_current(app->gl);
   emscripten_set_webglcontextlost_callback(canvas, nullptr, EM_FALSE, on_context_lost);
   emscripten_set_webglcontextrestored_callback(canvas, nullptr, EM_FALSE, on_context_restored);
-  if (fixed_scale > 0) {
-    app->quality.adaptive = false;
-    app->quality.scale = std::clamp(fixed_scale, 0.1, 2.0);
-  }
+  if (fixed_scale > 0) app->quality.pin(fixed_scale);
   try {
     app->scene = resolve_scene_objects(SceneRequest{});
     app->sim = std::make_unique<SceneSimulation>(app->scene);
@@ -335,23 +332,16 @@ EMSCRIPTEN_KEEPALIVE void draught_resize(double css_w, double css_h, double dpr)
 // scale <= 0: adaptive to budget_ms per frame; else pinned.
 EMSCRIPTEN_KEEPALIVE void draught_set_quality(double scale, double budget_ms) {
   if (!app) return;
-  AdaptiveQuality& q = app->quality;
-  q.adaptive = !(scale > 0);
-  if (!q.adaptive) {
-    q.scale = std::clamp(scale, 0.1, 2.0);
-    q.events_cap = 0;
-  }
-  if (budget_ms > 1) q.budget_ms = budget_ms;
-  q.restart();
+  if (budget_ms > 1) app->quality.budget_ms = budget_ms;  // (kept while pinned)
+  if (scale > 0) app->quality.pin(scale);
+  else app->quality.adapt();
 }
 
 // on = 0: the adaptive quality never falls to the MatCap tier (the full tier only, as
 // before it; tests compare the two); 1: it does (the default).
 EMSCRIPTEN_KEEPALIVE void draught_set_matcap_fallback(int on) {
   if (!app) return;
-  app->quality.matcap_fallback = on != 0;
-  if (!on) app->quality.matcap = false;
-  app->quality.restart();
+  app->quality.allow_matcap(on != 0);
 }
 
 EMSCRIPTEN_KEEPALIVE int draught_frames() { return app ? int(app->frames) : 0; }

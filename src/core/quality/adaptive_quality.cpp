@@ -5,6 +5,24 @@
 
 namespace draught {
 
+void AdaptiveQuality::pin(double fixed_scale) {
+  adaptive = false;
+  scale = std::clamp(fixed_scale, 0.1, 2.0);
+  events_cap = 0;
+  restart();
+}
+
+void AdaptiveQuality::adapt() {
+  adaptive = true;
+  restart();
+}
+
+void AdaptiveQuality::allow_matcap(bool on) {
+  matcap_fallback = on;
+  if (!on) matcap = false;
+  restart();
+}
+
 void AdaptiveQuality::start(double pixels) {
   if (!adaptive || !(pixels > kStartPixels)) return;
   scale = std::max(lowest(), std::round(std::sqrt(kStartPixels / pixels) * 20) / 20);
@@ -23,11 +41,11 @@ void AdaptiveQuality::update(double dt) {
   const double before = scale;
   const int cap_before = events_cap;
   const bool matcap_before = matcap;
-  const double lowest = this->lowest();
+  const double floor_scale = lowest();
   if (ema_ms > budget_ms * 1.15) {
-    if (scale > lowest + 1e-9) {  // pixels cost scale^2
+    if (scale > floor_scale + 1e-9) {  // pixels cost scale^2
       scale *= std::clamp(std::sqrt(budget_ms / ema_ms) * 0.97, 0.5, 0.95);
-      scale = std::max(lowest, std::round(scale * 20) / 20);
+      scale = std::max(floor_scale, std::round(scale * 20) / 20);
     } else if (matcap_fallback && !matcap) {
       if (samples < 12) return;  // a fall needs a dozen frames, not the three of "far too slow"
       matcap = true;

@@ -25,6 +25,13 @@ struct AdaptiveQuality {
   static constexpr int kCapEvents = 6;
   static constexpr double kStartPixels = 5e5;
 
+  // Pins the scale (clamped to 0.1-2; nothing adapts, the interactions uncapped), or adapts
+  // it again to budget_ms, measuring afresh.
+  void pin(double fixed_scale);
+  void adapt();
+  // Whether it may fall to the MatCap tier below kMatCapBelow; turning it off leaves it.
+  void allow_matcap(bool on);
+
   // Starts a display of `pixels` (at scale 1) at about half a megapixel, never below
   // lowest(): a frame's first scale follows the same rule as the later ones.
   void start(double pixels);

@@ -151,15 +151,35 @@ TEST(AdaptiveQuality, OneSlowFrameAndNonsenseTimesMoveNothing) {
   EXPECT_TRUE(std::isfinite(o.q.ema_ms));
 }
 
-// Pinned (not adaptive): frame times are shown but change nothing.
-TEST(AdaptiveQuality, APinnedScaleStays) {
+// Pinned (not adaptive): frame times are shown but change nothing; the pin is clamped and
+// lifts a cap. Adapting again starts from the pinned scale.
+TEST(AdaptiveQuality, APinnedScaleStaysUntilItAdaptsAgain) {
   AdaptiveQuality q;
-  q.adaptive = false;
-  q.scale = 0.75;
+  q.events_cap = AdaptiveQuality::kCapEvents;
+  q.pin(0.75);
+  EXPECT_EQ(q.events_cap, 0);
   for (int i = 0; i < 100; ++i) q.update(500.0);
   EXPECT_DOUBLE_EQ(q.scale, 0.75);
   EXPECT_FALSE(q.matcap);
   EXPECT_NEAR(q.shown_ms, 500.0, 1e-9);
+  q.pin(9.0);
+  EXPECT_DOUBLE_EQ(q.scale, 2.0);
+  q.pin(0.75);
+  q.adapt();
+  for (int i = 0; i < 100; ++i) q.update(500.0);  // far over the 33 ms budget
+  EXPECT_LT(q.scale, 0.75);
+}
+
+// Turning the fall off leaves the MatCap tier at once; the full tier then goes below 50 %.
+TEST(AdaptiveQuality, TurningTheFallOffLeavesTheMatCapTier) {
+  const Device phone{kPhonePixels, 30.0};
+  Outcome o = run(phone, 16.0, true);
+  ASSERT_TRUE(o.q.matcap);
+  o.q.allow_matcap(false);
+  EXPECT_FALSE(o.q.matcap);
+  for (int i = 0; i < 1000; ++i) o.q.update(Device(phone).frame_ms(o.q));
+  EXPECT_FALSE(o.q.matcap);
+  EXPECT_LT(o.q.scale, AdaptiveQuality::kMatCapBelow);
 }
 
 }  // namespace
