@@ -234,7 +234,8 @@ class CliTest : public ::testing::Test {
   // A small, fast render: `size`, 1 sample per pixel and the floor's light map from
   // 20,000 photons (a still's 500,000 were 1.3 of a 32x32 render's 2.3 s of CPU), unless
   // the args say otherwise. The full budget is the GPU suite's and the goldens'.
-  RunResult render(std::vector<std::string> args, const std::string& size = "32x32") {
+  RunResult render(std::vector<std::string> args, const std::string& size = "32x32",
+                   const std::map<std::string, std::optional<std::string>>& env = {}) {
     auto has = [&](const char* opt) { return std::find(args.begin(), args.end(), opt) != args.end(); };
     auto sets = [&](const char* path) {
       return std::any_of(args.begin(), args.end(), [&](const std::string& a) { return a.rfind(path, 0) == 0; });
@@ -244,7 +245,7 @@ class CliTest : public ::testing::Test {
     if (!has("--supersample")) a.insert(a.end(), {"--supersample", "1"});
     if (!sets("render.floor_photons=")) a.insert(a.end(), {"--set", "render.floor_photons=20000"});
     a.insert(a.end(), args.begin(), args.end());
-    return draught(a);
+    return draught(a, env);
   }
 
   // A failed command: non-zero exit, nothing claimed on stdout, every needle in stderr,

@@ -257,9 +257,8 @@ TEST_F(Render, PresetByPathAndFromPresetDir) {
   // The same preset by name, found through $DRAUGHT_PRESET_DIR.
   const fs::path dir = in() / "presets";
   write_file(dir / "drinks" / "mine.json", read_file(file));
-  auto r2 = draught({"render", "--size", "32x32", "--supersample", "1", "--set", "render.floor_photons=20000",
-                     "--preset", "mine", "-o", (out() / "b.png").string()},  // render()'s settings
-                    {{"DRAUGHT_PRESET_DIR", dir.string()}});
+  auto r2 = render({"--preset", "mine", "-o", (out() / "b.png").string()}, "32x32",
+                   {{"DRAUGHT_PRESET_DIR", dir.string()}});
   ASSERT_EQ(r2.exit_code, 0) << r2.describe();
   EXPECT_FALSE(differ(out() / "a.png", out() / "b.png")) << "by name and by path gave different images";
 }

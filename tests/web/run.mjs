@@ -591,9 +591,10 @@ test('droplets follow a finger on the picture; the glass stays upright', async (
 // Where each object lies on the canvas, as the module picks (the reference intersector):
 // per object its pixel count, centre (CSS pixels, page coordinates) and bounding box in
 // canvas pixels (for snapshots).
-// (Every 4th CSS pixel: a pick is the reference intersector in wasm, and every 2nd pixel
-// of the flight's canvas was 10 s of the test; a glass still covers hundreds of samples.)
-async function objectRegions(page, step = 4) {
+// The grid the tests pick on, in CSS pixels: a pick is the reference intersector in wasm,
+// and every 2nd pixel was 10 s of a test; a glass still covers hundreds of samples.
+const pickStep = 4;
+async function objectRegions(page, step = pickStep) {
   const c = await canvasCentre(page);
   const found = await page.evaluate(({ w, h, step }) => {
     const out = [];
@@ -988,20 +989,19 @@ test('a lost WebGL context is restored: programs and textures rebuilt, drawing a
 // ---- the screen: the camera and a video file seen through the drink ----
 
 // The canvas pixels (x, y) where the drink is the first thing seen (the module's own picking),
-// on a grid, a few pixels in from the glass's edges. (Every 4th pixel: a pick is the
-// reference intersector in wasm, and every 2nd took about 10 s of a test.)
+// on the pick grid, a few pixels in from the glass's edges.
 async function drinkPixels(page) {
-  return page.evaluate(() => {
+  return page.evaluate((step) => {
     const c = document.getElementById('canvas').getBoundingClientRect();
     const out = [];
-    for (let y = 4; y < c.height - 4; y += 4)
-      for (let x = 4; x < c.width - 4; x += 4) {
+    for (let y = 4; y < c.height - 4; y += step)
+      for (let x = 4; x < c.width - 4; x += step) {
         let inside = true;
         for (const [dx, dy] of [[0, 0], [-4, 0], [4, 0], [0, -4], [0, 4]]) inside = inside && window.draught.pick(x + dx, y + dy) >= 0;
         if (inside) out.push([x, y]);
       }
     return out;
-  });
+  }, pickStep);
 }
 // Mean absolute difference per channel over those pixels.
 function differenceAt(a, b, pixels) {
