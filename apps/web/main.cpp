@@ -230,7 +230,7 @@ EM_BOOL on_context_restored(int, const void*, void*) {
   app->context_lost = false;
   emscripten_webgl_make_context_current(app->gl);
   try {
-    app->renderer = std::make_unique<gpu::Renderer>();
+    app->renderer = std::make_unique<gpu::Renderer>(std::filesystem::path(), gpu::Renderer::Compile::WithFirstFrame);
     set_web_floor_light(*app->renderer);
   } catch (const std::exception& e) {
     app->error = std::string("the WebGL context came back, but the renderer could not be rebuilt: ") + e.what();
@@ -308,7 +308,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_start(const char* canvas, int preserve,
     app->sim->begin_at(now_s());
     app->sim->settle_bubbles(2.0);
     app->rig = make_rig("mouse");
-    app->renderer = std::make_unique<gpu::Renderer>();
+    app->renderer = std::make_unique<gpu::Renderer>(std::filesystem::path(), gpu::Renderer::Compile::WithFirstFrame);
     set_web_floor_light(*app->renderer);
   } catch (const std::exception& e) {
     app->renderer.reset();

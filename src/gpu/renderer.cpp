@@ -117,9 +117,9 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   return program;
 }
 
-Renderer::Renderer(const std::filesystem::path& shader_dir) : shader_dir_(shader_dir) {
+Renderer::Renderer(const std::filesystem::path& shader_dir, Compile compile) : shader_dir_(shader_dir) {
   if (const char* env = std::getenv("DRAUGHT_SHADER_DIR"); shader_dir_.empty() && env && *env) shader_dir_ = env;
-  programs_[0] = build_program(0);  // compiles now, so a broken shader is reported at once
+  if (compile == Compile::Now) programs_[0] = build_program(0);
   textures_ = std::make_unique<SceneTextures>();
   decals_ = std::make_unique<DecalTextures>();
   screen_ = std::make_unique<ScreenTexture>();
