@@ -34,6 +34,14 @@ namespace fs = std::filesystem;
 inline const fs::path kExe = DRAUGHT_EXE;
 inline const fs::path kSourceDir = DRAUGHT_SOURCE_DIR;
 
+// ECMAScript regular expressions (std::regex), compiled in cli_regex.cpp alone: <regex>
+// took about 4 s of every test file that included it.
+bool matches(const std::string& text, const std::string& pattern);
+// The first group of the first match of `pattern` in `text`; "" when nothing matches.
+std::string first_group(const std::string& text, const std::string& pattern);
+// A pattern that matches `literal` as it is (a path with dots, brackets, ...).
+std::string literal_pattern(const std::string& literal);
+
 struct RunResult {
   int exit_code = -1;  // 128 + signal when killed by a signal
   std::string out, err;

@@ -4,7 +4,6 @@
 #include "core/io/image.hpp"
 #include "core/params/params.hpp"
 
-#include <regex>
 #include <set>
 
 namespace draught_cli_test {
@@ -12,9 +11,7 @@ namespace {
 
 std::string project_version() {
   const std::string cm = read_file(kSourceDir / "CMakeLists.txt");
-  std::smatch m;
-  if (!std::regex_search(cm, m, std::regex(R"(project\s*\(\s*draught\s+VERSION\s+([0-9.]+))"))) return "";
-  return m[1];
+  return first_group(cm, R"(project\s*\(\s*draught\s+VERSION\s+([0-9.]+))");
 }
 
 std::vector<std::string> lines_of(const std::string& text) {
@@ -291,15 +288,15 @@ TEST_F(Listing, ParamsPrintsEveryParameter) {
   for (auto& line : lines_of(r.out)) rows[line.substr(0, line.find(' '))] = line;
   // A few rows spelled out, so the test does not only mirror the code.
   ASSERT_TRUE(rows.count("liquid.fill")) << r.out;
-  EXPECT_TRUE(std::regex_search(rows["liquid.fill"], std::regex(R"(float\s+0\.85\s+\[0, 0\.98\])")))
+  EXPECT_TRUE(matches(rows["liquid.fill"], R"(float\s+0\.85\s+\[0, 0\.98\])"))
       << rows["liquid.fill"];
   ASSERT_TRUE(rows.count("glass.ior")) << r.out;
-  EXPECT_TRUE(std::regex_search(rows["glass.ior"], std::regex(R"(float\s+1\.52\s+\[1, 2\.5\])"))) << rows["glass.ior"];
+  EXPECT_TRUE(matches(rows["glass.ior"], R"(float\s+1\.52\s+\[1, 2\.5\])")) << rows["glass.ior"];
   ASSERT_TRUE(rows.count("glass.profile")) << r.out;
-  EXPECT_TRUE(std::regex_search(rows["glass.profile"], std::regex(R"(curve\s+0\.0295,0;.*\s+m\s)")))
+  EXPECT_TRUE(matches(rows["glass.profile"], R"(curve\s+0\.0295,0;.*\s+m\s)"))
       << rows["glass.profile"];
   ASSERT_TRUE(rows.count("glass.wall_thickness")) << r.out;
-  EXPECT_TRUE(std::regex_search(rows["glass.wall_thickness"], std::regex(R"(float\s+0\.003\s+\[0\.0005, 0\.02\]\s+m\s)")))
+  EXPECT_TRUE(matches(rows["glass.wall_thickness"], R"(float\s+0\.003\s+\[0\.0005, 0\.02\]\s+m\s)"))
       << rows["glass.wall_thickness"];
   ASSERT_TRUE(rows.count("render.tonemap")) << r.out;
   EXPECT_TRUE(contains(rows["render.tonemap"], "none|aces")) << rows["render.tonemap"];

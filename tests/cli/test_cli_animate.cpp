@@ -5,7 +5,6 @@
 
 #include "core/io/image.hpp"
 
-#include <regex>
 
 namespace draught_cli_test {
 namespace {
@@ -23,9 +22,8 @@ std::string expected_frames(int n) {
 
 // The spilled percentage the final "wrote ..." line reports, or -1 when there is none.
 double spilled_percent(const std::string& out) {
-  std::smatch m;
-  if (!std::regex_search(out, m, std::regex(R"(spilled\s+([0-9]+(?:\.[0-9]+)?)\s*%)"))) return -1;
-  return std::stod(m[1]);
+  const std::string percent = first_group(out, R"(spilled\s+([0-9]+(?:\.[0-9]+)?)\s*%)");
+  return percent.empty() ? -1 : std::stod(percent);
 }
 
 // Number of pixels whose RGBA differs between two images of the same size.
@@ -68,7 +66,7 @@ TEST_F(Animate, WritesNumberedPngFramesOfRequestedSize) {
       << "files outside the frames folder";
   EXPECT_TRUE(contains(r.out, "wrote")) << r.describe();
   EXPECT_TRUE(contains(r.out, (out() / "frames").string())) << "does not say where the frames are\n" << r.describe();
-  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(\b4 frames\b)"))) << "no frame count\n" << r.describe();
+  EXPECT_TRUE(matches(r.out, R"(\b4 frames\b)")) << "no frame count\n" << r.describe();
   for (int i = 0; i < 4; ++i) {
     const fs::path p = out() / "frames" / ("frame_0000" + std::to_string(i) + ".png");
     PngInfo info = png_info(p);
@@ -85,7 +83,7 @@ TEST_F(Animate, NonSquareSizeAndFrameCountFollowFpsTimesDuration) {
   auto r = animate("gentle-tilt", {"--size", "40x24", "--fps", "3", "--duration", "2", "-o", frames_dir("f")});
   ASSERT_EQ(r.exit_code, 0) << r.describe();
   EXPECT_EQ(join(list_tree(out() / "f")), expected_frames(6));
-  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(\b6 frames\b)"))) << r.describe();
+  EXPECT_TRUE(matches(r.out, R"(\b6 frames\b)")) << r.describe();
   PngInfo info = png_info(out() / "f" / "frame_00005.png");
   ASSERT_EQ(info.error, "");
   EXPECT_EQ(info.width, 40u);
@@ -125,7 +123,7 @@ TEST_F(Animate, MotionShowsAndTiltUntilSpillSpills) {
   auto r = animate("tilt-until-spill", {"--full", "--size", "32x32", "--fps", "2", "-o", frames_dir("f")});
   ASSERT_EQ(r.exit_code, 0) << r.describe();
   EXPECT_EQ(join(list_tree(out() / "f")), expected_frames(16));
-  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(\b16 frames\b)"))) << r.describe();
+  EXPECT_TRUE(matches(r.out, R"(\b16 frames\b)")) << r.describe();
   const double spilled = spilled_percent(r.out);
   EXPECT_GT(spilled, 0.0) << "tilt-until-spill spilled nothing (or says nothing about it)\n" << r.describe();
   EXPECT_LE(spilled, 100.0) << r.describe();

@@ -6,7 +6,6 @@
 
 #include "core/io/image.hpp"
 
-#include <regex>
 
 namespace draught_cli_test {
 namespace {
@@ -167,10 +166,10 @@ TEST_F(Scenes, ParamsShowEachParametersScope) {
   ASSERT_EQ(r.exit_code, 0) << r.describe();
   std::map<std::string, std::string> rows;
   for (auto& line : lines_of(r.out)) rows[line.substr(0, line.find(' '))] = line;
-  EXPECT_TRUE(std::regex_search(rows["liquid.fill"], std::regex(R"(\[0, 0\.98\]\s+object\s)"))) << rows["liquid.fill"];
-  EXPECT_TRUE(std::regex_search(rows["glass.profile"], std::regex(R"(\s+m\s+object\s)"))) << rows["glass.profile"];
-  EXPECT_TRUE(std::regex_search(rows["env.floor"], std::regex(R"(\s+scene\s)"))) << rows["env.floor"];
-  EXPECT_TRUE(std::regex_search(rows["camera.vfov"], std::regex(R"(deg\s+scene\s)"))) << rows["camera.vfov"];
+  EXPECT_TRUE(matches(rows["liquid.fill"], R"(\[0, 0\.98\]\s+object\s)")) << rows["liquid.fill"];
+  EXPECT_TRUE(matches(rows["glass.profile"], R"(\s+m\s+object\s)")) << rows["glass.profile"];
+  EXPECT_TRUE(matches(rows["env.floor"], R"(\s+scene\s)")) << rows["env.floor"];
+  EXPECT_TRUE(matches(rows["camera.vfov"], R"(deg\s+scene\s)")) << rows["camera.vfov"];
   r = draught({"params", "--markdown"});
   EXPECT_TRUE(contains(r.out, "| unit | scope | description |")) << r.out;
   EXPECT_TRUE(contains(r.out, "| `liquid.fill` | float | `0.85` | [0, 0.98] |  | per object |")) << r.out;

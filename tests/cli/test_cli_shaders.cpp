@@ -2,7 +2,6 @@
 // compile errors reported as "file.glsl:LINE" (paths under shaders/, as included).
 #include "cli_helpers.hpp"
 
-#include <regex>
 
 namespace draught_cli_test {
 namespace {
@@ -51,9 +50,9 @@ class Shaders : public CliTest {
   // stderr names `file` and the broken line (drivers may blame the line after it).
   void expect_blames(const RunResult& r, const std::string& file, size_t line) {
     expect_failure(r, {file + ":"});
-    const std::regex re("(^|[^A-Za-z0-9_.])" + std::regex_replace(file, std::regex(R"(\.)"), R"(\.)") + ":(" +
-                        std::to_string(line) + "|" + std::to_string(line + 1) + ")[^0-9]");
-    EXPECT_TRUE(std::regex_search(r.err, re)) << "expected " << file << ":" << line << " (or " << line + 1
+    const std::string re = "(^|[^A-Za-z0-9_.])" + literal_pattern(file) + ":(" + std::to_string(line) + "|" +
+                           std::to_string(line + 1) + ")[^0-9]";
+    EXPECT_TRUE(matches(r.err, re)) << "expected " << file << ":" << line << " (or " << line + 1
                                               << ")\n" << r.describe();
   }
 };
@@ -86,16 +85,16 @@ TEST_F(Shaders, SyntaxErrorAfterIncludesGivesTheEntryFileLine) {
   // Just after the last #include of the entry file, outside any #if (an include may sit in
   // a variant's block): the line numbers must have been restored after the included files.
   auto lines = read_lines(shaders() / kEntryFile);
-  const std::regex include(R"(^\s*#\s*include\s)"), open_if(R"(^\s*#\s*if)"), end_if(R"(^\s*#\s*endif)");
+  const std::string include = R"(^\s*#\s*include\s)", open_if = R"(^\s*#\s*if)", end_if = R"(^\s*#\s*endif)";
   size_t last_include = 0;
   for (size_t i = 0; i < lines.size(); ++i)
-    if (std::regex_search(lines[i], include)) last_include = i + 1;
+    if (matches(lines[i], include)) last_include = i + 1;
   ASSERT_GT(last_include, 0u) << kEntryFile << " includes nothing?";
   int depth = 0;
   size_t spot = 0;
   for (size_t i = 0; i < lines.size() && spot == 0; ++i) {
-    if (std::regex_search(lines[i], open_if)) ++depth;
-    else if (std::regex_search(lines[i], end_if)) --depth;
+    if (matches(lines[i], open_if)) ++depth;
+    else if (matches(lines[i], end_if)) --depth;
     else if (i + 1 > last_include && depth == 0) spot = i + 1;
   }
   ASSERT_GT(spot, 0u) << kEntryFile << " has no top-level line after its includes";
