@@ -81,14 +81,15 @@ class RenderTarget {
 class Renderer {
  public:
   // When the path pass's base program is compiled: at construction (a broken shader
-  // is reported at once), or with the first frame's own variant (the web page: its
-  // shaders are embedded, and on a software WebGL the base program, which the default
-  // scene never draws, held the page's start by about a second).
+  // is reported at once), or not until a frame draws it (the web page: its shaders are
+  // embedded, and on a software WebGL the base program, which the default scene never
+  // draws, held the page's start by about a second).
   enum class Compile { Now, WithFirstFrame };
 
-  // Needs a current GLES 3.0 context. Compiles the shaders (embedded, or from
-  // shader_dir when given) and checks every uniform-block member's offset against the
-  // driver; throws ShaderError naming file and line, or the member.
+  // Needs a current GLES 3.0 context. Shaders are embedded, or read from shader_dir when
+  // given; each program variant is compiled when a frame first needs it (the base one at
+  // once with Compile::Now), and its uniform-block members' offsets are checked against
+  // the driver; a failure throws ShaderError naming file and line, or the member.
   explicit Renderer(const std::filesystem::path& shader_dir = {}, Compile compile = Compile::Now);
   ~Renderer();
 
