@@ -212,16 +212,20 @@ EM_BOOL on_context_lost(int, const void*, void*) {
   return EM_TRUE;
 }
 
-// The floor's shadows on the page: one thread (no workers), drafts while something moves,
-// a still's photons (the CLI's) once it holds still, in a hundred batches over as many
-// frames (a batch costs about a draft: no frame stalls on the whole; two seconds at 60
-// frames a second). With a tenth of them the page's floor stayed blotched with grey.
-void set_web_floor_light(gpu::Renderer& r) {
+// The page's renderer, at the start and after a lost context: its shaders are embedded,
+// so each program is compiled when a frame first draws it (no base program up front).
+std::unique_ptr<gpu::Renderer> make_web_renderer() {
+  auto r = std::make_unique<gpu::Renderer>(std::filesystem::path(), gpu::Renderer::Compile::WithFirstFrame);
+  // The floor's shadows: one thread (no workers), drafts while something moves, a still's
+  // photons (the CLI's) once it holds still, in a hundred batches over as many frames (a
+  // batch costs about a draft: no frame stalls on the whole; two seconds at 60 frames a
+  // second). With a tenth of them the page's floor stayed blotched with grey.
   FloorLightSettings s;
   s.threads = 1;
   s.photons = kFloorPhotonsStill;
-  r.set_floor_light(s, true, kFloorPhotonsStill / 100);
-  r.set_moving_drafts(true);  // the MatCap tier's background while things move
+  r->set_floor_light(s, true, kFloorPhotonsStill / 100);
+  r->set_moving_drafts(true);  // the MatCap tier's background while things move
+  return r;
 }
 
 // The context is back, empty: programs, buffers and textures are built again (the renderer
@@ -230,8 +234,7 @@ EM_BOOL on_context_restored(int, const void*, void*) {
   app->context_lost = false;
   emscripten_webgl_make_context_current(app->gl);
   try {
-    app->renderer = std::make_unique<gpu::Renderer>(std::filesystem::path(), gpu::Renderer::Compile::WithFirstFrame);
-    set_web_floor_light(*app->renderer);
+    app->renderer = make_web_renderer();
   } catch (const std::exception& e) {
     app->error = std::string("the WebGL context came back, but the renderer could not be rebuilt: ") + e.what();
     return EM_TRUE;
@@ -308,8 +311,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_start(const char* canvas, int preserve,
     app->sim->begin_at(now_s());
     app->sim->settle_bubbles(2.0);
     app->rig = make_rig("mouse");
-    app->renderer = std::make_unique<gpu::Renderer>(std::filesystem::path(), gpu::Renderer::Compile::WithFirstFrame);
-    set_web_floor_light(*app->renderer);
+    app->renderer = make_web_renderer();
   } catch (const std::exception& e) {
     app->renderer.reset();
     return answer(app->error = e.what());
