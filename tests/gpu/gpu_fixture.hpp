@@ -97,7 +97,8 @@ inline Scene flight_scene(FlightView view = FlightView::StraightOn, std::vector<
   return s;
 }
 
-// Set by gpu_tests --bless: golden tests write their renders as the new goldens.
+// Set by gpu_tests --bless: golden tests write their renders as the new goldens, and
+// reference comparisons path-trace and store their references (stored_reference.hpp).
 extern bool g_bless;
 
 }  // namespace draught::test

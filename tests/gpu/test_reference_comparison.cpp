@@ -13,6 +13,7 @@
 #include "color_difference.hpp"
 #include "gpu_fixture.hpp"
 #include "reference_path.hpp"
+#include "stored_reference.hpp"
 
 #include "core/droplets/field.hpp"
 #include "core/foam/head_volume.hpp"
@@ -27,6 +28,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <string>
+#include <utility>
 
 namespace draught::test {
 namespace {
@@ -110,6 +113,12 @@ struct Bounds {
   double mean, p90;
 };
 
+// A case's name as its test and its stored reference are named (lager-pint: lager_pint).
+std::string case_file_name(std::string name) {
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+}
+
 struct ComparisonCase {
   const char* name;
   SceneRequest request;
@@ -134,11 +143,23 @@ TEST_P(ReferenceComparison, RegionsAgreeWithinTheirBounds) {
   const Image picture = gpu_instance().renderer->render(f, n, rows);
   ReferenceSettings settings;
   settings.samples = c.spp;
-  // DRAUGHT_COMPARISON_SEED=n: the reference with other random numbers (how much of a
-  // figure is its own noise).
-  if (const char* seed = std::getenv("DRAUGHT_COMPARISON_SEED")) settings.seed = std::strtoull(seed, nullptr, 10);
-  const RadianceImage radiance = render_reference(f, n, rows, settings);
-  std::printf("%s: reference %dx%d at %d paths in %.1f s\n", c.name, n, rows, c.spp, radiance.seconds);
+  // The reference as stored in tests/golden/reference/ and checked against this code
+  // (stored_reference.hpp; gpu_tests --bless path-traces and stores it). Path-traced here
+  // instead with DRAUGHT_COMPARISON_LIVE=1, or DRAUGHT_COMPARISON_SEED=n: the reference
+  // with other random numbers (how much of a figure is its own noise).
+  RadianceImage radiance;
+  const char* seed = std::getenv("DRAUGHT_COMPARISON_SEED");
+  if (seed || std::getenv("DRAUGHT_COMPARISON_LIVE")) {
+    if (seed) settings.seed = std::strtoull(seed, nullptr, 10);
+    radiance = render_reference(f, n, rows, settings);
+    std::printf("%s: reference %dx%d at %d paths, path-traced in %.1f s\n", c.name, n, rows, c.spp, radiance.seconds);
+  } else {
+    StoredReference stored = stored_reference(std::filesystem::path(DRAUGHT_GOLDEN_DIR) / "reference",
+                                              case_file_name(c.name), f, n, rows, settings, g_bless);
+    ASSERT_TRUE(stored.error.empty()) << stored.error;
+    radiance = std::move(stored.radiance);
+    std::printf("%s: reference %dx%d at %d paths, %s\n", c.name, n, rows, c.spp, stored.how.c_str());
+  }
   const Image reference = display_image(radiance, f.params.render);
 
   // Classify each pixel at four points inside it; keep those whose 3x3 neighbourhood
@@ -349,11 +370,7 @@ INSTANTIATE_TEST_SUITE_P(
         // Bounds: the worst seed and about 10 %.
         ComparisonCase{"fresh-pour", SceneRequest{}, 80, 192, {1.0, 1.6}, {3.6, 9.2}, {4.2, 9.5}, {0, 0}, {1.2, 2.2}, 0,
                        "fresh-pour", 1.5}),
-    [](const ::testing::TestParamInfo<ComparisonCase>& i) {
-      std::string s = i.param.name;
-      std::replace(s.begin(), s.end(), '-', '_');
-      return s;
-    });
+    [](const ::testing::TestParamInfo<ComparisonCase>& i) { return case_file_name(i.param.name); });
 
 }  // namespace
 }  // namespace draught::test

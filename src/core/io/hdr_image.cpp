@@ -319,4 +319,47 @@ void write_radiance_hdr(const std::filesystem::path& path, const HdrImage& img) 
   write_file_atomic(path, encode_radiance_hdr(img));
 }
 
+std::string encode_exr(const HdrImage& img) {
+#if DRAUGHT_HAS_EXR
+  if (img.width < 1 || img.height < 1 || img.rgb.size() != size_t(img.width) * size_t(img.height))
+    throw InputError("encode_exr: an image of " + std::to_string(img.width) + " x " + std::to_string(img.height) +
+                     " pixels with " + std::to_string(img.rgb.size()) + " values");
+  // EXR lists channels by name, in ASCII order: B, G, R.
+  std::vector<float> planes[3];
+  for (int c = 0; c < 3; ++c) {
+    planes[c].resize(img.rgb.size());
+    for (size_t i = 0; i < img.rgb.size(); ++i) planes[c][i] = img.rgb[i][2 - c];
+  }
+  float* pointers[3] = {planes[0].data(), planes[1].data(), planes[2].data()};
+  EXRImage image;
+  InitEXRImage(&image);
+  image.num_channels = 3;
+  image.images = reinterpret_cast<unsigned char**>(pointers);
+  image.width = img.width;
+  image.height = img.height;
+  EXRHeader header;
+  InitEXRHeader(&header);
+  header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
+  header.num_channels = 3;
+  EXRChannelInfo channels[3] = {};
+  int types[3] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT};
+  for (int c = 0; c < 3; ++c) channels[c].name[0] = "BGR"[c];
+  header.channels = channels;
+  header.pixel_types = types;
+  header.requested_pixel_types = types;
+  unsigned char* memory = nullptr;
+  const char* err = nullptr;
+  const size_t size = SaveEXRImageToMemory(&image, &header, &memory, &err);
+  if (size == 0 || !memory) throw InputError("encode_exr: " + exr_error(err));
+  std::string out(reinterpret_cast<const char*>(memory), size);
+  std::free(memory);
+  return out;
+#else
+  (void)img;
+  throw InputError("this build writes no OpenEXR images; write a Radiance .hdr");
+#endif
+}
+
+void write_exr(const std::filesystem::path& path, const HdrImage& img) { write_file_atomic(path, encode_exr(img)); }
+
 }  // namespace draught

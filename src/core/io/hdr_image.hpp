@@ -39,6 +39,12 @@ HdrImage read_hdr_image(const std::filesystem::path&, HdrDecodeReport* report = 
 std::string encode_radiance_hdr(const HdrImage&);
 void write_radiance_hdr(const std::filesystem::path&, const HdrImage&);
 
+// The OpenEXR .exr bytes of an image (32-bit float R, G and B, ZIP-compressed: the
+// values exactly as given), and the file written atomically. Native builds only (as
+// reading: hdr_image_reads_exr); elsewhere they throw InputError.
+std::string encode_exr(const HdrImage&);
+void write_exr(const std::filesystem::path&, const HdrImage&);
+
 // Whether this build reads OpenEXR (the web build does not: no zlib there).
 bool hdr_image_reads_exr();
 

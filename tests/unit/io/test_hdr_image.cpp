@@ -86,6 +86,30 @@ TEST_F(HdrImageFiles, AnOpenExrFileDecodesToItsExactValues) {
       for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(img.at(x, y)[c], px[size_t(y * 5 + x) * 4 + size_t(c)]);
 }
 
+// What encode_exr writes reads back bit for bit (32-bit floats: the stored references
+// of the reference comparisons rely on it), tiny and bright values alike.
+TEST_F(HdrImageFiles, AnEncodedExrReadsBackBitForBit) {
+  HdrImage img;
+  img.width = 37;  // odd sizes: not a multiple of ZIP's 16-line blocks
+  img.height = 21;
+  img.rgb.resize(size_t(img.width) * size_t(img.height));
+  for (size_t i = 0; i < img.rgb.size(); ++i)
+    img.rgb[i] = glm::vec3(1e-7f * float(i), std::sqrt(float(i)) * 1.234567f, 60000.0f - 7.0f * float(i));
+  const fs::path p = dir_ / "written.exr";
+  write_exr(p, img);
+  const HdrImage back = read_hdr_image(p);
+  ASSERT_EQ(back.width, img.width);
+  ASSERT_EQ(back.height, img.height);
+  for (size_t i = 0; i < img.rgb.size(); ++i) ASSERT_EQ(back.rgb[i], img.rgb[i]) << i;
+}
+
+TEST(HdrImage, AnImageWithoutPixelsIsNotEncoded) {
+  HdrImage img;
+  EXPECT_THROW(encode_exr(img), InputError);
+  img.width = img.height = 2;  // four pixels promised, none given
+  EXPECT_THROW(encode_exr(img), InputError);
+}
+
 TEST_F(HdrImageFiles, NonFiniteNegativeAndHugeValuesAreClampedAndCounted) {
   std::vector<float> px = pattern(4, 2, 4);
   px[0] = std::numeric_limits<float>::quiet_NaN();

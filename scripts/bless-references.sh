@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Path-traces the reference comparisons' references afresh and stores them in
+# tests/golden/reference/ (tests/gpu/stored_reference.hpp), then runs the comparisons on
+# them. Deliberate: after a change to the path tracer or to a compared scene; read the
+# figures it prints against the bounds and docs/REFERENCE.md before committing. It takes
+# the path tracer's full time (about 12 CPU-minutes for all of them).
+#
+#   scripts/bless-references.sh                        # every case
+#   scripts/bless-references.sh lager_pint stout_head  # only these
+set -euo pipefail
+cd "$(dirname "$0")/.."
+filter='Scenes/ReferenceComparison.*'
+if [ $# -gt 0 ]; then
+  filter=""
+  for name in "$@"; do filter="${filter:+$filter:}Scenes/ReferenceComparison.RegionsAgreeWithinTheirBounds/$name"; done
+fi
+cmake --build build -j"$(nproc)" --target gpu_tests
+DRAUGHT_DEVICE=software ./build/tests/gpu_tests --gtest_filter="$filter" --bless
+echo "Stored. Read the figures above (and DRAUGHT_COMPARISON_DUMP's pictures where they moved) before you commit."
