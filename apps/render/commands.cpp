@@ -60,14 +60,23 @@ void check_camera(const SceneParams& p, bool camera_given) {
 
 namespace {
 
-// Writes a still to `dest` (the file `out` names, a symbolic link followed) atomically,
-// its folder made and stale temporaries there swept, and says where it went.
-void write_still(const std::filesystem::path& dest, const std::filesystem::path& out, const Image& img) {
+// Writes a still to `dest` (the file `out` names, a symbolic link followed) atomically
+// by `write(dest)`, its folder made and stale temporaries there swept, and says where it
+// went (and `what`, when given).
+template <class Write>
+void write_still_file(const std::filesystem::path& dest, const std::filesystem::path& out, Write write,
+                      const std::string& what = "") {
   if (dest.has_parent_path()) std::filesystem::create_directories(dest.parent_path());
   sweep_stale_temporaries(dest.parent_path());
-  write_png(dest, img);
-  if (dest != out) std::printf("wrote %s (through the symbolic link, to %s)\n", out.c_str(), dest.c_str());
+  write(dest);
+  std::string note = dest != out ? "through the symbolic link, to " + dest.string() : "";
+  if (!what.empty()) note = what + (note.empty() ? "" : "; " + note);
+  if (!note.empty()) std::printf("wrote %s (%s)\n", out.c_str(), note.c_str());
   else std::printf("wrote %s\n", out.string().c_str());
+}
+
+void write_still(const std::filesystem::path& dest, const std::filesystem::path& out, const Image& img) {
+  write_still_file(dest, out, [&](const std::filesystem::path& p) { write_png(p, img); });
 }
 
 // A still from the reference path tracer: the same frame, camera and output transform
@@ -94,7 +103,12 @@ int render_reference_still(const RenderRequest& req, const FrameState& frame, co
     std::fprintf(stderr, "reference: %dx%d at %d paths per pixel in %.1f s (%.0f paths per second)\n", req.width,
                  req.height, req.samples, radiance.seconds,
                  double(req.width) * req.height * req.samples / std::max(radiance.seconds, 1e-9));
-  write_still(dest, out, display_image(radiance, frame.params.render));
+  if (dest.extension() == ".exr")  // the radiance itself, before exposure and the tone map
+    write_still_file(
+        dest, out, [&](const std::filesystem::path& p) { write_exr(p, radiance_hdr_image(radiance)); },
+        "scene-linear radiance");
+  else
+    write_still(dest, out, display_image(radiance, frame.params.render));
   return 0;
 }
 
@@ -110,12 +124,16 @@ gpu::DebugView debug_view(const std::string& debug) {
 
 }  // namespace
 
-// The PNG -o names for a still: its destination (a symbolic link followed). Throws
-// InputError for another extension.
+// The PNG -o names for a still (or with --reference an OpenEXR file of the radiance): its
+// destination (a symbolic link followed). Throws InputError for another extension.
 std::filesystem::path still_destination(const RenderRequest& req) {
   const std::filesystem::path out(req.output);
-  if (out.extension() != ".png")
-    throw InputError("-o " + shorten(req.output, kEchoPathBytes) + ": expected a file name ending in .png");
+  const std::string shown = "-o " + shorten(req.output, kEchoPathBytes);
+  if (out.extension() == ".exr" && !req.reference)
+    throw InputError(shown + ": an OpenEXR file holds the reference's scene-linear radiance: add --reference, or "
+                             "name a .png");
+  if (out.extension() != ".png" && out.extension() != ".exr")
+    throw InputError(shown + ": expected a file name ending in .png (or .exr with --reference)");
   return write_destination(out);
 }
 

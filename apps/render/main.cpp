@@ -33,7 +33,8 @@ int main(int argc, char** argv) {
   render->add_option("-g,--glass", rr.scene.glass, "Glass preset: a name or a JSON file (default: the drink's)");
   render->add_option("-s,--size", size, "Image size WIDTHxHEIGHT")->capture_default_str();
   render->add_option("-o,--output", rr.output,
-                     "Output PNG (written atomically; a symbolic link is followed and its target replaced)")
+                     "Output PNG (written atomically; a symbolic link is followed and its target replaced); "
+                     "with --reference, a .exr gets the scene-linear radiance")
       ->capture_default_str();
   render->add_option("--set", rr.scene.sets, "Set a parameter: path=value (see `draught params`); repeatable")
       ->allow_extra_args(false);

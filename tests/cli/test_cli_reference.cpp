@@ -3,6 +3,10 @@
 // apply (exit 1, the flag named, nothing written).
 #include "cli_helpers.hpp"
 
+#include "core/io/hdr_image.hpp"
+
+#include <cmath>
+
 namespace draught_cli_test {
 namespace {
 
@@ -19,6 +23,27 @@ TEST_F(Reference, WritesAPngAndSaysHowFast) {
   EXPECT_EQ(info.error, "");
   EXPECT_EQ(info.width, 24u);
   EXPECT_EQ(info.height, 16u);
+}
+
+// -o NAME.exr: the radiance before exposure and the tone map, as 32-bit floats, for
+// comparing in linear light; the GPU's picture has no such output.
+TEST_F(Reference, WritesTheLinearRadianceToAnExr) {
+  const std::string gpu_exr = (out() / "gpu.exr").string();
+  expect_failure(render({"-o", gpu_exr}), {"gpu.exr", "add --reference, or name a .png"});
+  expect_failure(render({"--reference", "-o", (out() / "ref.tiff").string()}), {"ref.tiff", ".png (or .exr with --reference)"});
+  const fs::path exr = out() / "ref.exr";
+  auto r = render({"--reference", "--spp", "2", "-o", exr.string()}, "24x16");
+  ASSERT_EQ(r.exit_code, 0) << r.describe();
+  EXPECT_TRUE(contains(r.out, "wrote " + exr.string() + " (scene-linear radiance)")) << r.describe();
+  const draught::HdrImage img = draught::read_hdr_image(exr);
+  EXPECT_EQ(img.width, 24);
+  EXPECT_EQ(img.height, 16);
+  float brightest = 0;
+  for (const glm::vec3& p : img.rgb) {
+    ASSERT_TRUE(std::isfinite(p.r) && std::isfinite(p.g) && std::isfinite(p.b));
+    brightest = std::max({brightest, p.r, p.g, p.b});
+  }
+  EXPECT_GT(brightest, 0.05f);  // a lit scene, in linear light
 }
 
 TEST_F(Reference, AScenePresetRendersToo) {

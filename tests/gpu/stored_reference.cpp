@@ -10,15 +10,6 @@
 namespace draught::test {
 namespace {
 
-HdrImage to_hdr(const RadianceImage& r) {
-  HdrImage img;
-  img.width = r.width;
-  img.height = r.height;
-  img.rgb.reserve(r.pixels.size());
-  for (const glm::dvec3& p : r.pixels) img.rgb.emplace_back(p);
-  return img;
-}
-
 RadianceImage to_radiance(const HdrImage& img) {
   RadianceImage r;
   r.width = img.width;
@@ -62,8 +53,8 @@ StoredReference stored_reference(const std::filesystem::path& dir, const std::st
   if (bless) {
     out.radiance = render_reference(f, width, height, settings);
     std::filesystem::create_directories(dir);
-    write_exr(full, to_hdr(out.radiance));
-    write_exr(check, to_hdr(render_reference(f, width, height, check_settings)));
+    write_exr(full, radiance_hdr_image(out.radiance));
+    write_exr(check, radiance_hdr_image(render_reference(f, width, height, check_settings)));
     char how[160];
     std::snprintf(how, sizeof how, "path-traced in %.1f s and stored", out.radiance.seconds);
     out.how = how + std::string(" in ") + shown;

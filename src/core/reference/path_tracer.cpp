@@ -692,4 +692,13 @@ Image display_image(const RadianceImage& r, const RenderParams& params) {
   return img;
 }
 
+HdrImage radiance_hdr_image(const RadianceImage& r) {
+  HdrImage img;
+  img.width = r.width;
+  img.height = r.height;
+  img.rgb.reserve(r.pixels.size());
+  for (const glm::dvec3& p : r.pixels) img.rgb.emplace_back(p);
+  return img;
+}
+
 }  // namespace draught

@@ -29,6 +29,7 @@
 // docs/REFERENCE.md says how to use it and what it is for.
 #pragma once
 
+#include "core/io/hdr_image.hpp"
 #include "core/io/image.hpp"
 #include "core/scene/frame.hpp"
 
@@ -61,5 +62,9 @@ RadianceImage render_reference(const FrameState&, int width, int height, const R
 
 // The picture: exposure, tone map and sRGB as the GPU's output (core/output/tonemap).
 Image display_image(const RadianceImage&, const RenderParams&);
+
+// The radiance itself, scene-linear, as 32-bit floats (what `draught render --reference
+// -o NAME.exr` writes, and the tests keep: before exposure and the tone map).
+HdrImage radiance_hdr_image(const RadianceImage&);
 
 }  // namespace draught
