@@ -87,14 +87,16 @@ double AreaLight::irradiance_factor(const glm::dvec3& x, const glm::dvec3& n) co
   }
   if (count < 3) return 0;
   // Lambert: the sum over edges of the angle they subtend times the cosine of their
-  // plane's normal with n.
+  // plane's normal with n. (Each corner's direction is found once, not once per edge:
+  // the backdrop's light map sums millions of these.)
+  for (int i = 0; i < count; ++i) poly[i] = glm::normalize(poly[i]);
   double sum = 0;
   for (int i = 0; i < count; ++i) {
-    const glm::dvec3 a = glm::normalize(poly[i]), b = glm::normalize(poly[(i + 1) % count]);
+    const glm::dvec3 &a = poly[i], &b = poly[i + 1 < count ? i + 1 : 0];
     const glm::dvec3 c = glm::cross(a, b);
     const double len = glm::length(c);
     if (len < 1e-15) continue;
-    sum += std::atan2(len, glm::dot(a, b)) * glm::dot(n, c / len);
+    sum += std::atan2(len, glm::dot(a, b)) * (glm::dot(n, c) / len);
   }
   return 0.5 * std::fabs(sum);
 }
