@@ -1,5 +1,6 @@
 #include "core/environment/lights.hpp"
 
+#include "core/math/atan2.hpp"
 #include "core/math/basis.hpp"
 
 #include <algorithm>
@@ -87,16 +88,17 @@ double AreaLight::irradiance_factor(const glm::dvec3& x, const glm::dvec3& n) co
   }
   if (count < 3) return 0;
   // Lambert: the sum over edges of the angle they subtend times the cosine of their
-  // plane's normal with n. (Each corner's direction is found once, not once per edge:
-  // the backdrop's light map sums millions of these.)
-  for (int i = 0; i < count; ++i) poly[i] = glm::normalize(poly[i]);
+  // plane's normal with n. Both are ratios, so the corners need no normalizing: the angle
+  // is atan2(|a x b|, a . b) and the cosine n . (a x b) / |a x b| at any lengths of a and b
+  // (the backdrop's light map sums millions of these).
   double sum = 0;
   for (int i = 0; i < count; ++i) {
     const glm::dvec3 &a = poly[i], &b = poly[i + 1 < count ? i + 1 : 0];
     const glm::dvec3 c = glm::cross(a, b);
-    const double len = glm::length(c);
-    if (len < 1e-15) continue;
-    sum += std::atan2(len, glm::dot(a, b)) * (glm::dot(n, c) / len);
+    const double len2 = glm::dot(c, c);
+    if (len2 <= 1e-30 * glm::dot(a, a) * glm::dot(b, b)) continue;  // a and b (anti)parallel
+    const double len = std::sqrt(len2);
+    sum += atan2_fast(len, glm::dot(a, b)) * (glm::dot(n, c) / len);
   }
   return 0.5 * std::fabs(sum);
 }
