@@ -4,13 +4,23 @@
 #
 #   scripts/bless-goldens.sh                  # every golden
 #   scripts/bless-goldens.sh flight flight_angle   # only these (new goldens)
+#
+# With --references (what scripts/bless-references.sh runs): the reference comparisons'
+# path-traced references (tests/golden/reference/) instead.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-filter='Scenes/Golden.*'
+suite='Scenes/Golden' test='MatchesBlessedImage'
+done_message="Blessed. Now open each image written above and judge it before you commit."
+if [ "${1:-}" = --references ]; then
+  shift
+  suite='Scenes/ReferenceComparison' test='RegionsAgreeWithinTheirBounds'
+  done_message="Stored. Read the figures above (and DRAUGHT_COMPARISON_DUMP's pictures where they moved) before you commit."
+fi
+filter="$suite.*"
 if [ $# -gt 0 ]; then
   filter=""
-  for name in "$@"; do filter="${filter:+$filter:}Scenes/Golden.MatchesBlessedImage/$name"; done
+  for name in "$@"; do filter="${filter:+$filter:}$suite.$test/$name"; done
 fi
 cmake --build build -j"$(nproc)" --target gpu_tests
 DRAUGHT_DEVICE=software ./build/tests/gpu_tests --gtest_filter="$filter" --bless
-echo "Blessed. Now open each image written above and judge it before you commit."
+echo "$done_message"

@@ -7,13 +7,4 @@
 #
 #   scripts/bless-references.sh                        # every case
 #   scripts/bless-references.sh lager_pint stout_head  # only these
-set -euo pipefail
-cd "$(dirname "$0")/.."
-filter='Scenes/ReferenceComparison.*'
-if [ $# -gt 0 ]; then
-  filter=""
-  for name in "$@"; do filter="${filter:+$filter:}Scenes/ReferenceComparison.RegionsAgreeWithinTheirBounds/$name"; done
-fi
-cmake --build build -j"$(nproc)" --target gpu_tests
-DRAUGHT_DEVICE=software ./build/tests/gpu_tests --gtest_filter="$filter" --bless
-echo "Stored. Read the figures above (and DRAUGHT_COMPARISON_DUMP's pictures where they moved) before you commit."
+exec "$(dirname "$0")/bless-goldens.sh" --references "$@"
