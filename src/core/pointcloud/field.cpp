@@ -419,7 +419,7 @@ class TreeRayQueries {
     float best = best_known();
     while (!ahead.empty() && ahead.back().entry < best) {
       const std::size_t before = waiting.size();
-      open_nearest();
+      open_nearest([&](float entry) { return entry < best; });
       if (waiting.size() != before) best = best_known();
     }
     return best < limit ? best : INFINITY;
@@ -483,38 +483,54 @@ class TreeRayQueries {
   }
   // Opens the box the ray enters first: a leaf's supports join the list (in texel order),
   // an inner node's children's boxes the boxes ahead. Boxes the march has passed are dropped.
-  void open_nearest() const {
-    const Box b = ahead.back();
+  // An inner node's nearer child that would come straight back off the list (entered no
+  // later than every box ahead, and wanted by go_on) is opened at once instead: the same
+  // boxes in the same order, without the list's sorting.
+  template <class While>
+  void open_nearest(While go_on) const {
+    Box b = ahead.back();
     ahead.pop_back();
-    if (b.exit < behind) return;
-    const float* n = node(b.node);
-    const int index = int(n[3]), count = int(n[7]);
-    if (count > 0) {
-      for (int i = index; i < index + count; ++i) {
-        const glm::vec4 p = point_texel(tx, i);
-        float t0, t1;
-        if (!support_span(p, o, d, t0, t1) || t1 < behind) continue;
-        const Support s{glm::vec3(p), 1.0f / (p.w * p.w), t0, t1, i};
-        waiting.insert(std::upper_bound(waiting.begin(), waiting.end(), i,
-                                        [](int j, const Support& x) { return j < x.i; }),
-                       s);
+    for (;;) {
+      if (b.exit < behind) return;
+      const float* n = node(b.node);
+      const int index = int(n[3]), count = int(n[7]);
+      if (count > 0) {
+        for (int i = index; i < index + count; ++i) {
+          const glm::vec4 p = point_texel(tx, i);
+          float t0, t1;
+          if (!support_span(p, o, d, t0, t1) || t1 < behind) continue;
+          const Support s{glm::vec3(p), 1.0f / (p.w * p.w), t0, t1, i};
+          waiting.insert(std::upper_bound(waiting.begin(), waiting.end(), i,
+                                          [](int j, const Support& x) { return j < x.i; }),
+                         s);
+        }
+        return;
       }
-      return;
-    }
-    float l0, l1, r0, r1;
-    const bool l = box_span(node(b.node + 1), behind, l0, l1), r = box_span(node(index), behind, r0, r1);
-    // The farther first: the nearer then goes in at the end.
-    if (l && r && l0 < r0) {
-      push_box(index, r0, r1);
-      push_box(b.node + 1, l0, l1);
-    } else {
-      if (l) push_box(b.node + 1, l0, l1);
-      if (r) push_box(index, r0, r1);
+      float l0, l1, r0, r1;
+      const bool l = box_span(node(b.node + 1), behind, l0, l1), r = box_span(node(index), behind, r0, r1);
+      // The farther first: the nearer then goes in at the end.
+      Box near;
+      if (l && r && l0 < r0) {
+        push_box(index, r0, r1);
+        near = {l0, l1, b.node + 1};
+      } else if (l && r) {
+        push_box(b.node + 1, l0, l1);
+        near = {r0, r1, index};
+      } else if (l || r) {
+        near = l ? Box{l0, l1, b.node + 1} : Box{r0, r1, index};
+      } else {
+        return;
+      }
+      if (!(ahead.empty() || near.entry <= ahead.back().entry) || !go_on(near.entry)) {
+        push_box(near.node, near.entry, near.exit);
+        return;
+      }
+      b = near;
     }
   }
   template <class While>
   void open_while(While go_on) const {
-    while (!ahead.empty() && go_on(ahead.back().entry)) open_nearest();
+    while (!ahead.empty() && go_on(ahead.back().entry)) open_nearest(go_on);
   }
 };
 
