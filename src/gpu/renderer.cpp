@@ -155,7 +155,7 @@ void Renderer::draw_picture(const FrameState& f, int width, int height, DebugVie
   const bool matcap = debug == DebugView::Thickness ||
                       (debug == DebugView::None && f.params.render.tier == int(RenderTier::MatCap));
   if (matcap) matcap_->update(f);  // a bake or a read only when its inputs change
-  textures_->update(f);  // only rows that changed; the floor's light when its inputs did
+  textures_->update(f, width, height);  // only rows that changed; the floor's light when its inputs did
   const bool decals = decals_->update(f);  // the images when they change, arc rows when a glass does
   // Beads and fog: a band when its glass's condensation changed (the thickness view is the
   // bare glasses').

@@ -372,7 +372,7 @@ void SceneTextures::allocate(int rows) {
   knots_.clear();
 }
 
-void SceneTextures::update(const FrameState& f) {
+void SceneTextures::update(const FrameState& f, int width, int height) {
   const int n = int(f.vessels.size());
   if (n > contract::kMaxSceneObjects)
     throw std::runtime_error("the scene has " + std::to_string(n) + " objects; the renderer draws at most " +
@@ -404,13 +404,13 @@ void SceneTextures::update(const FrameState& f) {
     }
   }
   update_floor_light(f);
-  update_backdrop_light(f);
+  update_backdrop_light(f, backdrop_light_texel(f, width, height));
   update_environment(f);
 }
 
-void SceneTextures::update_backdrop_light(const FrameState& f) {
+void SceneTextures::update_backdrop_light(const FrameState& f, double texel) {
   backdrop_computed_ = false;
-  std::vector<double> inputs = backdrop_light_inputs(f);
+  std::vector<double> inputs = backdrop_light_inputs(f, texel);
   for (size_t i = 0; i < backdrop_cache_.size(); ++i)
     if (backdrop_cache_[i].inputs == inputs) {  // unchanged lights and backdrop cost nothing
       std::rotate(backdrop_cache_.begin(), backdrop_cache_.begin() + long(i), backdrop_cache_.begin() + long(i) + 1);
@@ -418,7 +418,9 @@ void SceneTextures::update_backdrop_light(const FrameState& f) {
     }
   BackdropEntry e;
   e.inputs = std::move(inputs);
-  e.map = compute_backdrop_light(f);
+  BackdropLightSettings settings;
+  settings.texel = texel;
+  e.map = compute_backdrop_light(f, settings);
   backdrop_computed_ = true;
   if (!e.map.empty()) {
     const std::vector<glm::vec4> texels = pack_backdrop_light(e.map);

@@ -54,7 +54,8 @@ class SceneTextures {
 
   // Brings both textures up to the frame: rows that differ from what they hold are
   // uploaded, nothing else. Throws for more than contract::kMaxSceneObjects objects.
-  void update(const FrameState&);
+  // width x height: the picture's size, which sets the backdrop light map's texel.
+  void update(const FrameState&, int width, int height);
   // Binds the textures to their units (generated: kObjectSampler, kKnotsSampler,
   // kFloorLightSampler).
   void bind() const;
@@ -129,7 +130,7 @@ class SceneTextures {
   unsigned environment_tex_ = 0;
   bool environment_uploaded_ = false;
 
-  void update_backdrop_light(const FrameState&);
+  void update_backdrop_light(const FrameState&, double texel);
   // The last few backdrop maps, the current one first (as the floor's: interleaved scenes
   // compute each once).
   struct BackdropEntry {

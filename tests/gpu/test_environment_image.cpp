@@ -111,13 +111,13 @@ TEST(EnvironmentImageTwin, TheImageIsUploadedOnceNotEveryFrame) {
   gpu_instance();  // the GL context the textures are made in
   gpu::SceneTextures textures;
   const FrameState f = environment_frame_of("bar", {});
-  textures.update(f);
+  textures.update(f, 64, 64);
   EXPECT_TRUE(textures.environment_uploaded());
-  textures.update(f);
+  textures.update(f, 64, 64);
   EXPECT_FALSE(textures.environment_uploaded());
-  textures.update(environment_frame_of("bar", {"env.rotation=20", "env.intensity=2"}));  // the same image, seen otherwise
+  textures.update(environment_frame_of("bar", {"env.rotation=20", "env.intensity=2"}), 64, 64);  // the same image, seen otherwise
   EXPECT_FALSE(textures.environment_uploaded());
-  textures.update(environment_frame_of("studio", {}));
+  textures.update(environment_frame_of("studio", {}), 64, 64);
   EXPECT_TRUE(textures.environment_uploaded());
 }
 

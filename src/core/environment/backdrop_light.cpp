@@ -141,8 +141,18 @@ BackdropLightMap compute_backdrop_light(const FrameState& f, const BackdropLight
   return compute_backdrop_light(f.lights, f.backdrop, scene_aim(f.vessels), s);
 }
 
-std::vector<double> backdrop_light_inputs(const FrameState& f) {
+double backdrop_light_texel(const FrameState& f, int width, int height, double finest) {
+  const CameraBasis cam = camera_basis(f, std::max(width, 1), std::max(height, 1));
+  const double distance = std::max(glm::dot(scene_aim(f.vessels) - glm::dvec3(cam.eye), glm::dvec3(cam.forward)), 1e-3);
+  const double pixel = 2.0 * distance * double(cam.tan_half_vfov) / double(std::max(height, 1));
+  double texel = finest;
+  for (int k = 0; k < 3 && 2.0 * texel <= 4.0 * pixel; ++k) texel *= 2.0;
+  return texel;
+}
+
+std::vector<double> backdrop_light_inputs(const FrameState& f, double texel) {
   std::vector<double> k;
+  k.push_back(texel);
   auto put = [&k](auto... xs) { (k.push_back(double(xs)), ...); };
   auto put3 = [&put](const glm::dvec3& v) { put(v.x, v.y, v.z); };
   const BackdropSurface& b = f.backdrop;

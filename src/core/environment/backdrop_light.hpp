@@ -75,8 +75,16 @@ BackdropLightMap compute_backdrop_light(const LightRig&, const BackdropSurface&,
                                         const BackdropLightSettings& = {});
 BackdropLightMap compute_backdrop_light(const FrameState&, const BackdropLightSettings& = {});
 
-// Everything the map depends on as numbers (the lights, the backdrop, the aim): equal
-// inputs give an equal map, so a renderer recomputes it only when these change.
-std::vector<double> backdrop_light_inputs(const FrameState&);
+// The map's texel for a width x height picture of the frame: `finest` (the settings' 5 mm),
+// doubled while four of the picture's pixels at the scene's aim still span the doubled
+// texel, at most three times (4 cm). A thumbnail then computes a map up to 64 times
+// smaller (a 16 x 16 picture of a pint: 4 cm texels, 50 x 70 instead of 400 x 549); the
+// trust marks bound filtering's error at any texel, so a coarser map hands more of the
+// picture to the exact sum instead of showing it less exactly.
+double backdrop_light_texel(const FrameState&, int width, int height, double finest = BackdropLightSettings{}.texel);
+
+// Everything the map depends on as numbers (the lights, the backdrop, the aim, the texel):
+// equal inputs give an equal map, so a renderer recomputes it only when these change.
+std::vector<double> backdrop_light_inputs(const FrameState&, double texel = BackdropLightSettings{}.texel);
 
 }  // namespace draught

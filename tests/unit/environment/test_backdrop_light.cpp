@@ -122,6 +122,42 @@ TEST(BackdropLight, WithinOneStepOfTheExactSumAfterTheToneMap) {
   EXPECT_GT(worst, 1.0);
 }
 
+// A thumbnail's map (backdrop_light_texel): up to eight times the texel; the trust marks
+// keep it as exact, handing more of it to the exact sum.
+TEST(BackdropLight, TheCoarsestTexelIsWithinOneStepToo) {
+  std::vector<std::pair<const char*, FrameState>> cases = {
+      {"default pint", make_frame(resolve_scene({"lager", "pint", {}, {}}))},
+      {"checker studio", make_frame(resolve_scene({"checker-studio", "pint", {}, {}}))},
+      {"flight", make_frame(resolve_scene_objects({"flight", "", {}, {}}))}};
+  for (const auto& [name, f] : cases) {
+    BackdropLightSettings s;
+    s.texel = 8 * BackdropLightSettings{}.texel;
+    const BackdropLightMap m = compute_backdrop_light(f, s);
+    ASSERT_FALSE(m.empty()) << name;
+    const double worst = worst_step(f, m, 100000);
+    std::printf("%s at %.0f mm: %d x %d texels (%.3f %% left to the exact sum), largest |map - exact| %.3f of an 8-bit step\n",
+                name, 1000 * s.texel, m.width, m.height, 100 * m.untrusted_fraction(), worst);
+    EXPECT_LT(m.untrusted_fraction(), 0.15) << name;
+    EXPECT_LT(worst, 1.0) << name;
+  }
+}
+
+TEST(BackdropLight, TheTexelFollowsThePicturesPixelsAtTheAim) {
+  const FrameState f = make_frame(resolve_scene({"lager", "pint", {}, {}}));
+  const double finest = BackdropLightSettings{}.texel;
+  EXPECT_EQ(backdrop_light_texel(f, 512, 512), finest);
+  EXPECT_EQ(backdrop_light_texel(f, 16, 16), 8 * finest);  // a 16 px pint: pixels of about 1.5 cm
+  EXPECT_EQ(backdrop_light_texel(f, 4, 4), 8 * finest);    // never coarser than 4 cm
+  double last = 1e9;
+  for (int h : {8, 16, 24, 32, 48, 64, 96, 128, 256, 1024}) {
+    const double t = backdrop_light_texel(f, h, h);
+    EXPECT_LE(t, last) << h << " px";
+    EXPECT_GE(t, finest) << h << " px";
+    last = t;
+  }
+  EXPECT_NE(backdrop_light_inputs(f, finest), backdrop_light_inputs(f, 2 * finest)) << "maps of two texels are two maps";
+}
+
 TEST(BackdropLight, InputsFollowLightsBackdropAndAimOnly) {
   const FrameState f = make_frame(resolve_scene({"lager", "pint", {}, {}}));
   FrameState tipped = f;
