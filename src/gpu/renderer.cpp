@@ -141,6 +141,11 @@ Renderer::~Renderer() {
   glDeleteVertexArrays(1, &vao_);
 }
 
+void Renderer::set_moving_drafts(bool on) {
+  moving_drafts_ = on;
+  textures_->set_backdrop_drafts(on);
+}
+
 void Renderer::set_floor_light(const FloorLightSettings& s, bool on, int draft_photons) {
   textures_->set_floor_light(s, on, draft_photons);
 }

@@ -124,9 +124,11 @@ class Renderer {
   // budget once it holds still (SceneTextures::set_floor_light).
   void set_floor_light(const FloorLightSettings&, bool on = true, int draft_photons = 0);
   // Interactive apps (the viewer, the web page): while things move, the MatCap tier's
-  // background is drawn smaller and read between its texels (MatCapBackground::moving).
-  // Off (the CLI, tests): every frame's background is as sharp as a still's.
-  void set_moving_drafts(bool on) { moving_drafts_ = on; }
+  // background is drawn smaller and read between its texels (MatCapBackground::moving),
+  // and while the lights, the backdrop or the scene's aim change the backdrop's light map
+  // is a draft (SceneTextures::set_backdrop_drafts). Off (the CLI, tests): every frame's
+  // background and light map are a still's.
+  void set_moving_drafts(bool on);
 
  private:
   // draw(), the passes leaving scene-linear light instead of display values with `linear`

@@ -408,14 +408,26 @@ void SceneTextures::update(const FrameState& f, int width, int height) {
   update_environment(f);
 }
 
-void SceneTextures::update_backdrop_light(const FrameState& f, double texel) {
-  backdrop_computed_ = false;
-  std::vector<double> inputs = backdrop_light_inputs(f, texel);
+bool SceneTextures::use_cached_backdrop_light(const std::vector<double>& inputs) {
   for (size_t i = 0; i < backdrop_cache_.size(); ++i)
     if (backdrop_cache_[i].inputs == inputs) {  // unchanged lights and backdrop cost nothing
       std::rotate(backdrop_cache_.begin(), backdrop_cache_.begin() + long(i), backdrop_cache_.begin() + long(i) + 1);
-      return;
+      return true;
     }
+  return false;
+}
+
+void SceneTextures::update_backdrop_light(const FrameState& f, double texel) {
+  backdrop_computed_ = false;
+  std::vector<double> inputs = backdrop_light_inputs(f, texel);
+  const bool changing = backdrop_drafts_ && inputs != backdrop_last_inputs_;
+  backdrop_last_inputs_ = inputs;
+  if (use_cached_backdrop_light(inputs)) return;
+  if (changing && texel < kBackdropDraftTexel) {  // a draft while the inputs change (set_backdrop_drafts)
+    texel = std::min(4.0 * texel, kBackdropDraftTexel);
+    inputs = backdrop_light_inputs(f, texel);
+    if (use_cached_backdrop_light(inputs)) return;
+  }
   BackdropEntry e;
   e.inputs = std::move(inputs);
   BackdropLightSettings settings;

@@ -76,6 +76,12 @@ class SceneTextures {
   const BackdropLightMap& backdrop_light() const;
   // Whether the last update computed and uploaded the backdrop's light map.
   bool backdrop_light_computed() const { return backdrop_computed_; }
+  // Drafts of the backdrop's light map (interactive apps): a frame whose backdrop inputs
+  // differ from the last frame's (a light's slider dragged, a glass moved, the first frame)
+  // gets a map on texels four times as wide, up to 4 cm (a sixteenth of the work; its trust marks keep
+  // it as exact, handing more pixels to the exact sum), and the picture's own map comes the
+  // first frame they hold still. Off (the CLI, tests): every map the picture's own.
+  void set_backdrop_drafts(bool on) { backdrop_drafts_ = on; }
 
   // Whether the last update uploaded an environment image (env.mode image): only when the
   // frame's map is another than the one the texture holds.
@@ -139,7 +145,11 @@ class SceneTextures {
     unsigned tex = 0;
   };
   std::vector<BackdropEntry> backdrop_cache_;
+  bool use_cached_backdrop_light(const std::vector<double>& inputs);
+  static constexpr double kBackdropDraftTexel = 0.04;  // a draft's texel at most (and a thumbnail's)
   bool backdrop_computed_ = false;
+  bool backdrop_drafts_ = false;
+  std::vector<double> backdrop_last_inputs_;  // the picture's own map's inputs at the last update
   bool floor_on_ = true, floor_computed_ = false;
   int draft_photons_ = 0;
   bool drafted_last_ = false;  // the last update traced a draft (the next one in motion skips)

@@ -135,5 +135,36 @@ TEST(BackdropLightPicture, TheMapIsComputedOnlyWhenTheLightsOrTheBackdropChange)
   EXPECT_TRUE(g.renderer->scene_textures().backdrop_light_computed()) << "another sweep kept the old map";
 }
 
+// Interactive apps (Renderer::set_moving_drafts): a frame whose lights just changed gets a
+// draft map on texels four times as wide, the next still frame the picture's own.
+TEST(BackdropLightPicture, DraftsWhileTheLightsChangeThenThePicturesOwnMap) {
+  gpu_instance();  // the GL context the textures are made in
+  const int w = 1024, h = 1024;  // (the view is wide: its pixels at the aim are 1.7 mm)
+  const FrameState a = sweep_frame({"light.power=5.3"}, kViews[0]), b = sweep_frame({"light.power=5.2"}, kViews[0]);
+  gpu::SceneTextures textures;
+  textures.set_backdrop_drafts(true);
+  textures.update(a, w, h);
+  ASSERT_TRUE(textures.backdrop_light_computed());
+  const int draft = textures.backdrop_light().width;
+  textures.update(a, w, h);
+  ASSERT_TRUE(textures.backdrop_light_computed()) << "a still frame after the draft computes the picture's own map";
+  const int own = textures.backdrop_light().width;
+  EXPECT_EQ(own, compute_backdrop_light(a).width);  // 5 mm
+  EXPECT_NEAR(double(own) / draft, 4.0, 0.1);
+  textures.update(a, w, h);
+  EXPECT_FALSE(textures.backdrop_light_computed());
+  textures.update(b, w, h);  // the key's slider moved
+  EXPECT_TRUE(textures.backdrop_light_computed());
+  EXPECT_EQ(textures.backdrop_light().width, draft);
+  textures.update(a, w, h);  // and back: the own map kept for a is taken at once
+  EXPECT_FALSE(textures.backdrop_light_computed());
+  EXPECT_EQ(textures.backdrop_light().width, own);
+
+  gpu::SceneTextures still;  // drafts off (the CLI): the own map at once
+  still.update(b, w, h);
+  EXPECT_TRUE(still.backdrop_light_computed());
+  EXPECT_EQ(still.backdrop_light().width, own);
+}
+
 }  // namespace
 }  // namespace draught::test
