@@ -423,8 +423,8 @@ void SceneTextures::update_backdrop_light(const FrameState& f, double texel) {
   const bool changing = backdrop_drafts_ && inputs != backdrop_last_inputs_;
   backdrop_last_inputs_ = inputs;
   if (use_cached_backdrop_light(inputs)) return;
-  if (changing && texel < kBackdropDraftTexel) {  // a draft while the inputs change (set_backdrop_drafts)
-    texel = std::min(4.0 * texel, kBackdropDraftTexel);
+  if (changing && texel < kBackdropLightCoarsestTexel) {  // a draft while the inputs change (set_backdrop_drafts)
+    texel = std::min(4.0 * texel, kBackdropLightCoarsestTexel);
     inputs = backdrop_light_inputs(f, texel);
     if (use_cached_backdrop_light(inputs)) return;
   }

@@ -146,7 +146,6 @@ class SceneTextures {
   };
   std::vector<BackdropEntry> backdrop_cache_;
   bool use_cached_backdrop_light(const std::vector<double>& inputs);
-  static constexpr double kBackdropDraftTexel = 0.04;  // a draft's texel at most (and a thumbnail's)
   bool backdrop_computed_ = false;
   bool backdrop_drafts_ = false;
   std::vector<double> backdrop_last_inputs_;  // the picture's own map's inputs at the last update

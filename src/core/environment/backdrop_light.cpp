@@ -146,7 +146,7 @@ double backdrop_light_texel(const FrameState& f, int width, int height, double f
   const double distance = std::max(glm::dot(scene_aim(f.vessels) - glm::dvec3(cam.eye), glm::dvec3(cam.forward)), 1e-3);
   const double pixel = 2.0 * distance * double(cam.tan_half_vfov) / double(std::max(height, 1));
   double texel = finest;
-  for (int k = 0; k < 3 && 2.0 * texel <= 4.0 * pixel; ++k) texel *= 2.0;
+  while (2.0 * texel <= std::min(4.0 * pixel, kBackdropLightCoarsestTexel)) texel *= 2.0;
   return texel;
 }
 

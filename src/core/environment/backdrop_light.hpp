@@ -75,9 +75,12 @@ BackdropLightMap compute_backdrop_light(const LightRig&, const BackdropSurface&,
                                         const BackdropLightSettings& = {});
 BackdropLightMap compute_backdrop_light(const FrameState&, const BackdropLightSettings& = {});
 
+// The widest texel a map is computed on: a thumbnail's, and the interactive apps' drafts.
+inline constexpr double kBackdropLightCoarsestTexel = 0.04;
+
 // The map's texel for a width x height picture of the frame: `finest` (the settings' 5 mm),
 // doubled while four of the picture's pixels at the scene's aim still span the doubled
-// texel, at most three times (4 cm). A thumbnail then computes a map up to 64 times
+// texel, up to kBackdropLightCoarsestTexel (4 cm). A thumbnail then computes a map up to 64 times
 // smaller (a 16 x 16 picture of a pint: 4 cm texels, 50 x 70 instead of 400 x 549); the
 // trust marks bound filtering's error at any texel, so a coarser map hands more of the
 // picture to the exact sum instead of showing it less exactly.
