@@ -53,6 +53,7 @@ target_include_directories(draught_web_core PUBLIC "${DRAUGHT_ROOT}/src" "${DRAU
 add_dependencies(draught_web_core draught_contract)  # generated/*.hpp before any compile
 target_include_directories(draught_web_core SYSTEM PUBLIC "${web_inc}")
 target_compile_options(draught_web_core PUBLIC ${web_flags})
+draught_precompile_core_headers(draught_web_core)
 target_compile_definitions(draught_web_core PRIVATE
   DRAUGHT_SOURCE_PRESET_DIR="/presets"
   DRAUGHT_VERSION="${PROJECT_VERSION}")
