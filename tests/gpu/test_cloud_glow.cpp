@@ -5,12 +5,15 @@
 #include "color_difference.hpp"
 #include "gpu_fixture.hpp"
 
+#include "stored_reference.hpp"
+
 #include "core/pointcloud/glow_light.hpp"
 #include "core/reference/path_tracer.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 
 namespace draught::test {
 namespace {
@@ -35,7 +38,13 @@ TEST(CloudGlow, TheFloorUnderAHotGobIsLitAsTheReferenceFindsIt) {
   const Image lit = r.render(hot, kW, kH), unlit = r.render(dark, kW, kH);
   ReferenceSettings settings;
   settings.samples = 256;
-  const Image reference = display_image(render_reference(hot, kW, kH, settings), hot.params.render);
+  // Stored with the reference comparisons' (stored_reference.hpp: only its first paths are
+  // traced and checked here; scripts/bless-references.sh gob_marver_glow traces it afresh).
+  StoredReference stored = stored_reference(std::filesystem::path(DRAUGHT_GOLDEN_DIR) / "reference", "gob_marver_glow",
+                                            hot, kW, kH, settings, g_bless);
+  ASSERT_TRUE(stored.error.empty()) << stored.error;
+  std::printf("gob_marver_glow: reference %dx%d at %d paths, %s\n", kW, kH, settings.samples, stored.how.c_str());
+  const Image reference = display_image(stored.radiance, hot.params.render);
 
   // The pool: where the glow changes the picture (the gob itself is the same either way).
   double picture = 0, traced = 0, without = 0;
