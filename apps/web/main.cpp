@@ -217,13 +217,17 @@ EM_BOOL on_context_lost(int, const void*, void*) {
 std::unique_ptr<gpu::Renderer> make_web_renderer() {
   auto r = std::make_unique<gpu::Renderer>(std::filesystem::path(), gpu::Renderer::Compile::WithFirstFrame);
   // The floor's shadows: one thread (no workers), drafts while something moves, a still's
-  // photons (the CLI's) once it holds still, in a hundred batches over as many frames (a
-  // batch costs about a draft: no frame stalls on the whole; two seconds at 60 frames a
-  // second). With a tenth of them the page's floor stayed blotched with grey.
+  // photons (the CLI's) once it holds still, refined over frames in batches of 1,000
+  // photons for at most about 4 ms a frame (at least one batch): no frame stalls on the
+  // whole, and the frames keep the speed of their drawing, which the adaptive quality
+  // measures. (Batches of a draft's 5,000, one a frame, took 25 ms of each frame in this
+  // one thread on a desktop, several times that on a phone.) With a tenth of the photons
+  // the page's floor stayed blotched with grey.
   FloorLightSettings s;
   s.threads = 1;
   s.photons = kFloorPhotonsStill;
   r->set_floor_light(s, true, kFloorPhotonsStill / 100);
+  r->set_floor_refinement(kFloorPhotonsStill / 500, 4.0);
   r->set_moving_drafts(true);  // the MatCap tier's background while things move
   return r;
 }

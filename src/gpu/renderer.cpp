@@ -150,6 +150,10 @@ void Renderer::set_floor_light(const FloorLightSettings& s, bool on, int draft_p
   textures_->set_floor_light(s, on, draft_photons);
 }
 
+void Renderer::set_floor_refinement(int batch_photons, double ms_per_frame) {
+  textures_->set_floor_refinement(batch_photons, ms_per_frame);
+}
+
 void Renderer::draw(const FrameState& f, int width, int height, DebugView debug, int event) {
   draw_picture(f, width, height, debug, event, false);
 }

@@ -123,6 +123,9 @@ class Renderer {
   // takes the unoccluded light); draft_photons > 0: drafts while the scene moves, the full
   // budget once it holds still (SceneTextures::set_floor_light).
   void set_floor_light(const FloorLightSettings&, bool on = true, int draft_photons = 0);
+  // Its refinement once still: batch size and milliseconds a frame
+  // (SceneTextures::set_floor_refinement).
+  void set_floor_refinement(int batch_photons, double ms_per_frame);
   // Interactive apps (the viewer, the web page): while things move, the MatCap tier's
   // background is drawn smaller and read between its texels (MatCapBackground::moving),
   // and while the lights, the backdrop or the scene's aim change the backdrop's light map

@@ -10,6 +10,7 @@
 #include <GLES3/gl3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -464,6 +465,11 @@ void SceneTextures::set_floor_light(const FloorLightSettings& s, bool on, int dr
   clear_floor_light();  // computed again on the next update
 }
 
+void SceneTextures::set_floor_refinement(int batch_photons, double ms_per_frame) {
+  refine_batch_photons_ = std::max(0, batch_photons);
+  refine_ms_per_frame_ = std::isfinite(ms_per_frame) ? std::max(0.0, ms_per_frame) : 0.0;
+}
+
 void SceneTextures::clear_floor_light() {
   for (FloorEntry& e : floor_cache_) glDeleteTextures(1, &e.tex);
   floor_cache_.clear();
@@ -507,12 +513,14 @@ void SceneTextures::update_floor_light(const FrameState& f) {
   if (!floor_on_) {
     // no map: the floor takes the unoccluded light
   } else if (draft_photons_ > 0 && refine) {
-    // In batches of a draft's photons on full texels, the first two at once (one would be
-    // noisier than the draft it replaces, whose texels are four times the area).
-    s.photons = std::min(s.photons, draft_photons_);
+    // In batches (a draft's photons unless set_floor_refinement says) on full texels, two
+    // drafts' worth at once (one would be noisier than the draft it replaces, whose
+    // texels are four times the area).
+    const int batch = refine_batch_photons_ > 0 ? std::min(refine_batch_photons_, draft_photons_) : draft_photons_;
+    s.photons = std::max(1, std::min(s.photons, batch));
     e.refining = std::make_unique<FloorLightTrace>(f, s);
-    e.batches_left = std::max(1, (full.photons + s.photons - 1) / std::max(s.photons, 1));
-    refine_floor_light(e, 2);
+    e.batches_left = std::max(1, (full.photons + s.photons - 1) / s.photons);
+    refine_floor_light(e, std::max(1, (2 * draft_photons_ + s.photons - 1) / s.photons));
   } else if (draft_photons_ > 0) {
     e.draft = true;
     drafted_last_ = true;
@@ -533,8 +541,16 @@ void SceneTextures::update_floor_light(const FrameState& f) {
   floor_cache_.insert(floor_cache_.begin(), std::move(e));
 }
 
-void SceneTextures::refine_floor_light(FloorEntry& e, int batches) {
-  for (int b = 0; b < batches && e.batches_left > 0; ++b, --e.batches_left) e.refining->add_batch();
+void SceneTextures::refine_floor_light(FloorEntry& e, int min_batches) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  for (int b = 0; e.batches_left > 0; ++b, --e.batches_left) {
+    if (b >= min_batches &&
+        (refine_ms_per_frame_ <= 0 ||
+         std::chrono::duration<double, std::milli>(Clock::now() - start).count() >= refine_ms_per_frame_))
+      break;
+    e.refining->add_batch();
+  }
   floor_computed_ = true;
   const FloorLightMap& m = e.refining->map();
   if (!m.empty()) {

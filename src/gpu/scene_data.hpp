@@ -63,10 +63,17 @@ class SceneTextures {
   // (floor_light_inputs), never else; off: none (the floor takes the unoccluded light).
   // draft_photons > 0 (interactive apps): a frame whose inputs just changed gets a draft of
   // that many photons on texels twice as wide; once they hold still the map is traced
-  // again on full texels in batches of that many photons, one a frame (two the first),
-  // until the full budget is reached: no frame stalls on the whole budget. While the
-  // inputs keep changing, a draft every other frame.
+  // again on full texels in batches over frames (set_floor_refinement) until the full
+  // budget is reached: no frame stalls on the whole budget. While the inputs keep
+  // changing, a draft every other frame.
   void set_floor_light(const FloorLightSettings&, bool on = true, int draft_photons = 0);
+  // How a still's map is refined (with draft_photons > 0): in batches of batch_photons
+  // (0: the draft's), the first frame two drafts' worth, then at least one batch a frame
+  // and more while the frame's batches so far took under ms_per_frame (0: one a frame).
+  // Small batches in a few milliseconds keep an app's frames at its drawing speed while
+  // the map refines: the web page's one thread took 25 ms a frame for batches of 5,000
+  // photons, and its adaptive quality counted them as the picture's cost.
+  void set_floor_refinement(int batch_photons, double ms_per_frame);
   // Where the map lies (frame block members floor_light_*) for the frame of the last update.
   void describe_floor_light(contract::FrameBlock&) const;
   const FloorLightMap& floor_light() const;
@@ -125,7 +132,7 @@ class SceneTextures {
       refining.reset();
     }
   };
-  void refine_floor_light(FloorEntry&, int batches);
+  void refine_floor_light(FloorEntry&, int min_batches);
   static constexpr size_t kFloorCache = 6;
   std::vector<FloorEntry> floor_cache_;
   unsigned neutral_tex_ = 0;  // one texel of factor 1, bound when there is no map
@@ -151,6 +158,8 @@ class SceneTextures {
   std::vector<double> backdrop_last_inputs_;  // the picture's own map's inputs at the last update
   bool floor_on_ = true, floor_computed_ = false;
   int draft_photons_ = 0;
+  int refine_batch_photons_ = 0;   // 0: the draft's
+  double refine_ms_per_frame_ = 0;  // 0: one batch a frame
   bool drafted_last_ = false;  // the last update traced a draft (the next one in motion skips)
 };
 

@@ -222,6 +222,40 @@ TEST(SceneData, TheFloorLightIsRefinedInBatchesOnceStill) {
   g.renderer->set_floor_light(test_floor_light());  // as the other tests have it
 }
 
+// Batches smaller than the draft's (the web page's): two drafts' worth the first frame it
+// holds still, then one a frame without a time budget, ending at the full budget with the
+// map one trace in as many batches gives; with a budget no frame uses up, all of it the
+// first frame still.
+TEST(SceneData, TheFloorLightRefinesInSmallerBatchesWithinATimeBudget) {
+  Gpu& g = gpu_instance();
+  FloorLightSettings s = test_floor_light();
+  s.photons = 20000;
+  FrameState f = scene_frame({"lager", "pint", {}, {}});
+  const gpu::SceneTextures& t = g.renderer->scene_textures();
+  auto still_frames = [&](double ms_per_frame) {
+    g.renderer->set_floor_light(s, true, 5000);  // (an empty cache: the first frame drafts)
+    g.renderer->set_floor_refinement(2500, ms_per_frame);
+    g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
+    EXPECT_NEAR(t.floor_light().stats.photons, 5000, 100);  // the draft
+    std::vector<int> photons;
+    for (int frame = 0; frame < 6; ++frame) {
+      g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
+      photons.push_back(t.floor_light_computed() ? t.floor_light().stats.photons : 0);
+    }
+    return photons;
+  };
+  EXPECT_EQ(still_frames(0), (std::vector<int>{10000, 12500, 15000, 17500, 20000, 0}));
+  FloorLightSettings batch = s;
+  batch.photons = 2500;
+  FloorLightTrace trace(f, batch);
+  for (int b = 0; b < 8; ++b) trace.add_batch();
+  EXPECT_EQ(t.floor_light().change, trace.map().change);
+  EXPECT_EQ(still_frames(1e9), (std::vector<int>{20000, 0, 0, 0, 0, 0}));
+  EXPECT_EQ(t.floor_light().change, trace.map().change);
+  g.renderer->set_floor_refinement(0, 0);
+  g.renderer->set_floor_light(test_floor_light());  // as the other tests have it
+}
+
 // render.floor_photons: a scene may give its floor light's budget (an animation rendered
 // faster); 0 leaves the app's (here the GPU tests' 50,000); another budget, another map.
 TEST(SceneData, TheSceneMayGiveTheFloorLightsBudget) {
