@@ -113,6 +113,23 @@ BENCHMARK_CAPTURE(BM_FloorLight, droplets_web_draft, "droplets", kFloorPhotonsSt
 BENCHMARK_CAPTURE(BM_FloorLight, droplets_seed_still, "droplets-seed", kFloorPhotonsStill)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_FloorLight, gob_cooled_still, "gob-cooled", kFloorPhotonsStill)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// A still's map refined in the web page's batches (kFloorPhotonsStill / 500 photons, one
+// thread): a batch traced alone (the map merged later), and a batch with the map merged
+// after it, as each refining frame did before the merge waited for an upload.
+void BM_FloorLightBatch(benchmark::State& state, bool merge) {
+  const FrameState f = make_frame(resolve_scene_objects({"lager", "", {}, {}}));
+  FloorLightSettings s;
+  s.photons = kFloorPhotonsStill / 500;
+  s.threads = 1;
+  FloorLightTrace trace(f, s);
+  for (auto _ : state) {
+    trace.add_batch();
+    if (merge) benchmark::DoNotOptimize(trace.map());
+  }
+}
+BENCHMARK_CAPTURE(BM_FloorLightBatch, traced, false)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_FloorLightBatch, traced_and_merged, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // What the MatCap tier pays each frame to learn that its baked MatCap still holds: the
 // bake's key (the surroundings' and lights' parameters as text) against the last one.
 void BM_MatCapStillHolds(benchmark::State& state) {

@@ -476,7 +476,7 @@ void SceneTextures::clear_floor_light() {
 }
 
 void SceneTextures::update_floor_light(const FrameState& f) {
-  floor_computed_ = false;
+  floor_computed_ = floor_uploaded_ = false;
   // The scene's own budget (render.floor_photons) where it gives one, else the app's.
   FloorLightSettings full = floor_settings_;
   if (f.params.render.floor_photons > 0) full.photons = f.params.render.floor_photons;
@@ -532,6 +532,7 @@ void SceneTextures::update_floor_light(const FrameState& f) {
   if (!e.map.empty() && !e.tex) {  // (a refined entry made its texture as it began)
     const std::vector<glm::vec4> texels = pack_floor_light(e.map);
     e.tex = make_floor_texture(e.map.width, e.map.height, &texels[0].x);
+    floor_uploaded_ = true;
   }
   if (floor_cache_.size() == kFloorCache) {
     glDeleteTextures(1, &floor_cache_.back().tex);
@@ -552,8 +553,16 @@ void SceneTextures::refine_floor_light(FloorEntry& e, int min_batches) {
     e.refining->add_batch();
   }
   floor_computed_ = true;
+  // The texture takes the map when the batches have grown by an eighth since it last did
+  // (every batch at first, then every few: hundreds of small batches would otherwise
+  // merge, pack and upload the whole map hundreds of times for changes too small to see),
+  // and when the last batch is in.
+  const int batches = e.refining->batches();
+  if (e.batches_left > 0 && batches - e.uploaded_batches < std::max(1, e.uploaded_batches / 8)) return;
+  e.uploaded_batches = batches;
   const FloorLightMap& m = e.refining->map();
   if (!m.empty()) {
+    floor_uploaded_ = true;
     const std::vector<glm::vec4> texels = pack_floor_light(m);
     if (e.tex) {  // the same rect: the texels replaced
       glBindTexture(GL_TEXTURE_2D, e.tex);
@@ -576,8 +585,13 @@ const FloorLightMap& SceneTextures::floor_light() const {
   return floor_cache_.empty() ? none : floor_cache_.front().current();
 }
 
+const FloorLightMap& SceneTextures::floor_rect() const {
+  static const FloorLightMap none;
+  return floor_cache_.empty() ? none : floor_cache_.front().rect();
+}
+
 void SceneTextures::describe_floor_light(contract::FrameBlock& b) const {
-  const FloorLightMap& m = floor_light();
+  const FloorLightMap& m = floor_rect();
   b.floor_light_on = m.empty() ? 0 : 1;
   b.floor_light_origin = glm::vec2(m.origin);
   b.floor_light_size = glm::vec2(m.size);
@@ -589,7 +603,7 @@ void SceneTextures::bind() const {
   glActiveTexture(GL_TEXTURE0 + contract::kKnotsSampler.unit);
   glBindTexture(GL_TEXTURE_2D, knots_tex_);
   glActiveTexture(GL_TEXTURE0 + contract::kFloorLightSampler.unit);
-  glBindTexture(GL_TEXTURE_2D, floor_light().empty() ? neutral_tex_ : floor_cache_.front().tex);
+  glBindTexture(GL_TEXTURE_2D, floor_rect().empty() ? neutral_tex_ : floor_cache_.front().tex);
   glActiveTexture(GL_TEXTURE0 + contract::kBackdropLightSampler.unit);
   glBindTexture(GL_TEXTURE_2D, backdrop_light().empty() ? neutral_tex_ : backdrop_cache_.front().tex);
   glActiveTexture(GL_TEXTURE0 + contract::kEnvImageSampler.unit);

@@ -99,6 +99,8 @@ class SceneTextures {
   int knot_rows_uploaded() const { return knot_uploads_; }
   // Whether the last update computed and uploaded the floor's light map.
   bool floor_light_computed() const { return floor_computed_; }
+  // Whether it also put the map's texels in the texture (a refining map's every few batches).
+  bool floor_light_uploaded() const { return floor_uploaded_; }
   int capacity() const { return capacity_; }
   // The frame's object records as the last update packed them (one per glass).
   std::vector<contract::ObjectRecord> records() const;
@@ -124,8 +126,11 @@ class SceneTextures {
     bool draft = false;
     std::unique_ptr<FloorLightTrace> refining;  // a still's map still taking batches (the current entry only)
     int batches_left = 0;
+    int uploaded_batches = 0;  // the trace's batches the texture holds
     // The map, in the trace while it refines (not copied out each batch).
     const FloorLightMap& current() const { return refining ? refining->map() : map; }
+    // Its rect, with no merge of a refining trace's lanes (what each frame needs).
+    const FloorLightMap& rect() const { return refining ? refining->last_merged() : map; }
     // No more batches: it keeps what it has.
     void settle() {
       if (refining) map = refining->release();
@@ -133,6 +138,7 @@ class SceneTextures {
     }
   };
   void refine_floor_light(FloorEntry&, int min_batches);
+  const FloorLightMap& floor_rect() const;  // the current map's rect, merging nothing
   static constexpr size_t kFloorCache = 6;
   std::vector<FloorEntry> floor_cache_;
   unsigned neutral_tex_ = 0;  // one texel of factor 1, bound when there is no map
@@ -156,7 +162,7 @@ class SceneTextures {
   bool backdrop_computed_ = false;
   bool backdrop_drafts_ = false;
   std::vector<double> backdrop_last_inputs_;  // the picture's own map's inputs at the last update
-  bool floor_on_ = true, floor_computed_ = false;
+  bool floor_on_ = true, floor_computed_ = false, floor_uploaded_ = false;
   int draft_photons_ = 0;
   int refine_batch_photons_ = 0;   // 0: the draft's
   double refine_ms_per_frame_ = 0;  // 0: one batch a frame

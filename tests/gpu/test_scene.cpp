@@ -256,6 +256,31 @@ TEST(SceneData, TheFloorLightRefinesInSmallerBatchesWithinATimeBudget) {
   g.renderer->set_floor_light(test_floor_light());  // as the other tests have it
 }
 
+// Hundreds of small batches: every frame's map (on the CPU) holds every batch so far, but
+// the texture takes it only when the batches have grown by an eighth since it last did
+// (every batch at first), and when the last is in.
+TEST(SceneData, ARefiningFloorLightIsUploadedWhenItHasGrownByAnEighth) {
+  Gpu& g = gpu_instance();
+  FloorLightSettings s = test_floor_light();
+  s.photons = 40000;
+  FrameState f = scene_frame({"lager", "pint", {}, {}});
+  const gpu::SceneTextures& t = g.renderer->scene_textures();
+  g.renderer->set_floor_light(s, true, 5000);  // (an empty cache: the first frame drafts)
+  g.renderer->set_floor_refinement(1000, 0);     // one batch a frame after the first's ten
+  g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
+  EXPECT_TRUE(t.floor_light_uploaded());  // the draft
+  std::vector<int> uploaded_at;
+  for (int frame = 0; frame < 32; ++frame) {
+    g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
+    const int batches = t.floor_light_computed() ? t.floor_light().stats.photons / 1000 : 0;  // (about 1000 each)
+    EXPECT_EQ(batches, frame < 31 ? 10 + frame : 0) << "frame " << frame;
+    if (t.floor_light_uploaded()) uploaded_at.push_back(batches);
+  }
+  EXPECT_EQ(uploaded_at, (std::vector<int>{10, 11, 12, 13, 14, 15, 16, 18, 20, 22, 24, 27, 30, 33, 37, 40}));
+  g.renderer->set_floor_refinement(0, 0);
+  g.renderer->set_floor_light(test_floor_light());  // as the other tests have it
+}
+
 // render.floor_photons: a scene may give its floor light's budget (an animation rendered
 // faster); 0 leaves the app's (here the GPU tests' 50,000); another budget, another map.
 TEST(SceneData, TheSceneMayGiveTheFloorLightsBudget) {

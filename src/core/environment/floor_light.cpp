@@ -514,6 +514,7 @@ struct FloorLightTrace::State {
   std::vector<Lane> lanes;                          // sums over the batches so far
   std::unique_ptr<OpenLightLattice> lattice;
   int batches = 0;
+  int merged = 0;  // the batches the map holds
   double seconds = 0;
 
   int threads() const {
@@ -528,6 +529,8 @@ struct FloorLightTrace::State {
     f(0);
     for (std::thread& t : pool) t.join();
   }
+
+  void merge();  // the lanes into the map, if batches came since the last merge
 
   // Photon i of pair (l, g) in batch b: a point on light l, a direction in g's cone. The
   // weight is the balance heuristic over every target's cone from that point, so directions
@@ -618,8 +621,13 @@ FloorLightTrace::FloorLightTrace(const FrameState& f, const FloorLightSettings& 
 FloorLightTrace::~FloorLightTrace() = default;
 
 int FloorLightTrace::batches() const { return state_->batches; }
-const FloorLightMap& FloorLightTrace::map() const { return state_->map; }
+const FloorLightMap& FloorLightTrace::map() const {
+  state_->merge();
+  return state_->map;
+}
+const FloorLightMap& FloorLightTrace::last_merged() const { return state_->map; }
 FloorLightMap FloorLightTrace::release() {
+  state_->merge();
   FloorLightMap m = std::move(state_->map);
   state_->map = {};  // empty: add_batch does nothing more
   return m;
@@ -643,28 +651,35 @@ void FloorLightTrace::add_batch() {
     for (int l = t; l < kLanes; l += threads)
       for (long long k = l; k < total; k += kLanes) st.photon(b, k, st.lanes[size_t(l)]);
   });
+  st.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
+void FloorLightTrace::State::merge() {
+  if (map.empty() || merged == batches) return;
+  const auto start = std::chrono::steady_clock::now();
+  merged = batches;
+  const long long total = first.back();
   // The mean change over the batches, the lanes summed in a fixed order, and the factor the
   // picture reads: where a photon changed the light, over the unoccluded light there (noise
   // may dip below zero).
-  FloorLightMap& map = st.map;
-  const double per = 1.0 / st.batches;
-  st.in_parallel([&](int t) {
-    for (int j = t; j < map.height; j += threads)
+  const double per = 1.0 / batches;
+  const int n = threads();
+  in_parallel([&](int t) {
+    for (int j = t; j < map.height; j += n)
       for (int i = 0; i < map.width; ++i) {
         const size_t at = size_t(j) * size_t(map.width) + size_t(i);
         glm::dvec3 change(0.0);
-        for (const Lane& lane : st.lanes) change += lane.change[at];
+        for (const Lane& lane : lanes) change += lane.change[at];
         if (change == glm::dvec3(0.0)) continue;
         change *= per;
         map.change[at] = glm::vec3(change);
-        const glm::dvec3 open = st.lattice->at(i, j);
+        const glm::dvec3 open = lattice->at(i, j);
         for (int c = 0; c < 3; ++c)
           if (open[c] > 1e-9) map.factor[at][c] = float(std::max(open[c] + change[c], 0.0) / open[c]);
       }
   });
   map.stats = {};
-  for (const Lane& lane : st.lanes) {
+  for (const Lane& lane : lanes) {
     map.stats.hit += lane.stats.hit * per;
     map.stats.landed += lane.stats.landed * per;
     map.stats.removed += lane.stats.removed * per;
@@ -672,9 +687,9 @@ void FloorLightTrace::add_batch() {
     map.stats.escaped += lane.stats.escaped * per;
     map.stats.outside += lane.stats.outside * per;
   }
-  map.stats.photons = int(std::min<long long>(total * st.batches, std::numeric_limits<int>::max()));
-  st.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  map.stats.seconds = st.seconds;
+  map.stats.photons = int(std::min<long long>(total * batches, std::numeric_limits<int>::max()));
+  seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  map.stats.seconds = seconds;
 }
 
 FloorLightMap compute_floor_light(const FrameState& f, const FloorLightSettings& s) {

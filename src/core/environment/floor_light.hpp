@@ -109,7 +109,9 @@ FloorLightMap compute_floor_light(const FrameState&, const FloorLightSettings& =
 // stall one: each batch an estimate of its own with settings.photons photons (each pair's
 // Halton sequence going on where the last batch stopped), the map the mean of the batches
 // so far (its stats the means too, stats.photons the count traced). One batch is
-// compute_floor_light's map. Keeps a copy of the frame.
+// compute_floor_light's map. Keeps a copy of the frame. A batch only traces: the lanes
+// it added to are merged into the map when the map is next asked for, so an app that
+// shows every few batches pays for a merge (a pass over every texel) only then.
 class FloorLightTrace {
  public:
   FloorLightTrace(const FrameState&, const FloorLightSettings&);
@@ -119,7 +121,10 @@ class FloorLightTrace {
 
   void add_batch();
   int batches() const;
-  const FloorLightMap& map() const;
+  const FloorLightMap& map() const;  // the mean of every batch so far (merged if it is not)
+  // The map as last merged, with no merge: its rect (origin, size, texels) is the trace's
+  // from the start, for what needs only that each frame.
+  const FloorLightMap& last_merged() const;
   FloorLightMap release();  // the map, moved out: the trace takes no more batches
 
  private:
