@@ -16,6 +16,11 @@ constexpr double kRingWidth = 0.45;
 // Beyond this many ring widths a ring adds less than 2e-4 (exp(-9)): it no longer counts
 // towards another bubble's bound.
 constexpr double kRingReach = 3.0;
+// Beyond this many ring widths 1 + gain exp(-ring^2) rounds to exactly 1 in double
+// (1.8 exp(-40) = 7.6e-18, under half of 1's ulp, 1.1e-16): skipping it changes nothing.
+// 4 radii from the centre is 6.67 widths out, beyond it.
+constexpr double kRingSkip = 6.33;
+static_assert(kRingSkip * kRingSkip > 40 && 1 + kRingSkip * kRingWidth < 4);
 // Bubbles at the liquid are 1 + kGrowth times their size at the top; the top is soft over
 // kSoftTop of the thickness (FOAM_GROWTH and FOAM_SOFT_TOP in shaders/lib/foam/head.glsl).
 constexpr double kGrowth = 1.5;
@@ -94,10 +99,15 @@ double HeadVolume::density(const glm::dvec3& p) const {
   double d = density_ / grow * std::max(1 + 1.6 * detail_ * (value_noise(glm::vec3(p / (bubble_size_ * grow))) - 0.5), 0.0);
   d *= std::clamp((top - height) / (kSoftTop * top), 0.0, 1.0);
   for (const PlacedBubble& b : bubbles_) {
-    const double dist = glm::length(p - b.centre);
+    // A ring farther than kRingSkip widths multiplies d by exactly 1 (below): a bubble more
+    // than 4 radii away is passed over without its square root or its exp (whose
+    // underflow, for the far ones, took libm's slow path).
+    const glm::dvec3 q = p - b.centre;
+    if (glm::dot(q, q) > 16 * b.radius * b.radius) continue;
+    const double dist = glm::length(q);
     if (dist < b.radius) return 0;  // inside a big bubble, or the void a popped one left
     const double ring = (dist - b.radius) / (kRingWidth * b.radius);
-    d *= 1 + ring_gain(b) * std::exp(-ring * ring);
+    if (ring < kRingSkip) d *= 1 + ring_gain(b) * std::exp(-ring * ring);
   }
   return d;
 }

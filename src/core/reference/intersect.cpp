@@ -156,7 +156,26 @@ Hit hit_wall(const Vessel& v, bool inner, const Ray& ray, double tmin) {
   int k0 = std::clamp(int(std::floor(ray.at(t0).y / v.dy)), 0, last);
   int k1 = std::clamp(int(std::floor(ray.at(t1).y / v.dy)), 0, last);
   const int step = k1 >= k0 ? 1 : -1;
+  // Where the ray's line is well inside the wall at both of a segment's knot heights, it
+  // is inside along the whole segment (its distance from the axis is convex along the
+  // line, the frustum's radius linear), so that frustum is passed over unsolved: a path
+  // down through a drink walks many such segments.
+  const bool steep = std::fabs(ray.d.y) > 1e-6;
+  const double inv_dy = steep ? 1 / ray.d.y : 0.0;
+  auto well_inside = [&](int knot) {
+    const double t = (knot * v.dy - ray.o.y) * inv_dy;
+    const double x = ray.o.x + t * ray.d.x, z = ray.o.z + t * ray.d.z, r = knots[size_t(knot)];
+    return x * x + z * z < r * r * (1 - 1e-6);
+  };
+  bool inside_at_k = steep && well_inside(step > 0 ? k0 : k0 + 1);  // the knot the walk enters the segment at
   for (int k = k0;; k += step) {
+    const bool inside_next = steep && well_inside(step > 0 ? k + 1 : k);
+    const bool skip = inside_at_k && inside_next;
+    inside_at_k = inside_next;
+    if (skip) {
+      if (k == k1) break;
+      continue;
+    }
     double ts[2];
     int n = intersect_cone(ray, knots[size_t(k)], knots[size_t(k) + 1], k * v.dy, (k + 1) * v.dy, tmin, ts);
     for (int i = 0; i < n; ++i) {

@@ -816,6 +816,50 @@ TEST(VesselHits, HitWallIsOnTheWallAndFirst) {
   }
 }
 
+// hit_wall passes over the frustums the ray's line is well inside of at both knots; the
+// hit must be exactly the nearest root every frustum gives (intersect_cone on each, the
+// same checks), for paths down and up through the drink, steep and shallow, in a
+// straight pint, a tulip's bowl and a wine glass's.
+TEST(VesselHits, HitWallFromInsideTheCavityIsTheNearestFrustumRoot) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (const char* glass : {"pint", "tulip", "wine"}) {
+    const Vessel v = test::preset_vessel(glass);
+    for (bool inner : {true, false}) {
+      const auto& knots = inner ? v.r_inner : v.r_outer;
+      const double ylo = inner ? v.base : 0.0;
+      int hits = 0;
+      for (int trial = 0; trial < 3000; ++trial) {
+        const double y = v.base + (v.height - v.base) * (0.02 + 0.96 * u(rng));
+        const double r = v.inner_radius(y) * std::sqrt(u(rng)) * 0.98, phi = 2 * M_PI * u(rng);
+        const dvec3 o(r * std::cos(phi), y, r * std::sin(phi));
+        const double dy = (trial % 2 ? -1.0 : 1.0) * (trial % 3 == 0 ? 0.05 + 0.2 * u(rng) : 0.3 + 0.7 * u(rng));
+        const double a = 2 * M_PI * u(rng), h = std::sqrt(1 - dy * dy);
+        const Ray ray{o, dvec3(h * std::cos(a), dy, h * std::sin(a))};
+        double nearest = std::numeric_limits<double>::infinity();
+        for (int k = 0; k < Vessel::kSegments; ++k) {
+          double ts[2];
+          const int n = intersect_cone(ray, knots[size_t(k)], knots[size_t(k) + 1], k * v.dy, (k + 1) * v.dy, 1e-7, ts);
+          for (int i = 0; i < n; ++i) {
+            const dvec3 p = ray.at(ts[i]);
+            if (p.y < ylo || p.y > v.height || v.inside_torus(std::hypot(p.x, p.z), p.y)) continue;
+            nearest = std::min(nearest, ts[i]);
+          }
+        }
+        const Hit hit = hit_wall(v, inner, ray, 1e-7);
+        if (std::isinf(nearest)) {
+          EXPECT_FALSE(hit.valid()) << glass << " inner=" << inner << " trial " << trial;
+        } else {
+          ++hits;
+          ASSERT_TRUE(hit.valid()) << glass << " inner=" << inner << " trial " << trial;
+          EXPECT_EQ(hit.t, nearest) << glass << " inner=" << inner << " trial " << trial;
+        }
+      }
+      EXPECT_GT(hits, 1000) << glass << " inner=" << inner;
+    }
+  }
+}
+
 TEST(VesselHits, HitRimIsOnTheTorusAndFirst) {
   std::mt19937 rng(24);
   const Vessel v = test::preset_vessel("pint");
