@@ -79,18 +79,6 @@ Cone cone_towards(const Target& g, const glm::dvec3& x) {
 }
 
 // Everything the photons need of one vessel.
-struct Medium {
-  glm::dquat to_local;
-  glm::dvec3 position{0.0};
-  double glass_ior = 1.5, liquid_ior = 1.33;
-  glm::dvec3 glass_absorption{0.0};
-  DrinkMedium drink;
-  glm::dvec3 local_point(const glm::dvec3& p) const { return to_local * (p - position); }
-  double ior(MediumKind m) const {
-    return m == MediumKind::Glass ? glass_ior : (m == MediumKind::Liquid ? liquid_ior : 1.0);
-  }
-};
-
 // One accumulation buffer of the change (W/m^2 per channel).
 struct Lane {
   std::vector<glm::dvec3> change;
@@ -111,19 +99,7 @@ class PhotonTracer {
     for (size_t i = 0; i < frames_.size(); ++i) {
       geo_.vessels[i].vessel = &frames_[i].vessel;
       heads_.emplace_back(frames_[i], geo_.vessels[i]);
-      const VesselFrame& vf = frames_[i];
-      Medium m;
-      m.to_local = glm::inverse(vf.pose.orientation);
-      m.position = vf.pose.position;
-      m.glass_ior = vf.params.glass.ior;
-      m.liquid_ior = vf.params.liquid.ior;
-      m.glass_absorption = glm::dvec3(vf.params.glass.absorption);
-      // As the path tracer: the drink's colour and the haze, of which the haze colour scatters.
-      m.drink.colour = vf.liquid_absorption;
-      const double haze = vf.params.liquid.haze;
-      m.drink.haze = haze * glm::dvec3(vf.params.liquid.haze_color);
-      m.drink.haze_absorption = glm::dvec3(haze) - m.drink.haze;
-      media_.push_back(m);
+      media_.push_back(vessel_optics(frames_[i]));
     }
   }
 
@@ -206,7 +182,7 @@ class PhotonTracer {
         lane.stats.absorbed += untinted - power;  // a cloud point's colour, where it crossed
         continue;
       }
-      const Medium& m = media_[size_t(h.object)];
+      const VesselOptics& m = media_[size_t(h.object)];
       const VesselGeometry& vg = geo_.vessels[size_t(h.object)];
       const bool below = vg.liquid.below(m.local_point(p));
       const MediumKind next = medium_across(h.m, medium, below);
@@ -272,7 +248,7 @@ class PhotonTracer {
     for (size_t i = 0; i < heads_.size(); ++i) {
       const HeadVolume& head = heads_[i];
       if (head.empty()) continue;
-      const Medium& m = media_[i];
+      const VesselOptics& m = media_[i];
       const glm::dvec3 o = m.local_point(ray.o), d = m.to_local * ray.d;
       double t0 = 0, t1 = t_end;
       if (!head.interval(o, d, t0, t1)) continue;
@@ -286,7 +262,7 @@ class PhotonTracer {
   SceneGeometry geo_;
   MarchedBodies bodies_;  // the droplets and the clouds: their shadows and caustics too
   std::vector<HeadVolume> heads_;
-  std::vector<Medium> media_;
+  std::vector<VesselOptics> media_;
   const FloorLightMap& map_;
 };
 

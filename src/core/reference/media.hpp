@@ -2,8 +2,10 @@
 // medium_across() in shaders/lib/vessel/media.glsl; tests/gpu probes compare the two.
 #pragma once
 
+#include "core/reference/free_flight.hpp"
 #include "core/reference/intersect.hpp"
 #include "core/reference/optics.hpp"
+#include "core/scene/frame.hpp"
 
 namespace draught {
 
@@ -24,6 +26,38 @@ constexpr MediumKind medium_across(Material m, MediumKind from, bool below_liqui
   if (from != MediumKind::Glass) return MediumKind::Glass;
   if (m == Material::GlassInner || m == Material::CavityFloor) return below_liquid ? MediumKind::Liquid : MediumKind::Air;
   return MediumKind::Air;
+}
+
+// A glass and its drink as paths and photons cross them (the reference path tracer's and
+// the floor's photons'): the glass's frame, the indices, the glass's absorption and the
+// drink's, as the picture's medium_transmittance and haze_inscatter take them (its
+// colour and the haze; of the haze, the haze colour scatters and the rest absorbs).
+struct VesselOptics {
+  glm::dquat to_local, to_world;
+  glm::dvec3 position{0.0};
+  double glass_ior = 1.5, liquid_ior = 1.33;
+  glm::dvec3 glass_absorption{0.0};
+  DrinkMedium drink;
+  glm::dvec3 local_point(const glm::dvec3& p) const { return to_local * (p - position); }
+  glm::dvec3 local_dir(const glm::dvec3& d) const { return to_local * d; }
+  double ior(MediumKind m) const {
+    return m == MediumKind::Glass ? glass_ior : (m == MediumKind::Liquid ? liquid_ior : 1.0);
+  }
+};
+
+inline VesselOptics vessel_optics(const VesselFrame& vf) {
+  VesselOptics m;
+  m.to_world = vf.pose.orientation;
+  m.to_local = glm::inverse(vf.pose.orientation);
+  m.position = vf.pose.position;
+  m.glass_ior = vf.params.glass.ior;
+  m.liquid_ior = vf.params.liquid.ior;
+  m.glass_absorption = glm::dvec3(vf.params.glass.absorption);
+  m.drink.colour = vf.liquid_absorption;
+  const double haze = vf.params.liquid.haze;
+  m.drink.haze = haze * glm::dvec3(vf.params.liquid.haze_color);
+  m.drink.haze_absorption = glm::dvec3(haze) - m.drink.haze;
+  return m;
 }
 
 // Fresnel's choice at a smooth interface for a path (or a photon) at its point (n: the

@@ -58,12 +58,9 @@ glm::dvec3 sample_hg(const glm::dvec3& d, double g, Rng& rng) {
 double power_weight(double a, double b) { return a * a / (a * a + b * b); }
 
 // Everything the tracer needs of one vessel, prepared once per frame.
-struct VesselMedia {
-  glm::dquat to_local, to_world;
-  glm::dvec3 position{0.0};
-  double glass_ior = 1.5, liquid_ior = 1.33;
-  glm::dvec3 glass_absorption{0.0};
-  DrinkMedium drink;
+// A glass and its drink (VesselOptics) and what only paths see of them: the head's
+// albedo and phase, and the beads and fog of condensation.
+struct VesselMedia : VesselOptics {
   glm::dvec3 foam_albedo{1.0};
   double foam_g = 0;
   // Condensation on the outer wall (null: a dry glass): the picture's bead grid and fog
@@ -71,11 +68,6 @@ struct VesselMedia {
   std::shared_ptr<const CondensationState> cold;
   std::vector<glm::vec4> beads;
   std::vector<std::uint8_t> fog;
-  glm::dvec3 local_point(const glm::dvec3& p) const { return to_local * (p - position); }
-  glm::dvec3 local_dir(const glm::dvec3& d) const { return to_local * d; }
-  double ior(MediumKind m) const {
-    return m == MediumKind::Glass ? glass_ior : (m == MediumKind::Liquid ? liquid_ior : 1.0);
-  }
 };
 
 // Where the last vertex that sampled the lights was, so a path that then meets a light
@@ -104,18 +96,7 @@ class Tracer {
       const VesselFrame& vf = f.vessels[i];
       heads_.emplace_back(vf, geo_.vessels[i]);
       VesselMedia m;
-      m.to_world = vf.pose.orientation;
-      m.to_local = glm::inverse(vf.pose.orientation);
-      m.position = vf.pose.position;
-      m.glass_ior = vf.params.glass.ior;
-      m.liquid_ior = vf.params.liquid.ior;
-      m.glass_absorption = glm::dvec3(vf.params.glass.absorption);
-      // As the picture's medium_transmittance and haze_inscatter: extinction is the
-      // drink's colour and the haze; of the haze, the haze colour scatters and the rest absorbs.
-      m.drink.colour = vf.liquid_absorption;
-      const double haze = vf.params.liquid.haze;
-      m.drink.haze = haze * glm::dvec3(vf.params.liquid.haze_color);
-      m.drink.haze_absorption = glm::dvec3(haze) - m.drink.haze;
+      static_cast<VesselOptics&>(m) = vessel_optics(vf);
       // foam.color is the colour a deep head shows: its reflectance, not one scattering's.
       m.foam_albedo = foam_single_scattering_albedo(glm::dvec3(vf.params.foam.color), vf.params.foam.anisotropy);
       m.foam_g = vf.params.foam.anisotropy;
