@@ -7,6 +7,7 @@
 #include "core/scene/frame.hpp"
 #include "core/scene/motion.hpp"
 #include "core/input/combined.hpp"
+#include "core/liquid/beverage.hpp"
 #include "core/params/params.hpp"
 #include "core/params/preset.hpp"
 #include "core/params/timeline.hpp"
@@ -413,6 +414,20 @@ EMSCRIPTEN_KEEPALIVE const char* draught_param_values() {
   if (app && !app->scene.objects.empty()) {
     const Params doc = vessel_document(app->scene, app->scene.selected);
     for (const ParamDesc& d : param_table()) out[d.path] = format_param(d, get_param(doc, d));
+  }
+  return answer_json(out);
+}
+
+// What the panel says beside rows whose value is not what is in effect, {path: note}: the
+// selected object's drink colour rows (core drink_colour_note), the empty ones left out.
+EMSCRIPTEN_KEEPALIVE const char* draught_param_notes() {
+  json out = json::object();
+  if (app && !app->scene.objects.empty()) {
+    const Params doc = vessel_document(app->scene, app->scene.selected);
+    for (const char* field : {"ebc", "srm", "wine", "absorption"}) {
+      const std::string note = drink_colour_note(doc.liquid, field);
+      if (!note.empty()) out[std::string("liquid.") + field] = note;
+    }
   }
   return answer_json(out);
 }

@@ -132,6 +132,7 @@
       presets: fn('draught_presets', 'json'),
       table: fn('draught_param_table', 'json'),
       values: fn('draught_param_values', 'json'),
+      notes: fn('draught_param_notes', 'json'),
       setParam: fn('draught_set_param', 'string', ['string', 'string']),
       getParam: fn('draught_get_param', 'json', ['string']),
       objects: fn('draught_objects', 'json'),
@@ -383,6 +384,13 @@
       if (path in values) c.show(values[path]);
       c.error('');
     }
+    refreshNotes();
+  }
+  // Beside a row whose value is not the one in effect, what is (the drink's colour: an
+  // EBC of 0 beside an SRM of 3.5 says "in effect: 6.89 (from SRM)").
+  function refreshNotes() {
+    const notes = JSON.parse(api.notes());
+    for (const [path, c] of controls) c.note(notes[path] || '');
   }
 
   // Values go to the module once per animation frame (sliders fire faster than that), to the
@@ -405,6 +413,7 @@
       else if ($('message').classList.contains('error')) say('');
     }
     pending.clear();
+    refreshNotes();
   }
   // For tests and the console: any path the module takes ("objects[1].liquid.fill" too).
   page.setParam = (path, text) => {
@@ -427,7 +436,9 @@
     control.className = 'control';
     const err = document.createElement('div');
     err.className = 'err';
-    row.append(label, control, err);
+    const note = document.createElement('div');
+    note.className = 'note';
+    row.append(label, control, note, err);
     const input = (type, cls) => {
       const i = document.createElement('input');
       i.type = type;
@@ -527,6 +538,7 @@
     controls.set(d.path, {
       desc: d,
       show,
+      note: (text) => (note.textContent = text),
       error: (e) => {
         err.textContent = e;
         row.classList.toggle('bad', !!e);

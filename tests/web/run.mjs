@@ -101,6 +101,20 @@ test('the parameter panel comes from the table; bad values are refused with a me
   await page.dispatchEvent('#p-liquid-fill', 'change');
   await page.waitForFunction(() => JSON.parse(window.draught.api.values())['liquid.fill'] === '0.5');
   assert.equal(await page.textContent('.param[data-path="liquid.fill"] .err'), '');
+
+  // The drink's colour rows say which is in effect: the lager's SRM 3.5, shown as EBC
+  // beside an EBC of 0; an EBC typed in takes over, and the SRM row says so.
+  const note = (path) => page.textContent(`.param[data-path="${path}"] .note`);
+  assert.equal(await note('liquid.srm'), '');
+  assert.equal(await note('liquid.ebc'), 'in effect: 6.89 (from SRM)');
+  assert.equal(await note('liquid.wine'), 'unused: SRM in effect');
+  await page.fill('#p-liquid-ebc', '20');
+  await page.dispatchEvent('#p-liquid-ebc', 'change');
+  await page.waitForFunction(() => document.querySelector('.param[data-path="liquid.ebc"] .note').textContent === '');
+  assert.equal(await note('liquid.srm'), 'in effect: 10.2 (from EBC)');
+  assert.equal(await note('liquid.absorption'), 'unused: EBC in effect');
+  assert.equal(await page.evaluate(() => window.draught.setParam('liquid.ebc', '0')), '');
+  assert.equal(await note('liquid.ebc'), 'in effect: 6.89 (from SRM)');
 });
 
 test('switching preset changes the picture', async () => {

@@ -1,6 +1,7 @@
 #include "core/liquid/beverage.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -256,6 +257,21 @@ DrinkAbsorption drink_absorption(const LiquidParams& l) {
 glm::vec3 liquid_absorption(const LiquidParams& l, double metres) {
   const auto spectrum = drink_spectrum(l);
   return spectrum ? spectrum_to_absorption(spectrum, metres) : l.absorption;
+}
+
+std::string drink_colour_note(const LiquidParams& l, std::string_view field) {
+  const bool wine = l.wine.x > 0 || l.wine.y > 0 || l.wine.z > 0;
+  const std::string_view used = l.ebc > 0 ? "ebc" : l.srm > 0 ? "srm" : wine ? "wine" : "absorption";
+  if (field == used || (field != "ebc" && field != "srm" && field != "wine" && field != "absorption")) return "";
+  auto number = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", x);
+    return std::string(text);
+  };
+  if (field == "ebc" && used == "srm") return "in effect: " + number(kEbcPerSrm * l.srm) + " (from SRM)";
+  if (field == "srm" && used == "ebc") return "in effect: " + number(ebc_to_srm(l.ebc)) + " (from EBC)";
+  const char* name = used == "ebc" ? "EBC" : used == "srm" ? "SRM" : used == "wine" ? "the wine colour" : "the absorption";
+  return std::string("unused: ") + name + " in effect";
 }
 
 }  // namespace draught

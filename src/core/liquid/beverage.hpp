@@ -28,6 +28,8 @@
 #include "core/params/params.hpp"
 
 #include <functional>
+#include <string>
+#include <string_view>
 
 namespace draught {
 
@@ -106,5 +108,11 @@ DrinkAbsorption drink_absorption(const LiquidParams&);
 // light over a path of its own thickness, where the glassful's coefficients would make a
 // red wine orange (its channels' spectra are far from flat).
 glm::vec3 liquid_absorption(const LiquidParams&, double metres = kColourPathMetres);
+
+// For panels: which of the drink's four colour rows (liquid.ebc, srm, wine, absorption:
+// `field` is the part after "liquid.") is in effect, the first given winning as in
+// drink_spectrum, said beside the rows that are not: "" for the row in effect; an unset
+// EBC beside an SRM of 3.5 reads "in effect: 6.9 (from SRM)", not as a colourless beer.
+std::string drink_colour_note(const LiquidParams&, std::string_view field);
 
 }  // namespace draught

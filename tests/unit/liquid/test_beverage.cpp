@@ -282,5 +282,29 @@ TEST(Beverage, ShippedBeersDarkenWithTheirColour) {
   }
 }
 
+// Panels say beside each colour row what is in effect when it is not: the first colour
+// given wins (EBC, SRM, wine, absorption), and an unset EBC shows the SRM's as EBC.
+TEST(DrinkColourNote, SaysWhichColourIsInEffect) {
+  LiquidParams l;  // the default: SRM 4, no EBC, no wine
+  EXPECT_EQ(drink_colour_note(l, "srm"), "");
+  EXPECT_EQ(drink_colour_note(l, "ebc"), "in effect: 7.87 (from SRM)");
+  EXPECT_EQ(drink_colour_note(l, "wine"), "unused: SRM in effect");
+  EXPECT_EQ(drink_colour_note(l, "absorption"), "unused: SRM in effect");
+  EXPECT_EQ(drink_colour_note(l, "haze"), "");
+  l.ebc = 20;
+  EXPECT_EQ(drink_colour_note(l, "ebc"), "");
+  EXPECT_EQ(drink_colour_note(l, "srm"), "in effect: 10.2 (from EBC)");
+  EXPECT_EQ(drink_colour_note(l, "wine"), "unused: EBC in effect");
+  l.ebc = 0;
+  l.srm = 0;
+  l.wine = {1.2f, 1.5f, 0.4f};
+  EXPECT_EQ(drink_colour_note(l, "wine"), "");
+  EXPECT_EQ(drink_colour_note(l, "srm"), "unused: the wine colour in effect");
+  EXPECT_EQ(drink_colour_note(l, "absorption"), "unused: the wine colour in effect");
+  l.wine = glm::vec3(0.0f);
+  EXPECT_EQ(drink_colour_note(l, "absorption"), "");
+  EXPECT_EQ(drink_colour_note(l, "ebc"), "unused: the absorption in effect");
+}
+
 }  // namespace
 }  // namespace draught
