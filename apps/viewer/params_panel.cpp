@@ -180,8 +180,9 @@ bool widget(Row r, ParamsPanelState& s) {
   // Beside the drink's colour rows, what is in effect where this row is not (core
   // drink_colour_note, as the web page's panel): an EBC of 0 beside an SRM of 3.5 is not
   // a colourless beer.
-  if (d.path == "liquid.srm" || d.path == "liquid.ebc" || d.path == "liquid.wine" || d.path == "liquid.absorption") {
-    const std::string note = drink_colour_note(vessel_document(r.scene, r.ref.object).liquid, d.path.substr(7));
+  for (std::string_view field : kDrinkColourFields) {
+    if (d.path != "liquid." + std::string(field)) continue;
+    const std::string note = drink_colour_note(vessel_document(r.scene, r.ref.object).liquid, field);
     if (!note.empty()) ImGui::TextDisabled("  %s", note.c_str());
   }
   return changed;

@@ -424,9 +424,9 @@ EMSCRIPTEN_KEEPALIVE const char* draught_param_notes() {
   json out = json::object();
   if (app && !app->scene.objects.empty()) {
     const Params doc = vessel_document(app->scene, app->scene.selected);
-    for (const char* field : {"ebc", "srm", "wine", "absorption"}) {
+    for (std::string_view field : kDrinkColourFields) {
       const std::string note = drink_colour_note(doc.liquid, field);
-      if (!note.empty()) out[std::string("liquid.") + field] = note;
+      if (!note.empty()) out["liquid." + std::string(field)] = note;
     }
   }
   return answer_json(out);

@@ -186,6 +186,25 @@ TEST(SceneData, UploadsOnlyWhatChanged) {
   EXPECT_EQ(g.renderer->scene_textures().knot_rows_uploaded(), 1);
 }
 
+// An interactive app's floor light for one test: drafts of `draft` photons while the scene
+// moves, a still's map refined in batches of `batch` photons within `ms` a frame (0, 0:
+// the draft's, one a frame). The GPU tests' own (test_floor_light, no drafts) comes back
+// when the test ends, however it ends. Setting it empties the cache: the next frame drafts.
+struct AppFloorLight {
+  gpu::Renderer& renderer;
+  AppFloorLight(gpu::Renderer& r, const FloorLightSettings& s, int draft, int batch = 0, double ms = 0) : renderer(r) {
+    set(s, draft, batch, ms);
+  }
+  void set(const FloorLightSettings& s, int draft, int batch = 0, double ms = 0) {
+    renderer.set_floor_light(s, true, draft);
+    renderer.set_floor_refinement(batch, ms);
+  }
+  ~AppFloorLight() {
+    renderer.set_floor_refinement(0, 0);
+    renderer.set_floor_light(test_floor_light());
+  }
+};
+
 // An interactive app's floor light: a draft (few photons, texels twice as wide) every other
 // frame while the scene moves; once it holds still, the full map in batches of the draft's
 // photons, one a frame (two the first), ending at the full budget with the map one trace
@@ -194,7 +213,7 @@ TEST(SceneData, TheFloorLightIsRefinedInBatchesOnceStill) {
   Gpu& g = gpu_instance();
   FloorLightSettings s = test_floor_light();
   s.photons = 20000;
-  g.renderer->set_floor_light(s, true, 5000);
+  const AppFloorLight app(*g.renderer, s, 5000);
   FrameState f = scene_frame({"lager", "pint", {}, {}});
   const gpu::SceneTextures& t = g.renderer->scene_textures();
   std::vector<bool> moving;
@@ -219,7 +238,6 @@ TEST(SceneData, TheFloorLightIsRefinedInBatchesOnceStill) {
   for (int b = 0; b < 4; ++b) trace.add_batch();
   EXPECT_EQ(widths[5], trace.map().width);
   EXPECT_EQ(t.floor_light().change, trace.map().change);
-  g.renderer->set_floor_light(test_floor_light());  // as the other tests have it
 }
 
 // Batches smaller than the draft's (the web page's): two drafts' worth the first frame it
@@ -232,9 +250,9 @@ TEST(SceneData, TheFloorLightRefinesInSmallerBatchesWithinATimeBudget) {
   s.photons = 20000;
   FrameState f = scene_frame({"lager", "pint", {}, {}});
   const gpu::SceneTextures& t = g.renderer->scene_textures();
+  AppFloorLight app(*g.renderer, s, 5000);
   auto still_frames = [&](double ms_per_frame) {
-    g.renderer->set_floor_light(s, true, 5000);  // (an empty cache: the first frame drafts)
-    g.renderer->set_floor_refinement(2500, ms_per_frame);
+    app.set(s, 5000, 2500, ms_per_frame);  // (an empty cache: the first frame drafts)
     g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
     EXPECT_NEAR(t.floor_light().stats.photons, 5000, 100);  // the draft
     std::vector<int> photons;
@@ -252,8 +270,6 @@ TEST(SceneData, TheFloorLightRefinesInSmallerBatchesWithinATimeBudget) {
   EXPECT_EQ(t.floor_light().change, trace.map().change);
   EXPECT_EQ(still_frames(1e9), (std::vector<int>{20000, 0, 0, 0, 0, 0}));
   EXPECT_EQ(t.floor_light().change, trace.map().change);
-  g.renderer->set_floor_refinement(0, 0);
-  g.renderer->set_floor_light(test_floor_light());  // as the other tests have it
 }
 
 // Hundreds of small batches: every frame's map (on the CPU) holds every batch so far, but
@@ -265,8 +281,7 @@ TEST(SceneData, ARefiningFloorLightIsUploadedWhenItHasGrownByAnEighth) {
   s.photons = 40000;
   FrameState f = scene_frame({"lager", "pint", {}, {}});
   const gpu::SceneTextures& t = g.renderer->scene_textures();
-  g.renderer->set_floor_light(s, true, 5000);  // (an empty cache: the first frame drafts)
-  g.renderer->set_floor_refinement(1000, 0);     // one batch a frame after the first's ten
+  const AppFloorLight app(*g.renderer, s, 5000, 1000, 0);  // one batch a frame after the first's ten
   g.renderer->render_debug(f, 8, 8, gpu::DebugView::Depth);
   EXPECT_TRUE(t.floor_light_uploaded());  // the draft
   std::vector<int> uploaded_at;
@@ -277,8 +292,6 @@ TEST(SceneData, ARefiningFloorLightIsUploadedWhenItHasGrownByAnEighth) {
     if (t.floor_light_uploaded()) uploaded_at.push_back(batches);
   }
   EXPECT_EQ(uploaded_at, (std::vector<int>{10, 11, 12, 13, 14, 15, 16, 18, 20, 22, 24, 27, 30, 33, 37, 40}));
-  g.renderer->set_floor_refinement(0, 0);
-  g.renderer->set_floor_light(test_floor_light());  // as the other tests have it
 }
 
 // render.floor_photons: a scene may give its floor light's budget (an animation rendered

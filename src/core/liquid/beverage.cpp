@@ -262,7 +262,9 @@ glm::vec3 liquid_absorption(const LiquidParams& l, double metres) {
 std::string drink_colour_note(const LiquidParams& l, std::string_view field) {
   const bool wine = l.wine.x > 0 || l.wine.y > 0 || l.wine.z > 0;
   const std::string_view used = l.ebc > 0 ? "ebc" : l.srm > 0 ? "srm" : wine ? "wine" : "absorption";
-  if (field == used || (field != "ebc" && field != "srm" && field != "wine" && field != "absorption")) return "";
+  if (field == used || std::find(std::begin(kDrinkColourFields), std::end(kDrinkColourFields), field) ==
+                           std::end(kDrinkColourFields))
+    return "";
   auto number = [](double x) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3g", x);

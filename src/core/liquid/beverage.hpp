@@ -114,5 +114,6 @@ glm::vec3 liquid_absorption(const LiquidParams&, double metres = kColourPathMetr
 // drink_spectrum, said beside the rows that are not: "" for the row in effect; an unset
 // EBC beside an SRM of 3.5 reads "in effect: 6.9 (from SRM)", not as a colourless beer.
 std::string drink_colour_note(const LiquidParams&, std::string_view field);
+inline constexpr std::string_view kDrinkColourFields[] = {"ebc", "srm", "wine", "absorption"};
 
 }  // namespace draught
