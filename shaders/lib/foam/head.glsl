@@ -53,6 +53,16 @@ float foam_thickness_at(Vessel v, ObjectFoam f, vec2 xz) {
   return t;
 }
 
+// The normal of the head's top above (x, z): the dome's slope (foam_thickness_at without
+// a pour's crater), about the liquid's plane.
+vec3 foam_top_normal(Vessel v, ObjectFoam f, vec2 xz) {
+  float inv_r2 = 1.0 / (v.liquid.wave_radius * v.liquid.wave_radius);
+  float u2 = dot(xz, xz) * inv_r2;
+  bool sloped = u2 < 1.5 && 1.0 + f.dome * (1.0 - 2.0 * u2) > 0.1;
+  vec2 slope = sloped ? -4.0 * f.thickness * f.dome * inv_r2 * xz : vec2(0.0);
+  return normalize(v.liquid.plane_normal - vec3(slope.x, 0.0, slope.y));
+}
+
 // Bubbles are bigger low in the head (they coarsen as liquid drains out of it): at the
 // liquid 1 + FOAM_GROWTH times their size at the top. A foam's extinction goes as its
 // bubbles' surface per volume, 1 / size, so the wet foam low in the head is the more
@@ -103,7 +113,8 @@ struct HeadLight {
   // normal, exactly), over pi
   vec3 side_xx, side_zz, side_xz, side_x, side_z;
   vec3 below;   // and on the underside, through the drink
-  float wall;   // the part of a light the glass wall lets through (two faces, Fresnel at normal incidence)
+  float ior;          // the glass's
+  float wall_diffuse; // the part of even light the glass wall lets through (two faces)
   int count;    // the rig's lights, each a distant light from the glass's middle:
   vec3 key[MAX_LIGHTS];  // its irradiance (facing it)
   vec3 l[MAX_LIGHTS];    // the direction towards it (local)
@@ -129,14 +140,29 @@ float single_exitance(float mu0, float g) {
   return (1.0 - mu0 * log(1.0 + 1.0 / mu0)) * back;
 }
 
-// The light along a ray of direction d (local) through the head.
-void head_along(inout HeadLight h, Vessel v, ObjectFoam f, vec3 d) {
+// The light along a ray of direction d (local) through the head, which it enters above
+// xz: the top's slope there (foam_top_normal) stands for the whole ray's.
+void head_along(inout HeadLight h, Vessel v, ObjectFoam f, vec3 d, vec2 xz) {
   h.top_key = vec3(0.0);
+  vec3 n_top = foam_top_normal(v, f, xz);
   for (int i = 0; i < MAX_LIGHTS; ++i) {
     h.key_phase[i] = h.key[i] * hg_phase(dot(h.l[i], d), f.anisotropy);
-    h.cos_top[i] = dot(v.liquid.plane_normal, h.l[i]);
+    h.cos_top[i] = dot(n_top, h.l[i]);
     h.top_key += h.key[i] * max(h.cos_top[i], 0.0) * (1.0 - single_exitance(h.cos_top[i], f.anisotropy));
   }
+}
+
+// What a glass wall (two faces, air on both sides) lets through of light falling at
+// cosine cos_i (the inner face reflects as much as the outer: Fresnel is reciprocal).
+float wall_transmittance(float cos_i, float ior) {
+  float t = 1.0 - fresnel_dielectric(cos_i, 1.0, ior);
+  return t * t;
+}
+// ... and of even light (its cosine-weighted mean: 0.84 for ior 1.5, 0.92 face-on).
+float wall_diffuse_transmittance(float ior) {
+  float sum = 0.0;
+  for (int k = 0; k < 8; ++k) sum += wall_transmittance(sqrt((float(k) + 0.5) / 8.0), ior);
+  return sum / 8.0;
 }
 
 HeadLight head_light(Vessel v, ObjectFoam f) {
@@ -169,8 +195,8 @@ HeadLight head_light(Vessel v, ObjectFoam f) {
     h.key[i] = frame.media_light_radiance[i].rgb * lit.w;
     h.l[i] = to_local_dir(v, lit.xyz);
   }
-  float ior = fetch_object_glass(v.row).glass_ior, f0 = (ior - 1.0) / (ior + 1.0);
-  h.wall = (1.0 - f0 * f0) * (1.0 - f0 * f0);
+  h.ior = fetch_object_glass(v.row).glass_ior;
+  h.wall_diffuse = wall_diffuse_transmittance(h.ior);
   return h;
 }
 
@@ -213,9 +239,10 @@ vec3 head_source(Vessel v, ObjectFoam f, HeadLight h, vec3 d, vec3 p, float heig
   for (int i = 0; i < MAX_LIGHTS; ++i) {
     if (i >= h.count) break;
     float cos_t = h.cos_top[i], cos_s = dot(across, h.l[i].xz);
-    float direct = max(cos_t > 0.0 ? exp(-tau_t / cos_t) : 0.0, cos_s > 0.0 ? h.wall * exp(-tau_s / cos_s) : 0.0);
+    float wall = cos_s > 0.0 ? wall_transmittance(cos_s, h.ior) : 0.0;
+    float direct = max(cos_t > 0.0 ? exp(-tau_t / cos_t) : 0.0, cos_s > 0.0 ? wall * exp(-tau_s / cos_s) : 0.0);
     single += h.key_phase[i] * direct;
-    side_key += h.key[i] * max(cos_s, 0.0) * (1.0 - single_exitance(cos_s, f.anisotropy));
+    side_key += h.key[i] * wall * max(cos_s, 0.0) * (1.0 - single_exitance(cos_s, f.anisotropy));
   }
   // Diffusion between the faces: each face's incoming radiance (a light's irradiance
   // counted as a diffuse pi L) held at its extrapolated boundary, the field the sum of
@@ -223,8 +250,8 @@ vec3 head_source(Vessel v, ObjectFoam f, HeadLight h, vec3 d, vec3 p, float heig
   vec3 top_in = h.top_sky + h.top_key / PI;
   vec3 side_sky = max(h.side_xx * across.x * across.x + h.side_zz * across.y * across.y + h.side_xz * across.x * across.y +
                       h.side_x * across.x + h.side_z * across.y, vec3(0.0));
-  vec3 side_in = side_sky + side_key * h.wall / PI;
-  float ut = tau_t + h.zb, ub = tau_b + h.zb, us = tau_s + h.zb;
+  vec3 side_in = side_sky + side_key / (PI * h.wall_diffuse);
+  float ut = tau_t + h.zb, ub = tau_b + h.zb, us = tau_s + h.zb * (2.0 - h.wall_diffuse) / h.wall_diffuse;
   vec3 et = exp(min(h.kappa * ut, 60.0)), eb = exp(min(h.kappa * ub, 60.0)), es = exp(min(h.kappa * us, 60.0));
   vec3 pt = face_pull(h.kappa, ut, et), pb = face_pull(h.kappa, ub, eb), ps = face_pull(h.kappa, us, es);
   vec3 diffuse = face_share(h.kappa, ut, et, pb + ps) * top_in + face_share(h.kappa, ub, eb, pt + ps) * h.below +
@@ -278,7 +305,7 @@ void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, inou
   float dt = len / float(steps);
   float t = t0 + dt * march_jitter();
   HeadLight h = head_light(v, f);
-  head_along(h, v, f, d);
+  head_along(h, v, f, d, (o + t0 * d).xz);
   for (int i = 0; i < 40; ++i) {
     if (i >= steps) break;
     ++g_foam_steps;
