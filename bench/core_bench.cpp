@@ -5,6 +5,8 @@
 #include "core/bubbles/bubble_view.hpp"
 #include "core/environment/floor_light.hpp"
 #include "core/environment/matcap.hpp"
+#include "core/environment/reflection.hpp"
+#include "core/environment/studio.hpp"
 #include "core/scene/camera.hpp"
 #include "core/vessel/fill_table.hpp"
 #include "core/scene/frame.hpp"
@@ -50,6 +52,27 @@ void BM_MakeFrame(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(make_frame(p));
 }
 BENCHMARK(BM_MakeFrame);
+
+// What a head's surroundings cost a frame: the backdrop's share seen from one more point
+// (16 x 32 directions, one pass), as environment_frame computes it for each head and once
+// for the scene's centre (EnvironmentFrame::media_seen_from); against the scene's own
+// surround (32 x 64, three rounds of the paper's bounce).
+void BM_SurroundSeenFromAHead(benchmark::State& state) {
+  const FrameState f = make_frame(glass_params("pint"));
+  const Studio studio(f.params);
+  const glm::dvec3 at = head_middle(f.vessels[0]);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(backdrop_share(studio, f.lights, f.backdrop, f.environment.surround, at, 16));
+}
+BENCHMARK(BM_SurroundSeenFromAHead)->Unit(benchmark::kMicrosecond);
+
+void BM_SurroundOfTheScene(benchmark::State& state) {
+  const FrameState f = make_frame(glass_params("pint"));
+  const Studio studio(f.params);
+  const SkyIrradiance sky = sky_irradiance(studio);
+  for (auto _ : state) benchmark::DoNotOptimize(surround_irradiance(studio, sky, f.lights, f.backdrop, f.lights.aim));
+}
+BENCHMARK(BM_SurroundOfTheScene)->Unit(benchmark::kMicrosecond);
 
 // One simulation second (240 fixed steps) of the shake timeline: what a viewer spends
 // per second of motion on the CPU (surface, slosh, spill check with its exact capacity).

@@ -253,6 +253,7 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.lacing_count = rings;
   r.lacing_strength = fp.lacing;
   for (int i = 0; i < rings; ++i) r.lacing[i] = float(fo.lacing[size_t(i)]);
+  for (int i = 0; i < 9; ++i) r.head_sh[i] = {glm::vec3(vf.head_surround.coef[size_t(i)]), 0.0f};
   pack_decals(f, row, r);        // gpu/decal_textures
   pack_condensation(f, row, r);  // gpu/condensation_textures
   return r;

@@ -171,9 +171,10 @@ HeadLight head_light(Vessel v, ObjectFoam f) {
   h.kappa = sqrt(3.0 * max(1.0 - h.albedo, 0.0) * (1.0 - h.albedo * f.anisotropy));
   h.zb = 2.0 / (3.0 * (1.0 - f.anisotropy));
   // The surroundings besides the lights (frame.media_sh: the surround, less an image's
-  // patches taken as lights), read once per head.
+  // patches taken as lights) as the head sees them from its middle (the record's head_sh),
+  // read once per head.
   vec3 sh[9];
-  for (int i = 0; i < 9; ++i) sh[i] = frame.media_sh[i].rgb;
+  for (int i = 0; i < 9; ++i) sh[i] = object_head_sh(v.row, i).rgb;
   h.top_sky = sh_irradiance(sh, to_world_dir(v, vec3(0.0, 1.0, 0.0))) / PI;
   // The side's light at the four sides and between two of them fixes its quadratic form.
   vec3 u = to_world_dir(v, vec3(1.0, 0.0, 0.0)), w = to_world_dir(v, vec3(0.0, 0.0, 1.0));

@@ -63,12 +63,30 @@ SkyIrradiance surround_irradiance(const Studio& studio, const SkyIrradiance& sky
   return s;
 }
 
+SkyIrradiance backdrop_share(const Studio& studio, const LightRig& rig, const BackdropSurface& backdrop,
+                             const SkyIrradiance& paper_lit_by, const glm::dvec3& at, int rows) {
+  SkyIrradiance share;
+  if (!backdrop.present) return share;
+  for_each_sphere_cell(rows, 2 * rows, [&](const glm::dvec3& d, double weight) {
+    double t;
+    glm::dvec3 n;
+    if (!backdrop.intersect(at, d, 0.0, t, n)) return;
+    const glm::dvec3 p = at + t * d;
+    const glm::dvec3 change =
+        backdrop.albedo(p) / std::numbers::pi * weight * (rig.irradiance(p, n) + paper_lit_by.at(n)) - studio.sky(d) * weight;
+    const std::array<double, 9> y = SkyIrradiance::basis(d);
+    for (int k = 0; k < 9; ++k) share.coef[size_t(k)] += change * (y[size_t(k)] * kCosineBand[size_t(k)]);
+  });
+  return share;
+}
+
 glm::dvec3 mean_radiance(const SkyIrradiance& s) {
   // The mean of E(n) over all n is its band-0 term, pi times the mean radiance.
   return s.coef[0] * SkyIrradiance::basis({0, 1, 0})[0] / std::numbers::pi;
 }
 
-EnvironmentFrame environment_frame(const SceneParams& p, const LightRig& rig, const BackdropSurface& backdrop) {
+EnvironmentFrame environment_frame(const SceneParams& p, const LightRig& rig, const BackdropSurface& backdrop,
+                                   const std::vector<glm::dvec3>& seen_from) {
   constexpr double kPi = std::numbers::pi;
   EnvironmentFrame f;
   const Studio studio(p);
@@ -77,6 +95,21 @@ EnvironmentFrame environment_frame(const SceneParams& p, const LightRig& rig, co
   drawn.present = backdrop.present && !p.render.transparent;
   f.surround = surround_irradiance(studio, f.sky, rig, drawn, rig.aim);
   f.media = media_light(studio, rig, f.surround);
+  // Each point's view differs from the centre's by the backdrop's share, taken on a
+  // coarser grid (16 x 32: the paper lit by the surround already converged, so one pass)
+  // at both, so the grid's own error cancels.
+  if (!seen_from.empty()) {
+    constexpr int kSeenFromRows = 16;
+    const SkyIrradiance centre = backdrop_share(studio, rig, drawn, f.surround, rig.aim, kSeenFromRows);
+    for (const glm::dvec3& at : seen_from) {
+      SkyIrradiance there = f.media.surround;
+      if (drawn.present) {
+        const SkyIrradiance moved = backdrop_share(studio, rig, drawn, f.surround, at, kSeenFromRows);
+        for (size_t k = 0; k < there.coef.size(); ++k) there.coef[k] += moved.coef[k] - centre.coef[k];
+      }
+      f.media_seen_from.push_back(there);
+    }
+  }
   f.image = studio.image;
   f.rotation_cos = float(studio.rotation_cos);
   f.rotation_sin = float(studio.rotation_sin);

@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include <memory>
+#include <vector>
 
 namespace draught {
 
@@ -32,12 +33,18 @@ struct EnvironmentFrame {
   // What the heads and the haze are lit by, split into lights and the rest: the rig and the
   // surround, or under an image its brightest patches and the surround less them.
   MediaLight media;
+  // media.surround as seen from each point environment_frame was given (each head's
+  // middle): the backdrop's part seen from there instead of from the scene's centre. A
+  // head high in a tall glass sees less of the lit paper below it, and sees it further
+  // off; the image and the sky are at infinity, the same from anywhere.
+  std::vector<SkyIrradiance> media_seen_from;
   // env.mode image: the environment and how it is seen (Studio's image, rotation, blur).
   std::shared_ptr<const EnvironmentMap> image;
   float rotation_cos = 1, rotation_sin = 0, blur_lod = 0, intensity = 1;
 };
 
-EnvironmentFrame environment_frame(const SceneParams&, const LightRig&, const BackdropSurface&);
+EnvironmentFrame environment_frame(const SceneParams&, const LightRig&, const BackdropSurface&,
+                                   const std::vector<glm::dvec3>& seen_from = {});
 
 // The light around point `at` besides the rig's lights: the sky's harmonics `sky`, and
 // where a direction from `at` meets the backdrop, the backdrop's radiance instead of the
@@ -47,6 +54,13 @@ EnvironmentFrame environment_frame(const SceneParams&, const LightRig&, const Ba
 // light changes slowly, and irradiance keeps only its low frequencies.
 SkyIrradiance surround_irradiance(const Studio&, const SkyIrradiance& sky, const LightRig&, const BackdropSurface&,
                                   const glm::dvec3& at);
+
+// The backdrop's share of surround_irradiance seen from `at`, in one pass: where a
+// direction of a rows x 2 rows grid meets the backdrop, its radiance (the rig's
+// unoccluded irradiance and `paper_lit_by`'s at its normal, times albedo / pi) less the
+// sky it hides. Zero without a backdrop.
+SkyIrradiance backdrop_share(const Studio&, const LightRig&, const BackdropSurface&, const SkyIrradiance& paper_lit_by,
+                             const glm::dvec3& at, int rows);
 
 // The mean radiance over the whole sphere that harmonics of irradiance hold (their band-0
 // share): what an isotropic scatterer (the haze) receives per steradian.

@@ -169,9 +169,21 @@ FrameState assemble_frame(const SceneParams& scene, std::vector<VesselFrame> ves
   const glm::dvec3 aim = scene_aim(f.vessels);
   f.lights = light_rig(p, aim, drink_aim(f.vessels));
   f.backdrop = backdrop_surface(p.env, aim);
-  f.environment = environment_frame(p, f.lights, f.backdrop);
+  std::vector<glm::dvec3> heads;
+  for (const VesselFrame& v : f.vessels)
+    if (v.has_liquid && v.foam.thickness > 1e-4) heads.push_back(head_middle(v));
+  f.environment = environment_frame(p, f.lights, f.backdrop, heads);
+  size_t k = 0;
+  for (VesselFrame& v : f.vessels)
+    if (v.has_liquid && v.foam.thickness > 1e-4) v.head_surround = f.environment.media_seen_from[k++];
   f.screen = screen_frame(p, aim, time);
   return f;
+}
+
+glm::dvec3 head_middle(const VesselFrame& v) {
+  const glm::dvec3 n(v.liquid.n);
+  const double on_axis = v.liquid.offset / std::max(n.y, 1e-3);  // the surface where it meets the axis
+  return v.pose.position + v.pose.orientation * (glm::dvec3(0, on_axis, 0) + 0.5 * v.foam.thickness * n);
 }
 
 glm::dvec3 vessel_middle(const VesselFrame& v) {

@@ -44,7 +44,14 @@ struct VesselFrame {
   double mean_outer_radius = 0;
   // Beads and fog on the outer wall (core/condensation); null when the glass is dry.
   std::shared_ptr<const CondensationState> condensation;
+  // What its head is lit by besides the lights: the media's surround seen from the head's
+  // middle (EnvironmentFrame::media_seen_from; assemble_frame). Without a head, unset.
+  SkyIrradiance head_surround;
 };
+
+// Where a vessel's head is, in the world: on the axis, half its thickness above the
+// liquid's surface.
+glm::dvec3 head_middle(const VesselFrame&);
 
 struct FrameState {
   SceneParams params;
