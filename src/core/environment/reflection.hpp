@@ -34,9 +34,9 @@ struct EnvironmentFrame {
   // surround, or under an image its brightest patches and the surround less them.
   MediaLight media;
   // media.surround as seen from each point environment_frame was given (each head's
-  // middle): the backdrop's part seen from there instead of from the scene's centre. A
-  // head high in a tall glass sees less of the lit paper below it, and sees it further
-  // off; the image and the sky are at infinity, the same from anywhere.
+  // middle): the backdrop's part seen from there instead of from the scene's centre (a
+  // head near the top of a pint sees the sweep's paper from twice the height); the image
+  // and the sky are at infinity, the same from anywhere.
   std::vector<SkyIrradiance> media_seen_from;
   // env.mode image: the environment and how it is seen (Studio's image, rotation, blur).
   std::shared_ptr<const EnvironmentMap> image;

@@ -182,7 +182,9 @@ FrameState assemble_frame(const SceneParams& scene, std::vector<VesselFrame> ves
 
 glm::dvec3 head_middle(const VesselFrame& v) {
   const glm::dvec3 n(v.liquid.n);
-  const double on_axis = v.liquid.offset / std::max(n.y, 1e-3);  // the surface where it meets the axis
+  // The surface where it meets the axis, within the glass (a glass tipped over has its
+  // surface nearly along the axis).
+  const double on_axis = std::clamp(v.liquid.offset / std::max(n.y, 1e-3), v.vessel.base, v.vessel.height);
   return v.pose.position + v.pose.orientation * (glm::dvec3(0, on_axis, 0) + 0.5 * v.foam.thickness * n);
 }
 

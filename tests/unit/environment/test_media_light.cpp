@@ -41,6 +41,28 @@ TEST_F(MediaLightTest, TheStudioGivesTheRigAndTheSurround) {
   for (size_t k = 0; k < 9; ++k) EXPECT_EQ(m.surround.coef[k], f.environment.surround.coef[k]);
 }
 
+// A head sees the surroundings from its own middle (VesselFrame::head_surround), not
+// from the scene's centre: the pint's head, near the top of the glass (14 cm against
+// 7.5), sees the sweep's paper from higher up, and the light facing the camera's side
+// falls by a sixth (measured: 0.84 of the centre's; the sides 0.94-0.96, the sky 0.93).
+// Without a backdrop the two views are the same: the sky is at infinity.
+TEST_F(MediaLightTest, AHeadSeesTheSurroundingsFromItsMiddle) {
+  const FrameState f = make_frame(default_params());
+  ASSERT_GT(f.vessels[0].foam.thickness, 1e-3);
+  const glm::dvec3 head = head_middle(f.vessels[0]);
+  EXPECT_GT(head.y, f.lights.aim.y + 0.05);
+  const SkyIrradiance& centre = f.environment.media.surround;
+  const SkyIrradiance& there = f.vessels[0].head_surround;
+  EXPECT_LT(there.at({0, 0, 1}).y, 0.9 * centre.at({0, 0, 1}).y);
+  EXPECT_LT(there.at({1, 0, 0}).y, 0.98 * centre.at({1, 0, 0}).y);
+
+  Params no_floor = default_params();
+  no_floor.env.floor = false;
+  const FrameState g = make_frame(no_floor);
+  for (size_t k = 0; k < 9; ++k)
+    EXPECT_EQ(g.vessels[0].head_surround.coef[k], g.environment.media.surround.coef[k]) << "coefficient " << k;
+}
+
 TEST_F(MediaLightTest, AnEvenImageHasNoLights) {
   const SceneParams p = image_scene(glm::vec3(0.4f));
   const MediaLight m = media_light(Studio(p), LightRig{}, SkyIrradiance{});
