@@ -62,7 +62,8 @@ void BM_SurroundSeenFromAHead(benchmark::State& state) {
   const Studio studio(f.params);
   const glm::dvec3 at = head_middle(f.vessels[0]);
   for (auto _ : state)
-    benchmark::DoNotOptimize(backdrop_share(studio, f.lights, f.backdrop, f.environment.surround, at, 16));
+    benchmark::DoNotOptimize(
+        backdrop_share(studio, f.lights, f.backdrop, f.environment.surround, at, 16, drink_columns(f.vessels)));
 }
 BENCHMARK(BM_SurroundSeenFromAHead)->Unit(benchmark::kMicrosecond);
 

@@ -64,7 +64,7 @@ SkyIrradiance surround_irradiance(const Studio& studio, const SkyIrradiance& sky
 }
 
 SkyIrradiance backdrop_share(const Studio& studio, const LightRig& rig, const BackdropSurface& backdrop,
-                             const SkyIrradiance& paper_lit_by, const glm::dvec3& at, int rows) {
+                             const SkyIrradiance& paper_lit_by, const glm::dvec3& at, int rows, const LightPasses& passes) {
   SkyIrradiance share;
   if (!backdrop.present) return share;
   for_each_sphere_cell(rows, 2 * rows, [&](const glm::dvec3& d, double weight) {
@@ -72,8 +72,11 @@ SkyIrradiance backdrop_share(const Studio& studio, const LightRig& rig, const Ba
     glm::dvec3 n;
     if (!backdrop.intersect(at, d, 0.0, t, n)) return;
     const glm::dvec3 p = at + t * d;
+    glm::dvec3 lit(0.0);
+    for (const AreaLight& l : rig.lights)
+      lit += l.radiance * l.irradiance_factor(p, n) * (passes ? passes(p, l.center) : glm::dvec3(1.0));
     const glm::dvec3 change =
-        backdrop.albedo(p) / std::numbers::pi * weight * (rig.irradiance(p, n) + paper_lit_by.at(n)) - studio.sky(d) * weight;
+        backdrop.albedo(p) / std::numbers::pi * weight * (lit + paper_lit_by.at(n)) - studio.sky(d) * weight;
     const std::array<double, 9> y = SkyIrradiance::basis(d);
     for (int k = 0; k < 9; ++k) share.coef[size_t(k)] += change * (y[size_t(k)] * kCosineBand[size_t(k)]);
   });
@@ -86,7 +89,7 @@ glm::dvec3 mean_radiance(const SkyIrradiance& s) {
 }
 
 EnvironmentFrame environment_frame(const SceneParams& p, const LightRig& rig, const BackdropSurface& backdrop,
-                                   const std::vector<glm::dvec3>& seen_from) {
+                                   const std::vector<glm::dvec3>& seen_from, const LightPasses& passes) {
   constexpr double kPi = std::numbers::pi;
   EnvironmentFrame f;
   const Studio studio(p);
@@ -104,7 +107,7 @@ EnvironmentFrame environment_frame(const SceneParams& p, const LightRig& rig, co
     for (const glm::dvec3& at : seen_from) {
       SkyIrradiance there = f.media.surround;
       if (drawn.present) {
-        const SkyIrradiance moved = backdrop_share(studio, rig, drawn, f.surround, at, kSeenFromRows);
+        const SkyIrradiance moved = backdrop_share(studio, rig, drawn, f.surround, at, kSeenFromRows, passes);
         for (size_t k = 0; k < there.coef.size(); ++k) there.coef[k] += moved.coef[k] - centre.coef[k];
       }
       f.media_seen_from.push_back(there);

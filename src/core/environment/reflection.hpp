@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -43,8 +44,12 @@ struct EnvironmentFrame {
   float rotation_cos = 1, rotation_sin = 0, blur_lod = 0, intensity = 1;
 };
 
+// What of a light's straight path from one point to another arrives (1: all of it): the
+// scene's objects between them (assemble_frame: each glass's drink as a column).
+using LightPasses = std::function<glm::dvec3(const glm::dvec3& from, const glm::dvec3& to)>;
+
 EnvironmentFrame environment_frame(const SceneParams&, const LightRig&, const BackdropSurface&,
-                                   const std::vector<glm::dvec3>& seen_from = {});
+                                   const std::vector<glm::dvec3>& seen_from = {}, const LightPasses& passes = {});
 
 // The light around point `at` besides the rig's lights: the sky's harmonics `sky`, and
 // where a direction from `at` meets the backdrop, the backdrop's radiance instead of the
@@ -60,7 +65,7 @@ SkyIrradiance surround_irradiance(const Studio&, const SkyIrradiance& sky, const
 // unoccluded irradiance and `paper_lit_by`'s at its normal, times albedo / pi) less the
 // sky it hides. Zero without a backdrop.
 SkyIrradiance backdrop_share(const Studio&, const LightRig&, const BackdropSurface&, const SkyIrradiance& paper_lit_by,
-                             const glm::dvec3& at, int rows);
+                             const glm::dvec3& at, int rows, const LightPasses& passes = {});
 
 // The mean radiance over the whole sphere that harmonics of irradiance hold (their band-0
 // share): what an isotropic scatterer (the haze) receives per steradian.

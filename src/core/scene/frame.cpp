@@ -157,6 +157,54 @@ CameraBasis camera_basis(const FrameState& f, int width, int height) {
   return camera_basis(f.camera_for(w, h), width, height, f.view);
 }
 
+LightPasses drink_columns(const std::vector<VesselFrame>& vessels) {
+  struct Column {
+    glm::dquat to_local;
+    glm::dvec3 origin;
+    double radius, y0, y1;
+    glm::dvec3 absorption;
+  };
+  std::vector<Column> columns;
+  for (const VesselFrame& v : vessels) {
+    if (!v.has_liquid) continue;
+    const double level = std::clamp(v.liquid.offset / std::max(v.liquid.n.y, 1e-3), v.vessel.base, v.vessel.height);
+    if (level <= v.vessel.base) continue;
+    columns.push_back({glm::inverse(v.pose.orientation), v.pose.position, v.mean_outer_radius, v.vessel.base, level,
+                       glm::dvec3(v.liquid_absorption.effective())});
+  }
+  if (columns.empty()) return {};
+  return [columns](const glm::dvec3& from, const glm::dvec3& to) {
+    glm::dvec3 pass(1.0);
+    for (const Column& c : columns) {
+      const glm::dvec3 o = c.to_local * (from - c.origin), e = c.to_local * (to - c.origin);
+      const glm::dvec3 d = e - o;  // the segment o + s d, s in [0, 1]
+      double s0 = 0, s1 = 1;
+      // Within the column's height.
+      if (std::abs(d.y) < 1e-12) {
+        if (o.y < c.y0 || o.y > c.y1) continue;
+      } else {
+        double a = (c.y0 - o.y) / d.y, b = (c.y1 - o.y) / d.y;
+        if (a > b) std::swap(a, b);
+        s0 = std::max(s0, a);
+        s1 = std::min(s1, b);
+      }
+      // Within its radius.
+      const double qa = d.x * d.x + d.z * d.z, qb = o.x * d.x + o.z * d.z, qc = o.x * o.x + o.z * o.z - c.radius * c.radius;
+      if (qa < 1e-18) {
+        if (qc > 0) continue;
+      } else {
+        const double disc = qb * qb - qa * qc;
+        if (disc <= 0) continue;
+        const double sq = std::sqrt(disc);
+        s0 = std::max(s0, (-qb - sq) / qa);
+        s1 = std::min(s1, (-qb + sq) / qa);
+      }
+      if (s1 > s0) pass *= glm::exp(-c.absorption * ((s1 - s0) * glm::length(d)));
+    }
+    return pass;
+  };
+}
+
 FrameState assemble_frame(const SceneParams& scene, std::vector<VesselFrame> vessels, int selected, double time) {
   FrameState f;
   f.params = scene;
@@ -172,7 +220,7 @@ FrameState assemble_frame(const SceneParams& scene, std::vector<VesselFrame> ves
   std::vector<glm::dvec3> heads;
   for (const VesselFrame& v : f.vessels)
     if (v.has_liquid && v.foam.thickness > 1e-4) heads.push_back(head_middle(v));
-  f.environment = environment_frame(p, f.lights, f.backdrop, heads);
+  f.environment = environment_frame(p, f.lights, f.backdrop, heads, drink_columns(f.vessels));
   size_t k = 0;
   for (VesselFrame& v : f.vessels)
     if (v.has_liquid && v.foam.thickness > 1e-4) v.head_surround = f.environment.media_seen_from[k++];

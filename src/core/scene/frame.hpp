@@ -53,6 +53,13 @@ struct VesselFrame {
 // liquid's surface.
 glm::dvec3 head_middle(const VesselFrame&);
 
+// The light's straight path through each glass's drink, taken as an upright column of its
+// mean outer radius from the cavity's floor to the surface on the axis, passing
+// exp(-absorption x chord) (the drink's colour at its glassful's path; refraction, the
+// glass and the head left out): what a head's view of the paper needs of the glasses'
+// shadows (a stout's is dark, a lager's pale), not the floor's caustics.
+LightPasses drink_columns(const std::vector<VesselFrame>&);
+
 struct FrameState {
   SceneParams params;
   CameraParams camera;  // the camera in effect for a square picture (auto-framed or as given)

@@ -63,6 +63,20 @@ TEST_F(MediaLightTest, AHeadSeesTheSurroundingsFromItsMiddle) {
     EXPECT_EQ(g.vessels[0].head_surround.coef[k], g.environment.media.surround.coef[k]) << "coefficient " << k;
 }
 
+// The glasses' shadows in a head's view of the paper (drink_columns): a light's path
+// through a stout's column arrives dark, through a lager's paler, beside them whole, and
+// above the drink (through the head's air) whole.
+TEST_F(MediaLightTest, ADrinkShadowsTheLightThroughItsColumn) {
+  const auto columns = [](const char* drink) { return drink_columns(make_frame(resolve_scene({drink, "pint", {}, {}})).vessels); };
+  const LightPasses stout = columns("stout"), lager = columns("lager");
+  const glm::dvec3 floor_behind(0.3, 0.0, -0.3), light(-1.0, 0.06, 1.0);  // through the foot of the column
+  EXPECT_LT(stout(floor_behind, light).r, 0.05);
+  EXPECT_GT(lager(floor_behind, light).r, 0.3);
+  EXPECT_LT(lager(floor_behind, light).b, lager(floor_behind, light).r);
+  EXPECT_EQ(stout({0.3, 0.0, 0.3}, {1.0, 0.06, 1.0}), glm::dvec3(1.0));   // beside the glass
+  EXPECT_EQ(stout({0.3, 0.3, -0.3}, {-1.0, 0.3, 1.0}), glm::dvec3(1.0));  // above the drink
+}
+
 TEST_F(MediaLightTest, AnEvenImageHasNoLights) {
   const SceneParams p = image_scene(glm::vec3(0.4f));
   const MediaLight m = media_light(Studio(p), LightRig{}, SkyIrradiance{});
