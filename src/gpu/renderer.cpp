@@ -202,7 +202,7 @@ void Renderer::draw_picture(const FrameState& f, int width, int height, DebugVie
   bool waves = false, foam = false, spheres = false;
   for (const VesselFrame& v : f.vessels) {
     waves = waves || (v.has_liquid && !v.liquid.waves.flat());
-    foam = foam || (v.has_liquid && v.foam.thickness > 1e-4);
+    foam = foam || has_head(v);
   }
   for (int i = 0; i < block.light_count; ++i) spheres = spheres || block.light_normal[i].w > 0.5f;
   const bool painted = block.env_mode == 0 && (block.strip_intensity != 0.0f || block.backdrop_glow != 0.0f);

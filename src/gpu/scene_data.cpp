@@ -115,12 +115,6 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
   return b;
 }
 
-namespace {
-// A head is drawn when there is liquid and more than a tenth of a millimetre of foam
-// (the same test picks the FOAM_HEAD shader variant).
-bool has_head(const VesselFrame& v) { return v.has_liquid && v.foam.thickness > 1e-4; }
-}  // namespace
-
 void pack_clouds(const FrameState& f, const CloudScene& clouds, contract::FrameBlock& b) {
   // The glow's table: the same for every frame (the shader interpolates it in 1/T).
   const std::vector<glm::vec4>& table = picture_blackbody_table();

@@ -26,27 +26,46 @@ void image_glint(const Studio& studio, EnvironmentFrame& f) {
 
 }  // namespace
 
-SkyIrradiance surround_irradiance(const Studio& studio, const SkyIrradiance& sky, const LightRig& rig,
-                                  const BackdropSurface& backdrop, const glm::dvec3& at) {
-  if (!backdrop.present) return sky;
-  // Where each direction of a 32 x 64 grid meets the backdrop, once: the point's normal,
-  // its albedo / pi, what the rig gives it, the sky the paper hides there (each times the
-  // cell's solid angle) and the harmonics, with the cosine's bands, of the direction.
-  struct Patch {
-    glm::dvec3 n, albedo, rig, hidden;
-    std::array<double, 9> y;
-  };
-  std::vector<Patch> patches;
-  for_each_sphere_cell(32, 64, [&](const glm::dvec3& d, double weight) {
+namespace {
+
+// Where a direction from `at` meets the backdrop, as a cell of a rows x 2 rows grid sees
+// it: the point's normal, its albedo / pi, what the rig gives it (each light's share
+// through `passes`), the sky the paper hides there (each times the cell's solid angle)
+// and the harmonics, with the cosine's bands, of the direction.
+struct BackdropPatch {
+  glm::dvec3 n, albedo, rig, hidden;
+  std::array<double, 9> y;
+};
+
+template <class F>
+void for_each_backdrop_patch(const Studio& studio, const LightRig& rig, const BackdropSurface& backdrop,
+                             const glm::dvec3& at, int rows, const LightPasses& passes, F&& f) {
+  for_each_sphere_cell(rows, 2 * rows, [&](const glm::dvec3& d, double weight) {
     double t;
     glm::dvec3 n;
     if (!backdrop.intersect(at, d, 0.0, t, n)) return;
     const glm::dvec3 p = at + t * d;
-    Patch patch{n, backdrop.albedo(p) / std::numbers::pi * weight, rig.irradiance(p, n), studio.sky(d) * weight,
-                SkyIrradiance::basis(d)};
+    glm::dvec3 lit(0.0);
+    if (passes) {
+      for (const AreaLight& l : rig.lights) lit += l.radiance * l.irradiance_factor(p, n) * passes(p, l.center);
+    } else {
+      lit = rig.irradiance(p, n);
+    }
+    BackdropPatch patch{n, backdrop.albedo(p) / std::numbers::pi * weight, lit, studio.sky(d) * weight,
+                        SkyIrradiance::basis(d)};
     for (int k = 0; k < 9; ++k) patch.y[size_t(k)] *= kCosineBand[size_t(k)];
-    patches.push_back(patch);
+    f(patch);
   });
+}
+
+}  // namespace
+
+SkyIrradiance surround_irradiance(const Studio& studio, const SkyIrradiance& sky, const LightRig& rig,
+                                  const BackdropSurface& backdrop, const glm::dvec3& at) {
+  if (!backdrop.present) return sky;
+  // The backdrop's patches of a 32 x 64 grid, once.
+  std::vector<BackdropPatch> patches;
+  for_each_backdrop_patch(studio, rig, backdrop, at, 32, {}, [&](const BackdropPatch& p) { patches.push_back(p); });
   // The paper is lit by the rig and by what is around it, the paper itself included: three
   // rounds of its bounce (each about the paper's albedo times its share of the sphere, some
   // 0.4, of the last for the default sweep: what is left after the third is a few per cent
@@ -54,7 +73,7 @@ SkyIrradiance surround_irradiance(const Studio& studio, const SkyIrradiance& sky
   SkyIrradiance s = sky;
   for (int round = 0; round < 3; ++round) {
     SkyIrradiance next = sky;
-    for (const Patch& patch : patches) {
+    for (const BackdropPatch& patch : patches) {
       const glm::dvec3 change = patch.albedo * (patch.rig + s.at(patch.n)) - patch.hidden;
       for (int k = 0; k < 9; ++k) next.coef[size_t(k)] += change * patch.y[size_t(k)];
     }
@@ -67,18 +86,9 @@ SkyIrradiance backdrop_share(const Studio& studio, const LightRig& rig, const Ba
                              const SkyIrradiance& paper_lit_by, const glm::dvec3& at, int rows, const LightPasses& passes) {
   SkyIrradiance share;
   if (!backdrop.present) return share;
-  for_each_sphere_cell(rows, 2 * rows, [&](const glm::dvec3& d, double weight) {
-    double t;
-    glm::dvec3 n;
-    if (!backdrop.intersect(at, d, 0.0, t, n)) return;
-    const glm::dvec3 p = at + t * d;
-    glm::dvec3 lit(0.0);
-    for (const AreaLight& l : rig.lights)
-      lit += l.radiance * l.irradiance_factor(p, n) * (passes ? passes(p, l.center) : glm::dvec3(1.0));
-    const glm::dvec3 change =
-        backdrop.albedo(p) / std::numbers::pi * weight * (lit + paper_lit_by.at(n)) - studio.sky(d) * weight;
-    const std::array<double, 9> y = SkyIrradiance::basis(d);
-    for (int k = 0; k < 9; ++k) share.coef[size_t(k)] += change * (y[size_t(k)] * kCosineBand[size_t(k)]);
+  for_each_backdrop_patch(studio, rig, backdrop, at, rows, passes, [&](const BackdropPatch& patch) {
+    const glm::dvec3 change = patch.albedo * (patch.rig + paper_lit_by.at(patch.n)) - patch.hidden;
+    for (int k = 0; k < 9; ++k) share.coef[size_t(k)] += change * patch.y[size_t(k)];
   });
   return share;
 }
@@ -105,11 +115,9 @@ EnvironmentFrame environment_frame(const SceneParams& p, const LightRig& rig, co
     constexpr int kSeenFromRows = 16;
     const SkyIrradiance centre = backdrop_share(studio, rig, drawn, f.surround, rig.aim, kSeenFromRows);
     for (const glm::dvec3& at : seen_from) {
-      SkyIrradiance there = f.media.surround;
-      if (drawn.present) {
-        const SkyIrradiance moved = backdrop_share(studio, rig, drawn, f.surround, at, kSeenFromRows, passes);
-        for (size_t k = 0; k < there.coef.size(); ++k) there.coef[k] += moved.coef[k] - centre.coef[k];
-      }
+      SkyIrradiance there = f.media.surround;  // (without a backdrop both shares are zero)
+      const SkyIrradiance moved = backdrop_share(studio, rig, drawn, f.surround, at, kSeenFromRows, passes);
+      for (size_t k = 0; k < there.coef.size(); ++k) there.coef[k] += moved.coef[k] - centre.coef[k];
       f.media_seen_from.push_back(there);
     }
   }

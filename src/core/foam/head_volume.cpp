@@ -58,8 +58,7 @@ double drink_mean_chord(const VesselFrame& vf) {
 }
 
 HeadVolume::HeadVolume(const VesselFrame& vf, const VesselGeometry& geometry) {
-  // As gpu/scene_data.cpp has_head: liquid and more than a tenth of a millimetre of foam.
-  present_ = vf.has_liquid && vf.foam.thickness > 1e-4;
+  present_ = has_head(vf);
   if (!present_) return;
   vessel_ = &vf.vessel;
   liquid_ = vf.liquid;

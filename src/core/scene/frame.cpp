@@ -157,6 +157,14 @@ CameraBasis camera_basis(const FrameState& f, int width, int height) {
   return camera_basis(f.camera_for(w, h), width, height, f.view);
 }
 
+namespace {
+// Where the liquid's surface meets the glass's axis (local y), within the glass (a glass
+// tipped over has its surface nearly along the axis).
+double surface_on_axis(const VesselFrame& v) {
+  return std::clamp(v.liquid.offset / std::max(v.liquid.n.y, 1e-3), v.vessel.base, v.vessel.height);
+}
+}  // namespace
+
 LightPasses drink_columns(const std::vector<VesselFrame>& vessels) {
   struct Column {
     glm::dquat to_local;
@@ -167,7 +175,7 @@ LightPasses drink_columns(const std::vector<VesselFrame>& vessels) {
   std::vector<Column> columns;
   for (const VesselFrame& v : vessels) {
     if (!v.has_liquid) continue;
-    const double level = std::clamp(v.liquid.offset / std::max(v.liquid.n.y, 1e-3), v.vessel.base, v.vessel.height);
+    const double level = surface_on_axis(v);
     if (level <= v.vessel.base) continue;
     columns.push_back({glm::inverse(v.pose.orientation), v.pose.position, v.mean_outer_radius, v.vessel.base, level,
                        glm::dvec3(v.liquid_absorption.effective())});
@@ -217,23 +225,19 @@ FrameState assemble_frame(const SceneParams& scene, std::vector<VesselFrame> ves
   const glm::dvec3 aim = scene_aim(f.vessels);
   f.lights = light_rig(p, aim, drink_aim(f.vessels));
   f.backdrop = backdrop_surface(p.env, aim);
+  std::vector<VesselFrame*> with_head;
   std::vector<glm::dvec3> heads;
-  for (const VesselFrame& v : f.vessels)
-    if (v.has_liquid && v.foam.thickness > 1e-4) heads.push_back(head_middle(v));
-  f.environment = environment_frame(p, f.lights, f.backdrop, heads, drink_columns(f.vessels));
-  size_t k = 0;
   for (VesselFrame& v : f.vessels)
-    if (v.has_liquid && v.foam.thickness > 1e-4) v.head_surround = f.environment.media_seen_from[k++];
+    if (has_head(v)) with_head.push_back(&v), heads.push_back(head_middle(v));
+  f.environment = environment_frame(p, f.lights, f.backdrop, heads, drink_columns(f.vessels));
+  for (size_t k = 0; k < with_head.size(); ++k) with_head[k]->head_surround = f.environment.media_seen_from[k];
   f.screen = screen_frame(p, aim, time);
   return f;
 }
 
 glm::dvec3 head_middle(const VesselFrame& v) {
   const glm::dvec3 n(v.liquid.n);
-  // The surface where it meets the axis, within the glass (a glass tipped over has its
-  // surface nearly along the axis).
-  const double on_axis = std::clamp(v.liquid.offset / std::max(n.y, 1e-3), v.vessel.base, v.vessel.height);
-  return v.pose.position + v.pose.orientation * (glm::dvec3(0, on_axis, 0) + 0.5 * v.foam.thickness * n);
+  return v.pose.position + v.pose.orientation * (glm::dvec3(0, surface_on_axis(v), 0) + 0.5 * v.foam.thickness * n);
 }
 
 glm::dvec3 vessel_middle(const VesselFrame& v) {

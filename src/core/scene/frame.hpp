@@ -49,6 +49,10 @@ struct VesselFrame {
   SkyIrradiance head_surround;
 };
 
+// Whether a vessel has a head: liquid and more than a tenth of a millimetre of foam (the
+// renderer's FOAM_HEAD variant, the reference's head volume and the head's own view).
+inline bool has_head(const VesselFrame& v) { return v.has_liquid && v.foam.thickness > 1e-4; }
+
 // Where a vessel's head is, in the world: on the axis, half its thickness above the
 // liquid's surface.
 glm::dvec3 head_middle(const VesselFrame&);
