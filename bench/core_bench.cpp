@@ -11,6 +11,7 @@
 #include "core/vessel/fill_table.hpp"
 #include "core/scene/frame.hpp"
 #include "core/params/preset.hpp"
+#include "core/sim/scene_simulation.hpp"
 #include "core/sim/simulation.hpp"
 #include "core/params/timeline.hpp"
 
@@ -74,6 +75,15 @@ void BM_SurroundOfTheScene(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(surround_irradiance(studio, sky, f.lights, f.backdrop, f.lights.aim));
 }
 BENCHMARK(BM_SurroundOfTheScene)->Unit(benchmark::kMicrosecond);
+
+// What an app's frame costs the CPU before it draws: SceneSimulation::frame() of a still
+// scene (the objects' frames, the light rig, the studio's light and each head's view of it).
+void BM_SceneFrame(benchmark::State& state, const char* preset) {
+  const SceneSimulation sim(resolve_scene_objects({preset, "", {}, {}}));
+  for (auto _ : state) benchmark::DoNotOptimize(sim.frame());
+}
+BENCHMARK_CAPTURE(BM_SceneFrame, pint, "lager")->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SceneFrame, flight, "flight")->Unit(benchmark::kMicrosecond);
 
 // One simulation second (240 fixed steps) of the shake timeline: what a viewer spends
 // per second of motion on the CPU (surface, slosh, spill check with its exact capacity).

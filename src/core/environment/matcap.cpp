@@ -107,13 +107,7 @@ struct BakeEntry {
 // What a bake depends on, as text: every env.*, light.*, strips.*, backlight.* value,
 // where the rig stands and where the bake looks from.
 std::string bake_key(const SceneParams& p, const LightRig& rig, const BackdropSurface& b, const glm::dvec3& centre) {
-  std::string key;
-  for (const ParamDesc& d : param_table()) {
-    if (d.scope != ParamScope::Scene) continue;
-    const std::string group = d.path.substr(0, d.path.find('.'));
-    if (group == "env" || group == "light" || group == "strips" || group == "backlight")
-      key += format_param(d, get_param(p, d)) + ";";
-  }
+  const std::string key = studio_params_key(p);
   char buf[240];
   std::snprintf(buf, sizeof buf, "%.9g,%.9g,%.9g;%.9g;%.9g,%.9g,%.9g", rig.aim.x, rig.aim.y, rig.aim.z, b.z_curve,
                 centre.x, centre.y, centre.z);

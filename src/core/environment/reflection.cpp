@@ -98,29 +98,42 @@ glm::dvec3 mean_radiance(const SkyIrradiance& s) {
   return s.coef[0] * SkyIrradiance::basis({0, 1, 0})[0] / std::numbers::pi;
 }
 
+namespace {
+
+// The backdrop as it lights the scene: a transparent picture draws no floor, so none lights.
+BackdropSurface drawn_backdrop(const SceneParams& p, const BackdropSurface& backdrop) {
+  BackdropSurface drawn = backdrop;
+  drawn.present = backdrop.present && !p.render.transparent;
+  return drawn;
+}
+
+// A point's view differs from the centre's by the backdrop's share, taken on a coarser grid
+// than the surround's (16 x 32: the paper lit by the surround already converged, so one
+// pass) at both.
+constexpr int kSeenFromRows = 16;
+
+}  // namespace
+
+SkyIrradiance environment_seen_from(const EnvironmentFrame& f, const SceneParams& p, const LightRig& rig,
+                                    const BackdropSurface& backdrop, const glm::dvec3& at, const LightPasses& passes) {
+  SkyIrradiance there = f.media.surround;  // (without a backdrop both shares are zero)
+  const SkyIrradiance moved =
+      backdrop_share(Studio(p), rig, drawn_backdrop(p, backdrop), f.surround, at, kSeenFromRows, passes);
+  for (size_t k = 0; k < there.coef.size(); ++k) there.coef[k] += moved.coef[k] - f.centre_share.coef[k];
+  return there;
+}
+
 EnvironmentFrame environment_frame(const SceneParams& p, const LightRig& rig, const BackdropSurface& backdrop,
                                    const std::vector<glm::dvec3>& seen_from, const LightPasses& passes) {
   constexpr double kPi = std::numbers::pi;
   EnvironmentFrame f;
   const Studio studio(p);
   f.sky = sky_irradiance(studio);
-  BackdropSurface drawn = backdrop;  // (a transparent picture draws no floor, so none lights)
-  drawn.present = backdrop.present && !p.render.transparent;
+  const BackdropSurface drawn = drawn_backdrop(p, backdrop);
   f.surround = surround_irradiance(studio, f.sky, rig, drawn, rig.aim);
   f.media = media_light(studio, rig, f.surround);
-  // Each point's view differs from the centre's by the backdrop's share, taken on a
-  // coarser grid (16 x 32: the paper lit by the surround already converged, so one pass)
-  // at both, so the grid's own error cancels.
-  if (!seen_from.empty()) {
-    constexpr int kSeenFromRows = 16;
-    const SkyIrradiance centre = backdrop_share(studio, rig, drawn, f.surround, rig.aim, kSeenFromRows);
-    for (const glm::dvec3& at : seen_from) {
-      SkyIrradiance there = f.media.surround;  // (without a backdrop both shares are zero)
-      const SkyIrradiance moved = backdrop_share(studio, rig, drawn, f.surround, at, kSeenFromRows, passes);
-      for (size_t k = 0; k < there.coef.size(); ++k) there.coef[k] += moved.coef[k] - centre.coef[k];
-      f.media_seen_from.push_back(there);
-    }
-  }
+  if (drawn.present) f.centre_share = backdrop_share(studio, rig, drawn, f.surround, rig.aim, kSeenFromRows);
+  for (const glm::dvec3& at : seen_from) f.media_seen_from.push_back(environment_seen_from(f, p, rig, backdrop, at, passes));
   f.image = studio.image;
   f.rotation_cos = float(studio.rotation_cos);
   f.rotation_sin = float(studio.rotation_sin);

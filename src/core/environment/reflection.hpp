@@ -39,6 +39,10 @@ struct EnvironmentFrame {
   // head near the top of a pint sees the sweep's paper from twice the height); the image
   // and the sky are at infinity, the same from anywhere.
   std::vector<SkyIrradiance> media_seen_from;
+  // The backdrop's share of the surround seen from the scene's centre on the grid the
+  // points' views are taken on (16 x 32): each view is media.surround plus its own share
+  // less this one, so the grid's own error cancels (environment_seen_from).
+  SkyIrradiance centre_share;
   // env.mode image: the environment and how it is seen (Studio's image, rotation, blur).
   std::shared_ptr<const EnvironmentMap> image;
   float rotation_cos = 1, rotation_sin = 0, blur_lod = 0, intensity = 1;
@@ -48,8 +52,15 @@ struct EnvironmentFrame {
 // scene's objects between them (assemble_frame: each glass's drink as a column).
 using LightPasses = std::function<glm::dvec3(const glm::dvec3& from, const glm::dvec3& to)>;
 
+// The scene's surroundings, and media.surround seen from each point of seen_from (in
+// media_seen_from, in that order), the light's paths to the backdrop through `passes`.
 EnvironmentFrame environment_frame(const SceneParams&, const LightRig&, const BackdropSurface&,
                                    const std::vector<glm::dvec3>& seen_from = {}, const LightPasses& passes = {});
+// media.surround seen from `at` instead of the scene's centre, for a frame environment_frame
+// made from the same parameters, rig and backdrop: what environment_frame puts in
+// media_seen_from (assemble_frame's cache takes the views one at a time).
+SkyIrradiance environment_seen_from(const EnvironmentFrame&, const SceneParams&, const LightRig&,
+                                    const BackdropSurface&, const glm::dvec3& at, const LightPasses& passes = {});
 
 // The light around point `at` besides the rig's lights: the sky's harmonics `sky`, and
 // where a direction from `at` meets the backdrop, the backdrop's radiance instead of the

@@ -64,4 +64,15 @@ glm::dvec3 Studio::sky(const glm::dvec3& d) const {
 
 double Studio::floor_visibility(double dist) { return std::exp(-dist / 2.0); }
 
+std::string studio_params_key(const SceneParams& p) {
+  std::string key;
+  for (const ParamDesc& d : param_table()) {
+    if (d.scope != ParamScope::Scene) continue;
+    const std::string group = d.path.substr(0, d.path.find('.'));
+    if (group == "env" || group == "light" || group == "strips" || group == "backlight")
+      key += format_param(d, get_param(p, d)) + ";";
+  }
+  return key;
+}
+
 }  // namespace draught

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include <memory>
+#include <string>
 
 namespace draught {
 
@@ -36,5 +37,10 @@ struct Studio {
   // the studio's ground colour): it fades out over 2 m, as the picture's does.
   static double floor_visibility(double dist);
 };
+
+// Every value the studio and its lights are made of (each env.*, light.*, strips.* and
+// backlight.* parameter), as text: what a bake or a frame's light computed from them is
+// reused for while it stays the same (the MatCap's bake, assemble_frame's EnvironmentCache).
+std::string studio_params_key(const SceneParams&);
 
 }  // namespace draught

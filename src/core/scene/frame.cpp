@@ -1,11 +1,14 @@
 #include "core/scene/frame.hpp"
 
 #include "core/scene/camera.hpp"
+#include "core/environment/studio.hpp"
 #include "core/droplets/trail.hpp"
 #include "core/sim/scene_simulation.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 
@@ -165,25 +168,25 @@ double surface_on_axis(const VesselFrame& v) {
 }
 }  // namespace
 
-LightPasses drink_columns(const std::vector<VesselFrame>& vessels) {
-  struct Column {
-    glm::dquat to_local;
-    glm::dvec3 origin;
-    double radius, y0, y1;
-    glm::dvec3 absorption;
-  };
-  std::vector<Column> columns;
+std::vector<DrinkColumn> drink_column_list(const std::vector<VesselFrame>& vessels) {
+  std::vector<DrinkColumn> columns;
   for (const VesselFrame& v : vessels) {
     if (!v.has_liquid) continue;
-    const double level = surface_on_axis(v);
+    // The surface in steps of 0.5 mm: a settling head moves it all the time by far less
+    // than the shadow's edge can show, and each step would take the heads' views again.
+    const double level = std::round(surface_on_axis(v) / kViewStep) * kViewStep;
     if (level <= v.vessel.base) continue;
     columns.push_back({glm::inverse(v.pose.orientation), v.pose.position, v.mean_outer_radius, v.vessel.base, level,
                        glm::dvec3(v.liquid_absorption.effective())});
   }
+  return columns;
+}
+
+LightPasses light_passes(std::vector<DrinkColumn> columns) {
   if (columns.empty()) return {};
-  return [columns](const glm::dvec3& from, const glm::dvec3& to) {
+  return [columns = std::move(columns)](const glm::dvec3& from, const glm::dvec3& to) {
     glm::dvec3 pass(1.0);
-    for (const Column& c : columns) {
+    for (const DrinkColumn& c : columns) {
       const glm::dvec3 o = c.to_local * (from - c.origin), e = c.to_local * (to - c.origin);
       const glm::dvec3 d = e - o;  // the segment o + s d, s in [0, 1]
       double s0 = 0, s1 = 1;
@@ -213,7 +216,67 @@ LightPasses drink_columns(const std::vector<VesselFrame>& vessels) {
   };
 }
 
-FrameState assemble_frame(const SceneParams& scene, std::vector<VesselFrame> vessels, int selected, double time) {
+LightPasses drink_columns(const std::vector<VesselFrame>& vessels) { return light_passes(drink_column_list(vessels)); }
+
+namespace {
+
+// Numbers as exact text, for the cache's keys.
+void put_numbers(std::string& key, std::initializer_list<double> xs) {
+  char buf[32];
+  for (double x : xs) {
+    std::snprintf(buf, sizeof buf, "%.17g,", x);
+    key += buf;
+  }
+}
+
+// The frame's surroundings and each head's view of them, from the cache where what they
+// are made of is unchanged (EnvironmentCache), else computed (and kept when there is a cache).
+EnvironmentFrame frame_environment(const FrameState& f, const glm::dvec3& aim, const std::vector<glm::dvec3>& heads,
+                                   EnvironmentCache* cache) {
+  const SceneParams& p = f.params;
+  const std::vector<DrinkColumn> columns = heads.empty() ? std::vector<DrinkColumn>{} : drink_column_list(f.vessels);
+  if (!cache) return environment_frame(p, f.lights, f.backdrop, heads, light_passes(columns));
+  // The scene's part is made of the studio's parameters, whether the picture is
+  // transparent, the environment image as read (a file changed on disk is read again, a new
+  // map) and where the rig and the sweep stand (aim, and the backlight's aim through the
+  // drinks, light_rig's and backdrop_surface's other inputs).
+  const Studio studio(p);
+  std::string key = studio_params_key(p);
+  key += p.render.transparent ? "T;" : "F;";
+  key += std::to_string(reinterpret_cast<std::uintptr_t>(studio.image.get())) + ";";
+  const glm::dvec3 backlit = drink_aim(f.vessels);
+  put_numbers(key, {aim.x, aim.y, aim.z, backlit.x, backlit.y, backlit.z});
+  if (key != cache->scene_key) {
+    cache->scene = environment_frame(p, f.lights, f.backdrop);
+    cache->scene_key = std::move(key);
+    cache->views.clear();
+  }
+  // The heads' views are made of the scene's part, the drinks' columns and their own points.
+  std::string columns_key;
+  for (const DrinkColumn& c : columns)
+    put_numbers(columns_key, {c.to_local.w, c.to_local.x, c.to_local.y, c.to_local.z, c.origin.x, c.origin.y,
+                              c.origin.z, c.radius, c.y0, c.y1, c.absorption.x, c.absorption.y, c.absorption.z});
+  if (columns_key != cache->columns_key) {
+    cache->columns_key = std::move(columns_key);
+    cache->views.clear();
+  }
+  EnvironmentFrame e = cache->scene;
+  const LightPasses passes = light_passes(columns);
+  std::vector<std::pair<glm::dvec3, SkyIrradiance>> views;
+  for (const glm::dvec3& at : heads) {
+    auto kept = std::find_if(cache->views.begin(), cache->views.end(), [&](const auto& v) { return v.first == at; });
+    views.emplace_back(at, kept != cache->views.end() ? kept->second
+                                                       : environment_seen_from(e, p, f.lights, f.backdrop, at, passes));
+    e.media_seen_from.push_back(views.back().second);
+  }
+  cache->views = std::move(views);  // (the heads there are now: a head gone is not kept)
+  return e;
+}
+
+}  // namespace
+
+FrameState assemble_frame(const SceneParams& scene, std::vector<VesselFrame> vessels, int selected, double time,
+                          EnvironmentCache* cache) {
   FrameState f;
   f.params = scene;
   if (scene.screen.mode == int(ScreenMode::Background)) f.params.env.floor = false;
@@ -227,9 +290,11 @@ FrameState assemble_frame(const SceneParams& scene, std::vector<VesselFrame> ves
   f.backdrop = backdrop_surface(p.env, aim);
   std::vector<VesselFrame*> with_head;
   std::vector<glm::dvec3> heads;
+  // Each head sees the surroundings from its middle, in steps of 0.5 mm (a settling head
+  // moves all the time; a step changes its light by far less than a level of the picture).
   for (VesselFrame& v : f.vessels)
-    if (has_head(v)) with_head.push_back(&v), heads.push_back(head_middle(v));
-  f.environment = environment_frame(p, f.lights, f.backdrop, heads, drink_columns(f.vessels));
+    if (has_head(v)) with_head.push_back(&v), heads.push_back(glm::round(head_middle(v) / kViewStep) * kViewStep);
+  f.environment = frame_environment(f, aim, heads, cache);
   for (size_t k = 0; k < with_head.size(); ++k) with_head[k]->head_surround = f.environment.media_seen_from[k];
   f.screen = screen_frame(p, aim, time);
   return f;

@@ -193,7 +193,7 @@ FrameState SceneSimulation::frame() const {
       vessels.push_back(sims_[i]->frame());
       vessels.back().placement = scene_.objects[i].placement;
     }
-  FrameState f = assemble_frame(scene_.params, std::move(vessels), scene_.selected, time());
+  FrameState f = assemble_frame(scene_.params, std::move(vessels), scene_.selected, time(), &environment_cache_);
   for (size_t i = 0; i < trails_.size(); ++i)
     if (trails_[i]) {
       const Placement& at = scene_.objects[i].placement;

@@ -85,6 +85,8 @@ class SceneSimulation {
   MotionSample released(size_t object, double t);
   std::vector<Release> releases_;
   MotionSample last_input_;  // the selected glass's last motion, in its own stage
+  // The surroundings' light of the frames made so far (frame() is const: a cache, not state).
+  mutable EnvironmentCache environment_cache_;
 };
 
 }  // namespace draught

@@ -188,6 +188,80 @@ TEST(SceneSimulation, NewParametersKeepTheStateOfUnchangedGlasses) {
   EXPECT_EQ(sim.vessel(2)->params().liquid.srm, 20.0f);
 }
 
+// The surroundings' light an app's frames reuse (EnvironmentCache): every frame is the one
+// assemble_frame makes without the cache, bit for bit, while a glass tips, its drink is
+// drunk, the heads settle and the studio's parameters change.
+::testing::AssertionResult same_surroundings(const FrameState& a, const FrameState& b) {
+  auto same = [](const SkyIrradiance& x, const SkyIrradiance& y) {
+    for (size_t k = 0; k < x.coef.size(); ++k)
+      if (!bit_equal(x.coef[k], y.coef[k])) return false;
+    return true;
+  };
+  if (!same(a.environment.sky, b.environment.sky) || !same(a.environment.surround, b.environment.surround) ||
+      !same(a.environment.media.surround, b.environment.media.surround))
+    return ::testing::AssertionFailure() << "the scene's surroundings differ";
+  if (a.environment.media_seen_from.size() != b.environment.media_seen_from.size())
+    return ::testing::AssertionFailure() << "a head's view is missing";
+  for (size_t k = 0; k < a.environment.media_seen_from.size(); ++k)
+    if (!same(a.environment.media_seen_from[k], b.environment.media_seen_from[k]))
+      return ::testing::AssertionFailure() << "head " << k << " sees other surroundings";
+  for (size_t i = 0; i < a.vessels.size(); ++i)
+    if (!same(a.vessels[i].head_surround, b.vessels[i].head_surround))
+      return ::testing::AssertionFailure() << "vessel " << i << "'s head sees other surroundings";
+  if (a.environment.reflected != b.environment.reflected || a.environment.glint != b.environment.glint)
+    return ::testing::AssertionFailure() << "the bubbles' reflection differs";
+  return ::testing::AssertionSuccess();
+}
+
+TEST(SceneSimulation, TheSurroundingsKeptBetweenFramesAreTheOnesItWouldCompute) {
+  SceneSimulation sim(flight());
+  sim.select(2);
+  TipDriver tip(sim.vessel(2)->vessel().r_outer.front());
+  Scene changed = flight();
+  for (double t = 0.25; t <= 3.0; t += 0.25) {
+    sim.advance(tip, t, 0.02);
+    if (t == 1.5) {  // the studio changes under the frames
+      set_param(changed, parse_param_ref(changed, "env.intensity"), 0.6f);
+      set_param(changed, parse_param_ref(changed, "light.power"), 9.0f);
+      sim.set_scene(changed);
+    }
+    if (t == 2.5) {
+      set_param(changed, parse_param_ref(changed, "env.sweep_color"), glm::vec3(0.5f, 0.6f, 0.7f));
+      sim.set_scene(changed);
+    }
+    const FrameState kept = sim.frame();
+    const FrameState fresh = assemble_frame(kept.params, kept.vessels, kept.selected, kept.time);
+    ASSERT_TRUE(same_surroundings(kept, fresh)) << "at " << t << " s";
+  }
+}
+
+// ... and it is reused: a still scene's second frame takes the scene's part and each
+// head's view from the cache; a new parameter or a moved head does not.
+TEST(SceneSimulation, AStillSceneReusesItsSurroundings) {
+  const FrameState f = make_frame(flight());
+  EnvironmentCache cache;
+  assemble_frame(f.params, f.vessels, 0, 0, &cache);
+  ASSERT_EQ(cache.views.size(), 4u);
+  // Marked, so that a frame that took them from the cache shows it.
+  cache.scene.sky.coef[0].x = 123.0;
+  cache.views[1].second.coef[0].y = 456.0;
+  const FrameState again = assemble_frame(f.params, f.vessels, 0, 0, &cache);
+  EXPECT_EQ(again.environment.sky.coef[0].x, 123.0);
+  EXPECT_EQ(again.vessels[1].head_surround.coef[0].y, 456.0);
+  // A head a millimetre lower is seen again; the others are kept.
+  std::vector<VesselFrame> settled = f.vessels;
+  settled[1].foam.thickness -= 2e-3;
+  const FrameState lower = assemble_frame(f.params, settled, 0, 0, &cache);
+  EXPECT_NE(lower.vessels[1].head_surround.coef[0].y, 456.0);
+  EXPECT_EQ(lower.environment.sky.coef[0].x, 123.0);
+  // A parameter of the studio: everything again.
+  SceneParams brighter = f.params;
+  brighter.env.intensity = 1.5f;
+  const FrameState changed = assemble_frame(brighter, f.vessels, 0, 0, &cache);
+  EXPECT_NE(changed.environment.sky.coef[0].x, 123.0);
+  EXPECT_TRUE(same_surroundings(changed, assemble_frame(brighter, f.vessels)));
+}
+
 // A glass the selection leaves is put back upright smoothly (its drink sloshes as when a
 // hand sets a glass down), not snapped to rest; the newly selected glass follows input.
 TEST(SceneSimulation, ReleasedGlassEasesBackUpright) {
