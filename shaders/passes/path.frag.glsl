@@ -191,10 +191,12 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
   // it. (In a loop that a SIMD group leaves at once when none of its pixels meets an
   // outer wall at this event: llvmpipe runs straight-line code for every pixel.)
   BeadSample bead = BeadSample(false, vec3(0.0), 1.0);
+  vec3 bead_wall = vec3(0.0);  // the wall's outward normal under a bead (world)
   for (int k = 0; k < 1; ++k) {
     if (h.m != M_GLASS_OUTER) break;
     vec3 nl = to_local_dir(v, h.n);
     nl = dot(nl.xz, pl.xz) < 0.0 ? -nl : nl;
+    bead_wall = to_world_dir(v, nl);
     bead = condensation_bead(v, pl, nl);
     float fog = condensation_fog(v, pl) * bead.clear;
     if (fog <= 0.0) break;
@@ -242,7 +244,18 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
     // air; the lights and the sky from inside a glass, where it is absorbed on its way
     // out and leaves bent.
     vec3 r = reflect(path.d, c.n);
-    if (path.medium == MEDIUM_AIR) {
+    // Towards a bead's rim its cap is steep, and what it reflects goes down into the wall
+    // beside it, into the glass and the drink the path itself goes on to see: that share
+    // stays with the path. (Looked up as the surroundings it showed the studio's white at
+    // every rim: a speckle of white pixels over a beaded glass that the reference, which
+    // follows the reflection into the wall, does not have; docs/CONDENSATION.md.)
+    bool into_wall = false;
+#if CONDENSATION
+    into_wall = bead.found && path.medium == MEDIUM_AIR && dot(r, bead_wall) < 0.0;
+#endif
+    if (into_wall) {
+      // (the reflected share is not taken off the path below)
+    } else if (path.medium == MEDIUM_AIR) {
       if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true, h.obj);
     } else {
       vec3 out_dir;
@@ -256,7 +269,7 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
       }
 #endif
     }
-    path.thr *= 1.0 - c.F;
+    if (!into_wall) path.thr *= 1.0 - c.F;
 #if DECALS
     if (path.medium == MEDIUM_AIR) {
       path.radiance += path.thr * decal.light;

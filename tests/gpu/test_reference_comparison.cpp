@@ -364,10 +364,12 @@ INSTANTIATE_TEST_SUITE_P(
         // through the beads and the mist 2.89 / 5.35 (4.89 / 8.75 and 4.63 / 7.87 while the
         // picture lost the half of the mist's light that goes on through the wall). Against
         // 4096 paths (512 before, stop 43): glass 1.13 / 2.35, liquid 3.25 / 5.94, close up
-        // 2.97 / 4.43.
-        ComparisonCase{"cold-lager", SceneRequest{"cold-lager"}, 64, 4096, {1.3, 2.6}, {3.6, 6.6}, {0, 0}},
+        // 2.97 / 4.43. Since what a bead's steep rim reflects down into the wall stays with
+        // the path (stop 44; it showed the studio's white, a speckle the reference has not):
+        // glass 1.15 / 2.35, liquid 3.06 / 5.32, close up 2.86 / 4.47.
+        ComparisonCase{"cold-lager", SceneRequest{"cold-lager"}, 64, 4096, {1.3, 2.6}, {3.4, 5.9}, {0, 0}},
         ComparisonCase{"cold-lager-close", SceneRequest{"cold-lager", "", {}, {"eye=0,0.08,0.22", "target=0,0.08,0", "vfov=16"}},
-                       64, 4096, {0, 0}, {3.3, 4.9}, {0, 0}},
+                       64, 4096, {0, 0}, {3.2, 4.9}, {0, 0}},
         // The objects the reference marches (64x48): the droplets (the preset's view, and
         // close up), 1.16 / 2.04 and 1.87 / 3.87 (1.19 / 2.05 and 1.87 / 3.74 at 1024 and
         // 512 paths: what is left is the picture's, not the reference's noise); the molten
