@@ -231,8 +231,8 @@ void put_numbers(std::string& key, std::initializer_list<double> xs) {
 
 // The frame's surroundings and each head's view of them, from the cache where what they
 // are made of is unchanged (EnvironmentCache), else computed (and kept when there is a cache).
-EnvironmentFrame frame_environment(const FrameState& f, const glm::dvec3& aim, const std::vector<glm::dvec3>& heads,
-                                   EnvironmentCache* cache) {
+EnvironmentFrame frame_environment(const FrameState& f, const glm::dvec3& aim, const glm::dvec3& backlit,
+                                   const std::vector<glm::dvec3>& heads, EnvironmentCache* cache) {
   const SceneParams& p = f.params;
   const std::vector<DrinkColumn> columns = heads.empty() ? std::vector<DrinkColumn>{} : drink_column_list(f.vessels);
   if (!cache) return environment_frame(p, f.lights, f.backdrop, heads, light_passes(columns));
@@ -244,7 +244,6 @@ EnvironmentFrame frame_environment(const FrameState& f, const glm::dvec3& aim, c
   std::string key = studio_params_key(p);
   key += p.render.transparent ? "T;" : "F;";
   key += std::to_string(reinterpret_cast<std::uintptr_t>(studio.image.get())) + ";";
-  const glm::dvec3 backlit = drink_aim(f.vessels);
   put_numbers(key, {aim.x, aim.y, aim.z, backlit.x, backlit.y, backlit.z});
   if (key != cache->scene_key) {
     cache->scene = environment_frame(p, f.lights, f.backdrop);
@@ -286,7 +285,8 @@ FrameState assemble_frame(const SceneParams& scene, std::vector<VesselFrame> ves
   f.selected = std::clamp(selected, 0, std::max(0, int(f.vessels.size()) - 1));
   f.camera = frame_camera(p.camera, f.vessels);
   const glm::dvec3 aim = scene_aim(f.vessels);
-  f.lights = light_rig(p, aim, drink_aim(f.vessels));
+  const glm::dvec3 backlit = drink_aim(f.vessels);
+  f.lights = light_rig(p, aim, backlit);
   f.backdrop = backdrop_surface(p.env, aim);
   std::vector<VesselFrame*> with_head;
   std::vector<glm::dvec3> heads;
@@ -294,7 +294,7 @@ FrameState assemble_frame(const SceneParams& scene, std::vector<VesselFrame> ves
   // moves all the time; a step changes its light by far less than a level of the picture).
   for (VesselFrame& v : f.vessels)
     if (has_head(v)) with_head.push_back(&v), heads.push_back(glm::round(head_middle(v) / kViewStep) * kViewStep);
-  f.environment = frame_environment(f, aim, heads, cache);
+  f.environment = frame_environment(f, aim, backlit, heads, cache);
   for (size_t k = 0; k < with_head.size(); ++k) with_head[k]->head_surround = f.environment.media_seen_from[k];
   f.screen = screen_frame(p, aim, time);
   return f;
