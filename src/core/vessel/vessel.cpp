@@ -65,10 +65,29 @@ double Vessel::cavity_volume() const { return cavity_volume_below(height); }
 
 double Vessel::fill_height(double fraction) const {
   const double target = std::clamp(fraction, 0.0, 1.0) * cavity_volume();
-  double lo = base, hi = height;
+  // The segment the level lies in, by the whole segments' volumes below it (summed as
+  // cavity_volume_below sums them), then bisection within it: the volume below a height
+  // there is that sum and one frustum, so a solve costs a pass over the segments instead
+  // of one per step (drink_aim solves each glass's every frame).
+  double below = 0, y0 = base, lo = base, hi = height;
+  bool within = false;
+  for (int k = 0; k < kSegments && !within; ++k) {
+    const double a = std::max(k * dy, base), b = std::min((k + 1) * dy, height);
+    if (b <= a) continue;
+    const double whole = frustum_volume(inner_radius(a), inner_radius(b), b - a);
+    if (below + whole >= target) {
+      y0 = lo = a;
+      hi = b;
+      within = true;
+    } else {
+      below += whole;
+    }
+  }
+  if (!within) return target >= below ? height : base;  // (a NaN fraction: the floor, as before)
+  const double r0 = inner_radius(y0);
   for (int i = 0; i < 64; ++i) {
-    double mid = 0.5 * (lo + hi);
-    (cavity_volume_below(mid) < target ? lo : hi) = mid;
+    const double mid = 0.5 * (lo + hi);
+    (below + frustum_volume(r0, inner_radius(mid), mid - y0) < target ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
 }
