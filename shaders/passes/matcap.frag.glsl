@@ -64,7 +64,7 @@ vec3 seen_straight(vec3 o, vec3 d) {
   vec3 beyond = sky_seen(d, 0.0);
   if (on_backdrop) {
     vec3 p = o + tb * d;
-    beyond = shade_backdrop_mirrored(p, nb, d, tb) * mix(1.0, floor_contact(p), 0.8);
+    beyond = shade_backdrop_mirrored(p, nb, d, tb, false) * mix(1.0, floor_contact(p), 0.8);
   }
   return light.rgb * light.a + beyond * (1.0 - light.a);
 }

@@ -119,7 +119,7 @@ void look_out(Look l, inout vec3 radiance, inout LitBackdrop lit) {
   if (!l.mirrored) light = vec4(0.0);
 #endif
   vec3 p = l.o + tb * l.d;
-  vec3 beyond = on_backdrop ? shade_backdrop_mirrored(p, nb, l.d, tb) : sky_seen(l.d, l.rough);
+  vec3 beyond = on_backdrop ? shade_backdrop_mirrored(p, nb, l.d, tb, true) : sky_seen(l.d, l.rough);
   if (on_backdrop && !l.mirrored) {
     lit = LitBackdrop(p, nb, l.d, l.w * (1.0 - light.a));
     beyond = vec3(0.0);

@@ -113,11 +113,19 @@ vec3 shade_backdrop(vec3 p, vec3 n, vec3 d, float dist) {
 }
 
 // The backdrop as a glass mirrors it (a few per cent of a pixel): each light taken as a
-// point, no shadows, no contact; too small to see there, and cheap enough for every
-// reflection.
-vec3 shade_backdrop_mirrored(vec3 p, vec3 n, vec3 d, float dist) {
+// point, cheap enough for every reflection; with `shadows`, on the floor through the
+// traced map's shadows and caustics and darkened around the feet. (Without them a dark
+// drink's glass mirrored the paper round it unshadowed, brighter than it is: the stout
+// close up's body against the reference 2.20 -> 2.03, docs/REFERENCE.md. The MatCap tier
+// traces no map and darkens what it sees round the feet its own way.)
+vec3 shade_backdrop_mirrored(vec3 p, vec3 n, vec3 d, float dist, bool shadows) {
   BackdropSurface bd = backdrop_surface();
-  vec3 c = albedo(bd, p) / PI * (surround_irradiance(n) + rig_irradiance_far(p, n, g_light_count) + clouds_glow_irradiance(p, n));
+  vec3 direct = rig_irradiance_far(p, n, g_light_count), around = surround_irradiance(n);
+  if (shadows) {
+    if (n.y > 0.999) direct *= floor_light_factor(p);
+    around *= floor_contact(p);
+  }
+  vec3 c = albedo(bd, p) / PI * (around + direct + clouds_glow_irradiance(p, n));
   return backdrop_faded(bd, c, d, dist);
 }
 

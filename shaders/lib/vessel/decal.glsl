@@ -76,12 +76,12 @@ DecalSample decal_at(Vessel v, int m, vec3 p, float footprint) {
 }
 
 // The light the backdrop's floor sends a face of normal n at p, beyond the sky's: the
-// floor under p as a glass's reflection sees it (lit, unshadowed) over the part of what
+// floor under p lit and unshadowed (shade_backdrop_mirrored) over the part of what
 // the face sees that an endless floor fills, its view factor (1 - n.y) / 2. A decal facing
 // the camera gets about a third of its light from the lit paper in front of it.
 vec3 floor_bounce(vec3 p, vec3 n) {
   vec3 q = vec3(p.x, 0.0, p.z);
-  vec3 up = shade_backdrop_mirrored(q, vec3(0.0, 1.0, 0.0), normalize(q - frame.cam_eye), length(q - frame.cam_eye)) - frame.ground;
+  vec3 up = shade_backdrop_mirrored(q, vec3(0.0, 1.0, 0.0), normalize(q - frame.cam_eye), length(q - frame.cam_eye), false) - frame.ground;
   return frame.floor_on != 0 ? PI * max(up, vec3(0.0)) * 0.5 * (1.0 - n.y) : vec3(0.0);
 }
 
@@ -149,8 +149,9 @@ DecalEffect decal_effect(Vessel v, Hit h, int medium, vec3 p, vec3 pl, vec3 d, b
 
 // The mean of what the surroundings show from p over `taps` directions about unit m: m
 // itself, then a ring of six at spread.x from it, then a ring of six at spread.y (turned
-// by 30 degrees). Each direction sees a light's front, else the backdrop (lit as a glass's
-// reflection of it is: lights as points, no shadows), else the sky. One call site in the
+// by 30 degrees). Each direction sees a light's front, else the backdrop (lights as
+// points, and, for up to 13 taps a pixel, without the glass's reflections' shadows), else
+// the sky. One call site in the
 // path pass (llvmpipe pays for every copy of inlined code, run or not).
 vec3 decal_surroundings(vec3 p, vec3 m, vec2 spread, float rough, int taps) {
   vec3 t = normalize(abs(m.y) < 0.9 ? cross(m, vec3(0.0, 1.0, 0.0)) : cross(m, vec3(1.0, 0.0, 0.0)));
@@ -165,7 +166,7 @@ vec3 decal_surroundings(vec3 p, vec3 m, vec2 spread, float rough, int taps) {
     vec3 nb;
     bool on_backdrop = intersect(backdrop_surface(), p, d, 0.0, tb, nb);
     vec4 light = lights_seen(p, d, rough, tb, tl);
-    vec3 beyond = on_backdrop ? shade_backdrop_mirrored(p + tb * d, nb, d, tb) : sky_seen(d, rough);
+    vec3 beyond = on_backdrop ? shade_backdrop_mirrored(p + tb * d, nb, d, tb, false) : sky_seen(d, rough);
     sum += light.rgb * light.a + beyond * (1.0 - light.a);
   }
   return sum / max(float(taps), 1.0);
