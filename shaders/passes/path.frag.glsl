@@ -253,10 +253,8 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
 #if CONDENSATION
     into_wall = bead.found && path.medium == MEDIUM_AIR && dot(r, bead_wall) < 0.0;
 #endif
-    if (into_wall) {
-      // (the reflected share is not taken off the path below)
-    } else if (path.medium == MEDIUM_AIR) {
-      if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true, h.obj);
+    if (path.medium == MEDIUM_AIR) {
+      if (!transparent && !into_wall) look = Look(p, r, path.thr * c.F, rough, true, true, h.obj);
     } else {
       vec3 out_dir;
       vec3 tr = reflected_light(v, g, h.m, path.medium, below, path.drink == h.obj ? path.left : v.body.absorption_share, pl,

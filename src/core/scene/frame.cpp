@@ -260,10 +260,11 @@ EnvironmentFrame frame_environment(const FrameState& f, const glm::dvec3& aim, c
     cache->views.clear();
   }
   EnvironmentFrame e = cache->scene;
-  const LightPasses passes = light_passes(columns);
+  LightPasses passes;  // (made only when a view is taken again)
   std::vector<std::pair<glm::dvec3, SkyIrradiance>> views;
   for (const glm::dvec3& at : heads) {
     auto kept = std::find_if(cache->views.begin(), cache->views.end(), [&](const auto& v) { return v.first == at; });
+    if (kept == cache->views.end() && !passes) passes = light_passes(columns);
     views.emplace_back(at, kept != cache->views.end() ? kept->second
                                                        : environment_seen_from(e, p, f.lights, f.backdrop, at, passes));
     e.media_seen_from.push_back(views.back().second);
