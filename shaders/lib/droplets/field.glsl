@@ -103,6 +103,38 @@ vec4 droplet_field(vec3 p) {
 
 float droplet_value(vec3 p) { return droplet_field(p).x; }
 
+// Twin of droplet_reach: how far beyond its spheres the field's surface can lie (the
+// smooth minimum's deepest dip below the nearest sphere, and the noise's amplitude).
+float droplet_reach() {
+  float n = float(frame.droplet_count);
+  float blend = n <= 1.0 ? 0.0 : frame.droplet_kernel == 1 ? droplet_exp_width(frame.droplet_blend) * log(n) : frame.droplet_blend;
+  return blend + max(frame.droplet_noise_amplitude, 0.0);
+}
+
+// Twin of droplet_sphere_span: the part of [t0, t1] along o + t d (d of unit length)
+// from where it first enters one of the spheres grown by the reach (and the skim's
+// margin, as the box) to where it last leaves one. The surface lies within them, so a
+// march may start and end there: a line through the gaps of a stretched trail, which its
+// box holds, marches nothing.
+bool droplet_sphere_span(vec3 o, vec3 d, inout float t0, inout float t1) {
+  float grow = droplet_reach() + 2.0 * DROPLET_SKIM, s0 = INF, s1 = -INF;
+  for (int i = 0; i < MAX_DROPLETS; ++i) {
+    if (i >= frame.droplet_count) break;
+    vec4 s = frame.droplet_spheres[i];
+    float r = s.w + grow;
+    vec3 q = o - s.xyz;
+    float b = dot(q, d), disc = b * b - (dot(q, q) - r * r);
+    if (r > 0.0 && disc >= 0.0) {
+      float h = sqrt(disc);
+      s0 = min(s0, -b - h);
+      s1 = max(s1, -b + h);
+    }
+  }
+  t0 = max(t0, s0);
+  t1 = min(t1, s1);
+  return t0 <= t1;
+}
+
 // Twin of march_droplets: the first crossing along o + t d in [tmin, tmax], from outside
 // (inside false) or from within a droplet; the same samples as the reference, in the
 // same order. One field sample per iteration of a single loop (the start, a relaxed step,
@@ -119,12 +151,13 @@ bool march_droplets(vec3 o, vec3 d, float tmin, float tmax, bool inside, out flo
   vec3 ta = (frame.droplet_bound_lo - o) * inv, tb = (frame.droplet_bound_hi - o) * inv;
   vec3 lo = min(ta, tb), hi = max(ta, tb);
   float t0 = max(max(lo.x, lo.y), max(lo.z, tmin)), t1 = min(min(hi.x, hi.y), min(hi.z, tmax));
+  bool spans = t0 <= t1 && droplet_sphere_span(o, d, t0, t1);
   float L = frame.droplet_lipschitz, A = frame.droplet_noise_amplitude, sgn = inside ? -1.0 : 1.0;
   // t: the march's point (value >= 0 there), r: the radius free of the surface around it;
   // x: the next sample; e: the far end of a bracket being bisected.
   float t = t0, r = 0.0, x = t0, e = t0, vt = 0.0, ve = 0.0;
   int mode = DROPLET_MODE_START, count = 0;
-  bool going = t0 <= t1, hit = false;
+  bool going = spans, hit = false;
   for (int i = 0; i < DROPLET_MAX_SAMPLES; ++i) {
     if (!going) break;
     float blend;

@@ -140,13 +140,32 @@ bool droplet_box_span(const DropletBounds& b, glm::dvec3 o, glm::dvec3 d, double
   return t0 <= t1;
 }
 
+bool droplet_sphere_span(const DropletField& f, glm::dvec3 o, glm::dvec3 d, double& t0, double& t1) {
+  const double grow = droplet_reach(f) + 2.0 * kDropletSkim;
+  const size_t n = std::min(f.spheres.size(), size_t(kMaxDroplets));
+  double s0 = std::numeric_limits<double>::infinity(), s1 = -s0;
+  for (size_t i = 0; i < n; ++i) {
+    const double r = f.spheres[i].radius + grow;
+    const glm::dvec3 q = o - f.spheres[i].centre;
+    const double b = glm::dot(q, d), disc = b * b - (glm::dot(q, q) - r * r);
+    if (r > 0 && disc >= 0) {
+      const double h = std::sqrt(disc);
+      s0 = std::min(s0, -b - h);
+      s1 = std::max(s1, -b + h);
+    }
+  }
+  t0 = std::max(t0, s0);
+  t1 = std::min(t1, s1);
+  return t0 <= t1;
+}
+
 std::optional<DropletHit> march_droplets(const DropletField& f, glm::dvec3 o, glm::dvec3 d, double tmin,
                                          double tmax, bool inside) {
   double t0, t1;
   DropletBounds box = droplet_bounds(f);
   box.lo -= 2.0 * kDropletSkim;  // a crossing on the box's face is found from inside it
   box.hi += 2.0 * kDropletSkim;
-  if (!droplet_box_span(box, o, d, tmin, tmax, t0, t1)) return std::nullopt;
+  if (!droplet_box_span(box, o, d, tmin, tmax, t0, t1) || !droplet_sphere_span(f, o, d, t0, t1)) return std::nullopt;
   const double L = droplet_lipschitz(f), A = std::max(f.noise_amplitude, 0.0), sign = inside ? -1.0 : 1.0;
   // One sample: the value (signed for the side the ray starts on), the radius around
   // the point free of the surface, the gradient.

@@ -89,7 +89,8 @@ struct DropletHit {
 
 // The first crossing of the field's surface along o + t d (d unit) for t in [tmin, tmax]:
 // from outside (inside = false: the field goes from + to -) or from inside a droplet
-// (inside = true). The ray is clipped to droplet_bounds. Around each point the march
+// (inside = true). The ray is clipped to droplet_bounds and then to droplet_sphere_span
+// (a line through the gaps of a stretched trail marches nothing). Around each point the march
 // knows a radius free of the surface: value / L (Lipschitz), or where the spheres' blend
 // b (before the noise, 1-Lipschitz) exceeds the noise amplitude A, b - A if larger (the
 // surface needs b <= A), so far from the droplets the steps are the blend's distance, not
@@ -113,5 +114,10 @@ std::optional<DropletHit> march_droplets(const DropletField&, glm::dvec3 o, glm:
 // The span [t0, t1] of o + t d inside the box (false: it misses or lies before tmin).
 bool droplet_box_span(const DropletBounds&, glm::dvec3 o, glm::dvec3 d, double tmin, double tmax, double& t0,
                       double& t1);
+
+// Narrows [t0, t1] of o + t d (d unit) to where it first enters one of the spheres grown by
+// droplet_reach and the box's margin (2 kDropletSkim) and last leaves one (false: it
+// meets none there). The surface lies within them. Twin: droplet_sphere_span (GLSL).
+bool droplet_sphere_span(const DropletField&, glm::dvec3 o, glm::dvec3 d, double& t0, double& t1);
 
 }  // namespace draught

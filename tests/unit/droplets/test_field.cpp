@@ -233,6 +233,55 @@ TEST(DropletMarch, NeverSkipsACrossingOfDenseSampling) {
   }
 }
 
+// A stretched trail: small spheres along a wavy line, the blend bridging the narrower
+// gaps between them; the box round them all holds much empty space.
+DropletField stretched_trail(BlendKernel kernel) {
+  DropletField f;
+  f.kernel = kernel;
+  f.blend = 0.006;
+  f.noise_amplitude = 0.0008;
+  f.noise_frequency = 90;
+  for (int i = 0; i < 16; ++i)
+    f.spheres.push_back({{-0.1 + 0.0125 * i, 0.02 * std::sin(0.7 * i), 0.0}, 0.006 - 0.0002 * i});
+  return f;
+}
+
+TEST(DropletMarch, TheGrownSpheresSpanHoldsTheSurface) {
+  for (BlendKernel k : {BlendKernel::Polynomial, BlendKernel::Exponential}) {
+    const DropletField f = stretched_trail(k);
+    const DropletBounds box = droplet_bounds(f);
+    std::mt19937 g(10);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    int through_gaps = 0, crossing = 0;
+    for (int i = 0; i < 400; ++i) {
+      // From 0.3 m away, aimed at a point of the box.
+      const glm::dvec3 o = 0.3 * random_dir(g);
+      const glm::dvec3 at = box.lo + glm::dvec3(u(g), u(g), u(g)) * (box.hi - box.lo);
+      const glm::dvec3 d = glm::normalize(at - o);
+      double t0 = 0, t1 = 0;
+      if (!droplet_box_span(box, o, d, 0.0, 0.6, t0, t1)) continue;
+      const double step = 2e-5;
+      double deepest;
+      const double first = dense_first_crossing(f, o, d, 0.6, step, &deepest);
+      if (!droplet_sphere_span(f, o, d, t0, t1)) {
+        // The box holds this line but no grown sphere does: the field stays positive.
+        ++through_gaps;
+        EXPECT_LT(first, 0.0) << "ray " << i;
+        EXPECT_EQ(deepest, 0.0) << "ray " << i;
+        continue;
+      }
+      if (first < 0) continue;
+      ++crossing;
+      // The first crossing from each end lies within the span.
+      const double last = 0.6 - dense_first_crossing(f, o + 0.6 * d, -d, 0.6, step);
+      EXPECT_GE(first, t0 - step) << "ray " << i;
+      EXPECT_LE(last, t1 + step) << "ray " << i;
+    }
+    EXPECT_GT(through_gaps, 50);
+    EXPECT_GT(crossing, 50);
+  }
+}
+
 TEST(DropletMarch, GrazingRaysFindNoHoles) {
   // Rays passing the silhouette of the blended cluster within micrometres: every ray the
   // dense sampling sees cross must hit, whatever its angle.
