@@ -234,6 +234,7 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   r.anisotropy = fp.anisotropy;
   r.foam_color = glm::vec3(foam_single_scattering_albedo(glm::dvec3(fp.color), fp.anisotropy));
   r.under_chord = float(drink_mean_chord(vf));
+  r.wall_diffuse = float(wall_diffuse_transmittance(vp.glass.ior));
   r.bubble_size = fp.bubble_size;
   r.detail = fp.detail;
   const int bubbles = head ? std::min<int>(int(vf.big_bubbles.size()), contract::kMaxBigBubbles) : 0;

@@ -158,12 +158,6 @@ float wall_transmittance(float cos_i, float ior) {
   float t = 1.0 - fresnel_dielectric(cos_i, 1.0, ior);
   return t * t;
 }
-// ... and of even light (its cosine-weighted mean: 0.84 for ior 1.5, 0.92 face-on).
-float wall_diffuse_transmittance(float ior) {
-  float sum = 0.0;
-  for (int k = 0; k < 8; ++k) sum += wall_transmittance(sqrt((float(k) + 0.5) / 8.0), ior);
-  return sum / 8.0;
-}
 
 HeadLight head_light(Vessel v, ObjectFoam f) {
   HeadLight h;
@@ -197,7 +191,7 @@ HeadLight head_light(Vessel v, ObjectFoam f) {
     h.l[i] = to_local_dir(v, lit.xyz);
   }
   h.ior = fetch_object_glass(v.row).glass_ior;
-  h.wall_diffuse = wall_diffuse_transmittance(h.ior);
+  h.wall_diffuse = f.wall_diffuse;  // (of even light: core wall_diffuse_transmittance, once per frame)
   return h;
 }
 

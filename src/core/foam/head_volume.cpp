@@ -1,6 +1,7 @@
 #include "core/foam/head_volume.hpp"
 
 #include "core/math/noise.hpp"
+#include "core/reference/optics.hpp"
 #include "core/scene/frame.hpp"
 
 #include <algorithm>
@@ -47,6 +48,15 @@ glm::dvec3 foam_single_scattering_albedo(const glm::dvec3& reflectance, double g
     out[c] = (1 - s2) / (1 - s2 * g);
   }
   return out;
+}
+
+double wall_diffuse_transmittance(double glass_ior) {
+  double sum = 0.0;
+  for (int k = 0; k < 8; ++k) {
+    const double t = 1.0 - fresnel_dielectric(std::sqrt((k + 0.5) / 8.0), 1.0, glass_ior);
+    sum += t * t;
+  }
+  return sum / 8.0;
 }
 
 double drink_mean_chord(const VesselFrame& vf) {

@@ -29,6 +29,12 @@ glm::dvec3 foam_single_scattering_albedo(const glm::dvec3& reflectance, double g
 // there is no liquid. The picture's head tints its underside's light by the drink over it.
 double drink_mean_chord(const VesselFrame& vf);
 
+// What a glass wall (two faces, air on both sides) lets through of even light: the
+// cosine-weighted mean over incidence of (1 - F)^2, by 8 midpoints in cos^2 (0.84 for
+// ior 1.5). The head's side face takes its light through the wall
+// (lib/foam/head.glsl, the object record's wall_diffuse).
+double wall_diffuse_transmittance(double glass_ior);
+
 class HeadVolume {
  public:
   // The head of vessel frame `vf` cut by `clip` (a VesselGeometry's); empty() when the

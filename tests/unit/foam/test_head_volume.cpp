@@ -139,5 +139,14 @@ TEST(HeadVolume, NoHeadWithoutLiquid) {
   EXPECT_TRUE(HeadVolume(f.vessels[0], scene_geometry(f).vessels[0]).empty());
 }
 
+TEST(HeadVolume, TheWallPassesMostOfEvenLight) {
+  // No interface: all of it. Glass of 1.5: 0.84 (two faces' Fresnel, cosine-weighted;
+  // 0.92 face-on, (1 - 0.04)^2). Denser glass passes less.
+  EXPECT_NEAR(wall_diffuse_transmittance(1.0), 1.0, 1e-12);
+  EXPECT_NEAR(wall_diffuse_transmittance(1.5), 0.84, 0.01);
+  EXPECT_LT(wall_diffuse_transmittance(1.9), wall_diffuse_transmittance(1.5));
+  EXPECT_GT(wall_diffuse_transmittance(1.9), 0.7);
+}
+
 }  // namespace
 }  // namespace draught
