@@ -12,7 +12,7 @@
 
 const float DROPLET_SKIM = 4.0 * DROPLET_HIT_EPS;  // core: kDropletSkim
 const float DROPLET_RELAX = 1.6;                   // core: kDropletRelax
-const int DROPLET_BISECTIONS = 10;                 // core: kDropletBisections
+const int DROPLET_BISECTIONS = 6;                  // core: kDropletBisections
 // Samples of one march at most: the start, two a step, the bisections.
 const int DROPLET_MAX_SAMPLES = 2 * DROPLET_MAX_STEPS + DROPLET_BISECTIONS + 1;
 
@@ -153,9 +153,10 @@ bool march_droplets(vec3 o, vec3 d, float tmin, float tmax, bool inside, out flo
   float t0 = max(max(lo.x, lo.y), max(lo.z, tmin)), t1 = min(min(hi.x, hi.y), min(hi.z, tmax));
   bool spans = t0 <= t1 && droplet_sphere_span(o, d, t0, t1);
   float L = frame.droplet_lipschitz, A = frame.droplet_noise_amplitude, sgn = inside ? -1.0 : 1.0;
-  // t: the march's point (value >= 0 there), r: the radius free of the surface around it;
-  // x: the next sample; e: the far end of a bracket being bisected.
+  // t: the march's point (value >= 0 there, gradient gt), r: the radius free of the
+  // surface around it; x: the next sample; e: the far end of a bracket being bisected.
   float t = t0, r = 0.0, x = t0, e = t0, vt = 0.0, ve = 0.0;
+  vec3 gt = vec3(0.0), ge = vec3(0.0);
   int mode = DROPLET_MODE_START, count = 0;
   bool going = spans, hit = false;
   for (int i = 0; i < DROPLET_MAX_SAMPLES; ++i) {
@@ -168,15 +169,18 @@ bool march_droplets(vec3 o, vec3 d, float tmin, float tmax, bool inside, out flo
       if (v < 0.0) {
         e = x;
         ve = v;
+        ge = f.yzw;
       } else {
         t = x;
         vt = v;
+        gt = f.yzw;
       }
       if (count == DROPLET_BISECTIONS) {
         hit = true;
         going = false;
-        t_hit = t + (e - t) * vt / (vt - ve);
-        n = f.yzw;
+        float w = vt / (vt - ve);
+        t_hit = t + (e - t) * w;
+        n = mix(gt, ge, w);
       } else {
         x = 0.5 * (t + e);
       }
@@ -197,6 +201,7 @@ bool march_droplets(vec3 o, vec3 d, float tmin, float tmax, bool inside, out flo
       } else if (crossed) {
         e = x;
         ve = v;
+        ge = f.yzw;
         x = 0.5 * (t + e);
         mode = DROPLET_MODE_BISECT;
         count = 0;
@@ -207,6 +212,7 @@ bool march_droplets(vec3 o, vec3 d, float tmin, float tmax, bool inside, out flo
         // the relaxed step.
         t = x;
         vt = v;
+        gt = f.yzw;
         r = rx;
         bool skim = v < DROPLET_HIT_EPS;
         x = skim ? t + DROPLET_SKIM : t + DROPLET_RELAX * r;

@@ -185,23 +185,25 @@ std::optional<DropletHit> march_droplets(const DropletField& f, glm::dvec3 o, gl
     h.steps = steps;
     return h;
   };
-  // The crossing between a (value va >= 0) and b (value vb < 0): bisected, then placed by
-  // the line through the bracket's ends; the normal is the last sample's gradient (a
-  // fraction of a micrometre away).
-  auto refine = [&](double a, double va, double b, double vb, int steps) {
-    Sample s{};
+  // The crossing between a (value va >= 0, gradient ga) and b (value vb < 0, gradient gb):
+  // bisected, then placed by the line through the bracket's ends, the normal the
+  // gradients' mix at the same share (the bracket is a few hundredths of a millimetre).
+  auto refine = [&](double a, double va, glm::dvec3 ga, double b, double vb, glm::dvec3 gb, int steps) {
     for (int i = 0; i < kDropletBisections; ++i) {
       const double m = 0.5 * (a + b);
-      s = sample(m);
+      const Sample s = sample(m);
       if (s.v < 0) {
         b = m;
         vb = s.v;
+        gb = s.grad;
       } else {
         a = m;
         va = s.v;
+        ga = s.grad;
       }
     }
-    return hit_at(a + (b - a) * va / (va - vb), s, steps);
+    const double w = va / (va - vb);
+    return hit_at(a + (b - a) * w, Sample{0.0, 0.0, ga + (gb - ga) * w}, steps);
   };
   double t = t0;
   Sample at = sample(t);
@@ -219,7 +221,7 @@ std::optional<DropletHit> march_droplets(const DropletField& f, glm::dvec3 o, gl
       s = sample(next);
     }
     if (next > t1) return std::nullopt;
-    if (s.v < 0) return refine(t, at.v, next, s.v, step);
+    if (s.v < 0) return refine(t, at.v, at.grad, next, s.v, s.grad, step);
     t = next;
     at = s;
   }
