@@ -104,6 +104,7 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
     b.droplet_noise_amplitude = float(field.noise_amplitude);
     b.droplet_noise_frequency = float(field.noise_frequency);
     b.droplet_lipschitz = float(droplet_lipschitz(field));
+    b.droplet_margin = float(droplet_margin(field));
     b.droplet_ior = d.params.ior;
     b.droplet_roughness = d.params.roughness;
     b.droplet_absorption = d.params.absorption;

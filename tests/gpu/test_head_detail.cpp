@@ -19,11 +19,11 @@ namespace {
 
 // The mean linear light of the part [x0, x1) x [y0, y1) of a picture, in 48ths of its size.
 std::array<double, 3> mean_light(const Image& img, int x0, int x1, int y0, int y1) {
-  const int s = img.width / 48;
+  const int scale = img.width / 48;
   std::array<double, 3> sum{};
   int n = 0;
-  for (int y = y0 * s; y < y1 * s; ++y)
-    for (int x = x0 * s; x < x1 * s; ++x, ++n)
+  for (int y = y0 * scale; y < y1 * scale; ++y)
+    for (int x = x0 * scale; x < x1 * scale; ++x, ++n)
       for (int c = 0; c < 3; ++c) sum[size_t(c)] += srgb_to_linear(img.px(x, y)[c] / 255.0);
   for (double& s : sum) s /= n;
   return sum;

@@ -103,21 +103,13 @@ vec4 droplet_field(vec3 p) {
 
 float droplet_value(vec3 p) { return droplet_field(p).x; }
 
-// Twin of droplet_reach: how far beyond its spheres the field's surface can lie (the
-// smooth minimum's deepest dip below the nearest sphere, and the noise's amplitude).
-float droplet_reach() {
-  float n = float(frame.droplet_count);
-  float blend = n <= 1.0 ? 0.0 : frame.droplet_kernel == 1 ? droplet_exp_width(frame.droplet_blend) * log(n) : frame.droplet_blend;
-  return blend + max(frame.droplet_noise_amplitude, 0.0);
-}
-
 // Twin of droplet_sphere_span: the part of [t0, t1] along o + t d (d of unit length)
-// from where it first enters one of the spheres grown by the reach (and the skim's
-// margin, as the box) to where it last leaves one. The surface lies within them, so a
+// from where it first enters one of the spheres grown by frame.droplet_margin (the
+// field's reach and the box's skim margin, from core) to where it last leaves one. The surface lies within them, so a
 // march may start and end there: a line through the gaps of a stretched trail, which its
 // box holds, marches nothing.
 bool droplet_sphere_span(vec3 o, vec3 d, inout float t0, inout float t1) {
-  float grow = droplet_reach() + 2.0 * DROPLET_SKIM, s0 = INF, s1 = -INF;
+  float grow = frame.droplet_margin, s0 = INF, s1 = -INF;
   for (int i = 0; i < MAX_DROPLETS; ++i) {
     if (i >= frame.droplet_count) break;
     vec4 s = frame.droplet_spheres[i];

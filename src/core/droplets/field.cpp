@@ -140,8 +140,10 @@ bool droplet_box_span(const DropletBounds& b, glm::dvec3 o, glm::dvec3 d, double
   return t0 <= t1;
 }
 
+double droplet_margin(const DropletField& f) { return droplet_reach(f) + 2.0 * kDropletSkim; }
+
 bool droplet_sphere_span(const DropletField& f, glm::dvec3 o, glm::dvec3 d, double& t0, double& t1) {
-  const double grow = droplet_reach(f) + 2.0 * kDropletSkim;
+  const double grow = droplet_margin(f);
   const size_t n = std::min(f.spheres.size(), size_t(kMaxDroplets));
   double s0 = std::numeric_limits<double>::infinity(), s1 = -s0;
   for (size_t i = 0; i < n; ++i) {

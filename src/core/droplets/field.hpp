@@ -115,9 +115,13 @@ std::optional<DropletHit> march_droplets(const DropletField&, glm::dvec3 o, glm:
 bool droplet_box_span(const DropletBounds&, glm::dvec3 o, glm::dvec3 d, double tmin, double tmax, double& t0,
                       double& t1);
 
+// How far the spheres are grown for droplet_sphere_span: droplet_reach and the box's
+// margin, 2 kDropletSkim (the renderer's frame.droplet_margin).
+double droplet_margin(const DropletField&);
+
 // Narrows [t0, t1] of o + t d (d unit) to where it first enters one of the spheres grown by
-// droplet_reach and the box's margin (2 kDropletSkim) and last leaves one (false: it
-// meets none there). The surface lies within them. Twin: droplet_sphere_span (GLSL).
+// droplet_margin and last leaves one (false: it meets none there). The surface lies
+// within them. Twin: droplet_sphere_span (GLSL).
 bool droplet_sphere_span(const DropletField&, glm::dvec3 o, glm::dvec3 d, double& t0, double& t1);
 
 }  // namespace draught
