@@ -39,6 +39,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/vessel/decal_files.cpp
   src/core/vessel/view_thickness.cpp
   src/core/liquid/beverage.cpp
+  src/core/liquid/haze.cpp
   src/core/liquid/slosh.cpp
   src/core/foam/foam.cpp
   src/core/foam/head_volume.cpp

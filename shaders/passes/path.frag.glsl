@@ -178,7 +178,7 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
       path.left = v.body.absorption_share;
     }
     vec3 colour = drink_onward(v.body, path.left, h.t);
-    path.radiance += path.thr * haze_inscatter(v, colour, h.t);
+    path.radiance += path.thr * haze_inscatter(v, colour, h.t, path.o, path.d);
     path.thr *= colour * exp(-v.liquid.haze * h.t);
   } else {
     path.thr *= medium_transmittance(v, g, path.medium, vec3(0.5), h.t);
@@ -594,6 +594,13 @@ vec4 debug_medium_rule() {
   int m = int(gl_FragCoord.x), y = int(gl_FragCoord.y);
   return vec4(float(medium_across(m, y % 3, y >= 3)), 0.0, 0.0, 1.0);
 }
+// The haze's diffusion field of object 0 over a grid of radii (core haze_field's twin;
+// tests/gpu/test_furnace.cpp compares them).
+vec4 debug_haze_field() {
+  float R = 0.01 * (floor(gl_FragCoord.y) + 1.0);
+  float r = floor(gl_FragCoord.x) / max(frame.viewport_size.x - 1.0, 1.0) * R;
+  return vec4(haze_field(fetch_object_haze(0), r, R), R);
+}
 // The studio alone along the camera ray, for the twins' tests (tests/gpu/test_lights.cpp
 // against core's AreaLight and BackdropSurface). LightHit: (t of the nearest light
 // front, 0 for none; its index, -1; t of the backdrop, 0 for none; its albedo's green).
@@ -647,6 +654,10 @@ void main() {
   }
   if (view == VIEW_DEPTH || view == VIEW_NORMAL || view == VIEW_MATERIAL) {
     frag_color = debug_first_surface(frame.cam_eye, dir, view);
+    return;
+  }
+  if (view == VIEW_HAZE_FIELD) {
+    frag_color = debug_haze_field();
     return;
   }
   if (view == VIEW_LIGHT_HIT || view == VIEW_BACKDROP || view == VIEW_LIGHT_IRRADIANCE || view == VIEW_BACKDROP_LIGHT) {

@@ -3,6 +3,7 @@
 #include "core/pointcloud/glow_light.hpp"
 
 #include "core/foam/head_volume.hpp"
+#include "core/liquid/haze.hpp"
 #include "core/scene/camera.hpp"
 #include "gpu/condensation_textures.hpp"
 #include "gpu/decal_textures.hpp"
@@ -195,32 +196,30 @@ contract::ObjectRecord pack_object(const FrameState& f, int row) {
   const glm::dvec3 middle = vessel_middle(vf);
   const MediaLight& media = f.environment.media;
   const int lights = std::min<int>(int(media.lights.size()), contract::kMaxLights);
-  // The haze's light (single scattering, isotropic: the radiance arriving from all around
-  // over 4 pi): the mean radiance around it (the sky and the lit backdrop) and each
-  // light's irradiance over 4 pi (a quarter of it over pi; it was a quarter of it, pi
-  // times too much: the hefeweizen's liquid against the reference 9.3 -> 5.9), reaching
-  // the inside through 0.7 of the mean radius of the drink. The same for every pixel, so
-  // here once, not per segment of every path.
-  glm::dvec3 haze_in = mean_radiance(media.surround);
+  // The haze's light (isotropic scattering): the surroundings' mean radiance, held beyond
+  // the wall, and each light's irradiance over 4 pi from its side, both falling off
+  // inwards as diffusion's kappa (core/liquid/haze.hpp; a hefeweizen's liquid against the
+  // reference 2.82 -> 1.31 where one tint at 0.7 of the mean radius served the whole
+  // drink: the side the key lights and the edges came out dark and too saturated).
+  const glm::dvec3 surround = mean_radiance(media.surround);
+  glm::dvec3 haze_in = surround;
   for (int i = 0; i < lights; ++i) {
     const AreaLight& l = media.lights[size_t(i)];
     const glm::dvec3 to = glm::normalize(l.center - middle);
     r.lit_by[i] = {glm::vec3(to), float(l.irradiance_factor(middle, to))};
     haze_in += glm::dvec3(l.radiance) * double(r.lit_by[i].w) / (4.0 * std::numbers::pi);
   }
-  // The light reaches the haze diffusely: scattered on its way, it travels further than a
-  // straight chord and the drink absorbs it all along, so it decays as diffusion's
-  // kappa = sqrt(3 sigma_a (sigma_a + sigma_s)) (isotropic haze: the haze's own
-  // absorption, its share 1 - haze_color, counted), never slower than the drink's
-  // absorption alone. A hefeweizen (haze 45 /m) turns from lemon to the orange of the
-  // reference path tracer's, which follows every scattering (docs/REFERENCE.md: its
-  // liquid's CIEDE2000 mean 31.5 -> 9.3).
-  const glm::dvec3 sigma_s = double(vp.liquid.haze) * glm::dvec3(vp.liquid.haze_color);
-  const glm::dvec3 colour(vf.liquid_absorption.effective());
-  const glm::dvec3 sigma_a = colour + double(vp.liquid.haze) - sigma_s;
-  const glm::dvec3 kappa = glm::max(colour, glm::sqrt(3.0 * sigma_a * (sigma_a + sigma_s)));
-  const glm::dvec3 tint = glm::exp(-kappa * (double(vf.mean_outer_radius) * 0.7));
-  r.haze_light = glm::vec3(glm::dvec3(vp.liquid.haze_color) * haze_in * tint);
+  const HazeDiffusion haze =
+      haze_diffusion(vp.liquid.haze, glm::dvec3(vp.liquid.haze_color), glm::dvec3(vf.liquid_absorption.effective()),
+                     vp.glass.ior);
+  r.haze_albedo = vp.liquid.haze_color;
+  r.haze_surround = glm::vec3(surround);
+  r.haze_kappa = glm::vec3(haze.kappa);
+  r.haze_reach = glm::vec3(haze.reach);
+  // The MatCap tier takes all of it as even light, the field's mean over the drink's
+  // cross-section (of the mean outer radius: the walls' thickness is small beside it).
+  r.haze_light = glm::vec3(glm::dvec3(vp.liquid.haze_color) * haze_in *
+                           haze_field_mean(haze, double(vf.mean_outer_radius)));
   // glass
   r.glass_absorption = vp.glass.absorption;
   r.glass_ior = vp.glass.ior;

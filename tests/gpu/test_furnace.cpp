@@ -51,6 +51,28 @@ TEST(Furnace, ANonAbsorbingDrinkIsInvisible) {
   EXPECT_LT(worst_error(img, x, y), 0.02) << "at pixel " << x << ", " << y;
 }
 
+// A white haze in a colourless drink only scatters: in even light it holds that light
+// everywhere (its diffusion field is flat, core haze_diffusion's kappa 0), so the drink
+// stays invisible however cloudy.
+FrameState furnace_haze(float haze, glm::vec3 albedo) {
+  FrameState f = furnace(0.8f, 0.0f);
+  f.vessels[0].params.liquid.haze = haze;
+  f.vessels[0].params.liquid.haze_color = albedo;
+  return f;
+}
+
+TEST(Furnace, ANonAbsorbingHazyDrinkIsInvisible) {
+  const Image img = gpu_instance().renderer->render(furnace_haze(60.0f, glm::vec3(1.0f)), 64, 64);
+  int x = 0, y = 0;
+  EXPECT_LT(worst_error(img, x, y), 0.02) << "at pixel " << x << ", " << y;
+}
+
+TEST(Furnace, AHazeThatAbsorbsIsNotInvisible) {  // the test above can fail
+  const Image img = gpu_instance().renderer->render(furnace_haze(60.0f, glm::vec3(0.8f, 0.6f, 0.4f)), 64, 64);
+  int x = 0, y = 0;
+  EXPECT_GT(worst_error(img, x, y), 0.1);
+}
+
 TEST(Furnace, AnAbsorbingDrinkIsNotInvisible) {  // the tests above can fail
   FrameState f = furnace(0.8f, 0.0f);
   f.vessels[0].liquid_absorption = DrinkAbsorption::uniform(glm::vec3(10, 30, 80));

@@ -2,7 +2,9 @@
 // single-scattering haze, both closed-form over a straight segment (no marching).
 #ifndef LIB_LIQUID_BODY_GLSL
 #define LIB_LIQUID_BODY_GLSL
+#include "lib/optics/fresnel.glsl"
 #include "lib/scene/objects.glsl"
+#include "lib/vessel/intersect.glsl"
 
 // The drink's colour (core DrinkAbsorption's twin): in each channel two bands of its
 // spectrum, T(L) = share e^(-fast L) + (1 - share) e^(-slow L). A path keeps how the light
@@ -30,17 +32,67 @@ vec3 medium_transmittance(Vessel v, ObjectGlass g, int medium, vec3 left, float 
   return vec3(1.0);
 }
 
-// Light scattered towards the eye by haze along the segment (single scattering of the
-// sky's light and the rig's lights, each a distant light from the glass's middle: the
-// quarter of its irradiance an isotropic scatterer sends per steradian over pi; all reach
-// the inside already tinted by the drink): the record's haze_light, computed in
-// gpu/scene_data.cpp once per frame. colour: what the drink's colour passes of the
-// segment (drink_onward), whose effective absorption the haze shares the segment with.
-vec3 haze_inscatter(Vessel v, vec3 colour, float dist) {
+// I0(x) e^-x for x >= 0 per channel (Abramowitz and Stegun 9.8.1 and 9.8.2, relative
+// error under 2e-7): the twin of core/liquid/haze.cpp's i0_scaled.
+vec3 bessel_i0_scaled(vec3 x) {
+  vec3 t = x / 3.75, t2 = t * t, u = 3.75 / max(x, vec3(3.75));
+  vec3 small = (1.0 + t2 * (3.5156229 + t2 * (3.0899424 + t2 * (1.2067492 + t2 * (0.2659732 + t2 * (0.0360768 + t2 * 0.0045813)))))) * exp(-x);
+  vec3 large = (0.39894228 + u * (0.01328592 + u * (0.00225319 + u * (-0.00157565 + u * (0.00916281 + u * (-0.02057706 +
+               u * (0.02635537 + u * (-0.01647633 + u * 0.00392377)))))))) / sqrt(max(x, vec3(3.75)));
+  return mix(large, small, lessThan(x, vec3(3.75)));
+}
+
+// The haze's diffusion field at radius r of the drink's cross-section of radius R: the
+// share of the surroundings' light there, I0(kappa r) / I0(kappa (R + reach)) (core
+// haze_field's twin).
+vec3 haze_field(ObjectHaze h, float r, float R) {
+  vec3 inner = h.haze_kappa * min(r, R), outer = h.haze_kappa * (R + h.haze_reach);
+  return bessel_i0_scaled(inner) / bessel_i0_scaled(outer) * exp(inner - outer);
+}
+
+// The haze's samples along a segment: the field taken at the middles of equal parts, each
+// part's in-scattering integrated exactly under its transmittance (4 parts: within 0.2 of
+// CIEDE2000 of 8 on the hefeweizen against the reference).
+#define HAZE_PARTS 4
+
+// Light scattered towards the eye by the haze along the segment o + t d, t in [0, dist]
+// (o, d local; isotropic scattering of the surroundings' light and the lights', each
+// falling off inwards from the wall as diffusion's kappa: core/liquid/haze.hpp). colour:
+// what the drink's colour passes of the segment (drink_onward), whose effective
+// absorption the haze shares the segment with.
+vec3 haze_inscatter(Vessel v, vec3 colour, float dist, vec3 o, vec3 d) {
   float s = v.liquid.haze;
   if (s <= 0.0) return vec3(0.0);
+  ObjectHaze h = fetch_object_haze(v.row);
   vec3 tau = -log(max(colour, vec3(1e-30))) + s * dist;  // the segment's optical depth
-  return v.liquid.haze_light * (s * dist / max(tau, vec3(1e-12))) * (1.0 - colour * exp(-s * dist));
+  // Each light's direction (local) and its irradiance over 4 pi.
+  vec3 l[MAX_LIGHTS], e[MAX_LIGHTS];
+  int count = frame.media_light_count;
+  for (int i = 0; i < MAX_LIGHTS; ++i) {
+    vec4 lit = i < count ? object_lit_by(v.row, i) : vec4(0.0, 1.0, 0.0, 0.0);
+    l[i] = to_local_dir(v, lit.xyz);
+    e[i] = frame.media_light_radiance[i].rgb * (lit.w / (4.0 * PI));
+  }
+  vec3 sum = vec3(0.0), before = vec3(1.0);
+  for (int k = 0; k < HAZE_PARTS; ++k) {
+    vec3 after = exp(-tau * (float(k + 1) / float(HAZE_PARTS)));
+    vec3 p = o + (dist * (float(k) + 0.5) / float(HAZE_PARTS)) * d;
+    float R = inner_radius(v, p.y);
+    vec3 light = h.haze_surround * haze_field(h, length(p.xz), R);
+    for (int i = 0; i < MAX_LIGHTS; ++i) {
+      if (i >= count) break;
+      // In through the wall towards the light (Fresnel from air into the drink there),
+      // then inwards over the way to p.
+      float a = dot(l[i].xz, l[i].xz), b = dot(p.xz, l[i].xz), c = dot(p.xz, p.xz) - R * R;
+      float way = a > 1e-8 ? max((-b + sqrt(max(b * b - a * c, 0.0))) / a, 0.0) : 0.0;
+      vec2 wall = p.xz + way * l[i].xz;
+      float cos_in = dot(wall, l[i].xz) / max(length(wall), 1e-9);
+      light += e[i] * (1.0 - fresnel_dielectric(clamp(cos_in, 0.0, 1.0), 1.0, v.liquid.ior)) * exp(-h.haze_kappa * way);
+    }
+    sum += light * (before - after);
+    before = after;
+  }
+  return h.haze_albedo * (s * dist / max(tau, vec3(1e-12))) * sum;
 }
 
 #endif  // LIB_LIQUID_BODY_GLSL

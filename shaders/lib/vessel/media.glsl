@@ -115,8 +115,11 @@ vec3 reflected_light(Vessel v, ObjectGlass g, int m, int medium, bool below, vec
   float in_drink = spans && drink ? span.y - span.x : 0.0;
   if (liquid || m != M_RIM) out_dir = leave_through(r, n_out, liquid ? v.liquid.ior : g.glass_ior);
   // left: the shares of this drink's colour bands on the path (drink_onward); a path in
-  // the glass that turns inwards meets the drink again.
-  return exp(-g.glass_absorption * in_glass - v.liquid.haze * in_drink) * drink_onward(v.body, left, in_drink);
+  // the glass that turns inwards meets the drink again. A haze takes out only what it
+  // absorbs: what it scatters out of the way it scatters in from the light around (as
+  // much in even light: a white haze leaves a colourless drink invisible).
+  vec3 haze = v.liquid.haze > 0.0 ? v.liquid.haze * (1.0 - fetch_object_haze(v.row).haze_albedo) : vec3(0.0);
+  return exp(-g.glass_absorption * in_glass - haze * in_drink) * drink_onward(v.body, left, in_drink);
 }
 
 #endif  // LIB_VESSEL_MEDIA_GLSL
