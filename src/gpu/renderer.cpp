@@ -100,6 +100,7 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kDroplets) frag = with_define(std::move(frag), "DROPLETS");
   if (variant & kClouds) frag = with_define(std::move(frag), "CLOUDS");
   if (variant & kCondensation) frag = with_define(std::move(frag), "CONDENSATION");
+  if (variant & kHaze) frag = with_define(std::move(frag), "HAZE");
   if (variant & (kScreenCard | kScreenBackground))  // 1: a card in the scene, 2: the background
     frag = with_define(std::move(frag), "SCREEN", variant & kScreenCard ? "1" : "2");
   if (variant & kSphereLights) frag = with_define(std::move(frag), "SPHERE_LIGHTS");
@@ -199,10 +200,11 @@ void Renderer::draw_picture(const FrameState& f, int width, int height, DebugVie
   // views when one is asked for, sphere lights when the rig has one, the strips and glow
   // painted in the sky when they are not black, and for a few objects their records held
   // per pixel.
-  bool waves = false, foam = false, spheres = false;
+  bool waves = false, foam = false, spheres = false, haze = false;
   for (const VesselFrame& v : f.vessels) {
     waves = waves || (v.has_liquid && !v.liquid.waves.flat());
     foam = foam || has_head(v);
+    haze = haze || (v.has_liquid && v.params.liquid.haze > 0.0f);
   }
   for (int i = 0; i < block.light_count; ++i) spheres = spheres || block.light_normal[i].w > 0.5f;
   const bool painted = block.env_mode == 0 && (block.strip_intensity != 0.0f || block.backdrop_glow != 0.0f);
@@ -216,10 +218,11 @@ void Renderer::draw_picture(const FrameState& f, int width, int height, DebugVie
                       (!f.droplets.empty() && !f.droplets.front().field.spheres.empty() && debug != DebugView::Thickness
                            ? kDroplets
                            : 0) |
-                      (clouds ? kClouds : 0) | (condensation ? kCondensation : 0);
+                      (clouds ? kClouds : 0) | (condensation ? kCondensation : 0) | (haze ? kHaze : 0);
   // The MatCap pass marches no drink: waves (its surface is the plane) and heads (a layer)
-  // need no variant of it. It marches droplets and point clouds (seen as lenses).
-  if (matcap) variant = (variant & ~(kWaves | kFoam)) | kMatCap;
+  // need no variant of it, nor a hazy drink (one light for its whole haze). It marches
+  // droplets and point clouds (seen as lenses).
+  if (matcap) variant = (variant & ~(kWaves | kFoam | kHaze)) | kMatCap;
   // env.reflections: the glasses' surroundings first, from inside each (the full tier's).
   else if (debug == DebugView::None && draw_reflections(f, block, variant)) variant |= kReflections;
   const std::vector<contract::ObjectRecord> records = matcap ? textures_->records() : std::vector<contract::ObjectRecord>{};

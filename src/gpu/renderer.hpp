@@ -156,7 +156,9 @@ class Renderer {
     kPanorama = 1 << 19, kReflections = 1 << 20,
     // kMatCapSmall: with kMatCapCached, the background read from its smaller picture
     // (drawn while things move: MatCapBackground::moving).
-    kMatCapSmall = 1 << 21
+    kMatCapSmall = 1 << 21,
+    // kHaze: some drink is hazy (its light by diffusion along each stretch in it).
+    kHaze = 1 << 22
   };
   // env.reflections: draws the panoramas this frame needs into reflections_ (the block
   // as the picture's, its camera moved into each glass); true when the picture has them.

@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 namespace draught::test {
 namespace {
@@ -48,6 +50,30 @@ TEST(HazeTwins, FieldAgreesWithCore) {
 // polynomials' other branch (kappa r past 3.75) does the work.
 TEST(HazeTwins, FieldAgreesWithCoreInADeepColour) {
   expect_field_twins_agree(scene_frame({"amber-ale", "tulip", {"bubbles.carbonation=0"}}));
+}
+
+// The haze's field is taken where the scattering happens in the glass's own frame: a
+// hazy drink in even light (no lights, no floor) looks the same wherever its glass stands,
+// the camera moved with it. (A field taken at world positions made the flight's
+// hefeweizen, off the origin, as bright as its wall all through.)
+TEST(HazePicture, TheSameWhereverTheGlassStands) {
+  const std::vector<std::string> sets = {"env.mode=constant", "env.color=0.6,0.6,0.6", "env.floor=false",
+                                         "light.power=0",     "strips.power=0",        "backlight.power=0",
+                                         "bubbles.carbonation=0", "camera.auto_frame=false"};
+  const FrameState here = scene_frame({"hefeweizen", "weizen", sets, {"eye=0,0.12,0.45", "target=0,0.1,0", "vfov=32"}});
+  FrameState there = scene_frame({"hefeweizen", "weizen", sets, {"eye=0.25,0.12,0.3", "target=0.25,0.1,-0.15", "vfov=32"}});
+  there.vessels[0].pose.position += glm::dvec3(0.25, 0.0, -0.15);
+  Gpu& g = gpu_instance();
+  const Image a = g.renderer->render(here, 48, 64), b = g.renderer->render(there, 48, 64);
+  int worst = 0, body = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(a.px(x, y)[c]) - int(b.px(x, y)[c])));
+      body += a.px(x, y)[2] + 40 < a.px(x, y)[0];  // (the drink: red well over blue)
+    }
+  std::printf("a hazy glass moved: worst difference %d levels (%d drink pixels)\n", worst, body);
+  EXPECT_GT(body, 300);
+  EXPECT_LE(worst, 3);
 }
 
 }  // namespace

@@ -118,7 +118,11 @@ vec3 reflected_light(Vessel v, ObjectGlass g, int m, int medium, bool below, vec
   // the glass that turns inwards meets the drink again. A haze takes out only what it
   // absorbs: what it scatters out of the way it scatters in from the light around (as
   // much in even light: a white haze leaves a colourless drink invisible).
+#if HAZE
   vec3 haze = v.liquid.haze > 0.0 ? v.liquid.haze * (1.0 - fetch_object_haze(v.row).haze_albedo) : vec3(0.0);
+#else
+  vec3 haze = vec3(0.0);  // (no drink of the frame is hazy: lib/liquid/body.glsl)
+#endif
   return exp(-g.glass_absorption * in_glass - haze * in_drink) * drink_onward(v.body, left, in_drink);
 }
 
