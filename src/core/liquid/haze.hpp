@@ -26,9 +26,14 @@ struct HazeDiffusion {
 // light everywhere (the furnace).
 HazeDiffusion haze_diffusion(double haze, const glm::dvec3& albedo, const glm::dvec3& absorption, double glass_ior);
 
+// The modified Bessel functions I0(x) e^-x and I1(x) e^-x (x >= 0; scaled so that a deep
+// drink's kappa R does not overflow). Twin of bessel_i0_scaled in lib/liquid/body.glsl.
+double bessel_i0_scaled(double x);
+double bessel_i1_scaled(double x);
+
 // The field's share at radius r of a cylinder of radius R (r <= R), per channel: the
 // C++ twin of haze_field in lib/liquid/body.glsl (which takes I0 from Abramowitz and
-// Stegun's polynomials; this takes the standard library's).
+// Stegun's polynomials; this from its series).
 glm::dvec3 haze_field(const HazeDiffusion&, double r, double R);
 // Its mean over the cylinder's cross-section (the MatCap tier's haze, which takes one
 // light for the whole drink).
