@@ -379,10 +379,12 @@ INSTANTIATE_TEST_SUITE_P(
         // 4096 paths (512 before, stop 43): glass 1.13 / 2.35, liquid 3.25 / 5.94, close up
         // 2.97 / 4.43. Since what a bead's steep rim reflects down into the wall stays with
         // the path (stop 44; it showed the studio's white, a speckle the reference has not):
-        // glass 1.15 / 2.35, liquid 3.06 / 5.32, close up 2.86 / 4.47.
-        ComparisonCase{"cold-lager", SceneRequest{"cold-lager"}, 64, 4096, {1.3, 2.6}, {3.4, 5.9}, {0, 0}},
+        // glass 1.15 / 2.35, liquid 3.06 / 5.32, close up 2.86 / 4.47. Since the mist is lit
+        // by all around it, the backdrop's lit paper included, not by the sky alone (stop
+        // 46): glass 1.03 / 2.35, liquid 2.23 / 4.00, close up 1.74 / 2.85.
+        ComparisonCase{"cold-lager", SceneRequest{"cold-lager"}, 64, 4096, {1.2, 2.6}, {2.5, 4.4}, {0, 0}},
         ComparisonCase{"cold-lager-close", SceneRequest{"cold-lager", "", {}, {"eye=0,0.08,0.22", "target=0,0.08,0", "vfov=16"}},
-                       64, 4096, {0, 0}, {3.2, 4.9}, {0, 0}},
+                       64, 4096, {0, 0}, {2.0, 3.2}, {0, 0}},
         // The objects the reference marches (64x48): the droplets (the preset's view, and
         // close up), 1.16 / 2.04 and 1.87 / 3.87 (1.19 / 2.05 and 1.87 / 3.74 at 1024 and
         // 512 paths: what is left is the picture's, not the reference's noise); the molten

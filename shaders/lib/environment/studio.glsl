@@ -94,7 +94,8 @@ vec3 sky_irradiance(vec3 n) { return sh_irradiance(g_sky_sh, n); }
 
 // The irradiance of what lies around the scene's centre besides the lights (the sky and
 // the lit backdrop: EnvironmentFrame::surround) on a surface of unit normal n: the light
-// of the heads, the haze and the backdrop itself (its bounce off its own paper).
+// of the heads, the haze, condensation's mist and the backdrop itself (its bounce off
+// its own paper).
 vec3 surround_irradiance(vec3 n) { return sh_irradiance(g_surround_sh, n); }
 
 // The diffuse radiance that gives a surface facing up the sky's irradiance (the heads'
