@@ -6,7 +6,7 @@
 // requested by requestAnimationFrame as the page does. What is left of a frame's time for
 // draught's own work is the difference. `node bench-floor.mjs [runs] [seconds] [WxH]`
 // after scripts/build-web.sh (lib.mjs serves its folder; the page is written in place).
-import { benchArgs, median, start } from './lib.mjs';
+import { benchArgs, framesPerSecond, median, start } from './lib.mjs';
 
 const { runs, seconds, size } = benchArgs('bench-floor.mjs', { runs: 3, seconds: 4 });
 const [w, h] = size.split('x').map(Number);
@@ -49,13 +49,7 @@ try {
       await page.goto(env.base);  // (a page of the server's origin, then written over)
       await page.setContent(page_html(passes));
       await page.waitForTimeout(2000);
-      const fps = [];
-      for (let i = 0; i < runs; ++i) {
-        const f0 = await page.evaluate(() => ({ frames: window.draught.frames(), t: performance.now() }));
-        await page.waitForTimeout(seconds * 1000);
-        const f1 = await page.evaluate(() => ({ frames: window.draught.frames(), t: performance.now() }));
-        fps.push((1000 * (f1.frames - f0.frames)) / (f1.t - f0.t));
-      }
+      const fps = await framesPerSecond(page, runs, seconds);  // (the page counts window.draught.frames)
       console.log(`${passes} full-screen pass${passes === 1 ? '' : 'es'}: fps ${fps.map((f) => f.toFixed(1)).join(' ')}; median ${median(fps).toFixed(1)} (${(1000 / median(fps)).toFixed(1)} ms a frame)`);
     } finally {
       await context.close();
