@@ -157,7 +157,12 @@ int render_still(const RenderRequest& req, const FrameState& frame, const std::f
   }
   auto ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (req.verbose)
+  {
     std::fprintf(stderr, "rendered %dx%d (supersample %d) in %.1f ms\n", req.width, req.height, supersample, ms);
+    if (const gpu::Renderer::Refined r = renderer.last_refined(); r.pixels > 0)
+      std::fprintf(stderr, "  of which %ld pixels (%.1f %%) drawn again at %d x %d samples: %.1f ms\n", r.pixels,
+                   100.0 * double(r.pixels) / (double(req.width) * req.height), r.samples, r.samples, r.ms);
+  }
   write_still(dest, out, img);
   return 0;
 }

@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
   // Values are taken as text and checked by cli::*_flag, so every bad value gets the
   // same kind of message (flag, value, what was expected) and exit code 1.
   cli::RenderRequest rr;
-  std::string size = "512x512", tonemap, debug, supersample, fps, duration, at;
+  std::string size = "512x512", tonemap, debug, supersample, adaptive, fps, duration, at;
   bool transparent = false;
   auto* render = app.add_subcommand("render", "Render a preset to a PNG");
   render->add_option("-p,--preset", rr.scene.preset, "Drink or scene preset: a name or a JSON file")
@@ -44,6 +44,9 @@ int main(int argc, char** argv) {
   render->add_option("--tonemap", tonemap, "Output transform: none or aces");
   render->add_flag("--transparent", transparent, "Transparent background, premultiplied alpha");
   render->add_option("--supersample", supersample, "Anti-aliasing: samples per axis (1-4)");
+  render->add_option("--adaptive", adaptive,
+                     "Adaptive anti-aliasing: samples per axis where a pixel's samples disagree, fine detail and "
+                     "edges (1-4; default 4; not above --supersample: off)");
   render->add_option("--shader-dir", rr.shader_dir, "Load shaders from this folder instead of the built-in ones");
   std::string spp, threads;
   render->add_flag("--reference", rr.reference,
@@ -106,6 +109,9 @@ int main(int argc, char** argv) {
       if (render->count("--supersample"))
         rr.scene.sets.push_back("render.supersample=" +
                                 std::to_string(cli::integer_flag("--supersample", supersample, 1, 4)));
+      if (render->count("--adaptive"))
+        rr.scene.sets.push_back("render.adaptive_supersample=" +
+                                std::to_string(cli::integer_flag("--adaptive", adaptive, 1, 4)));
       if (render->count("--fps")) anim.fps = cli::number_flag("--fps", fps, 1, 120, "frames per second");
       if (render->count("--duration")) anim.duration = cli::number_flag("--duration", duration, 0.01, 600, "seconds");
       rr.verbose = verbose;

@@ -14,6 +14,7 @@
 #include <GLES3/gl3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -136,6 +137,8 @@ Renderer::Renderer(const std::filesystem::path& shader_dir, Compile compile) : s
 }
 
 Renderer::~Renderer() {
+  glDeleteBuffers(1, &rect_vbo_);
+  glDeleteVertexArrays(1, &rect_vao_);
   glDeleteBuffers(1, &bubble_vbo_);
   glDeleteVertexArrays(1, &bubble_vao_);
   glDeleteBuffers(1, &ubo_);
@@ -159,18 +162,26 @@ void Renderer::draw(const FrameState& f, int width, int height, DebugView debug,
   draw_picture(f, width, height, debug, event, false);
 }
 
-void Renderer::draw_picture(const FrameState& f, int width, int height, DebugView debug, int event, bool linear) {
+void Renderer::draw_picture(const FrameState& f, int width, int height, DebugView debug, int event, bool linear,
+                            const std::vector<PixelRect>* rects) {
   // The MatCap tier draws the picture with its own pass (and the thickness view is its);
   // the other debug views are the path pass's.
   const bool matcap = debug == DebugView::Thickness ||
                       (debug == DebugView::None && f.params.render.tier == int(RenderTier::MatCap));
-  if (matcap) matcap_->update(f);  // a bake or a read only when its inputs change
-  textures_->update(f, width, height);  // only rows that changed; the floor's light when its inputs did
-  const bool decals = decals_->update(f);  // the images when they change, arc rows when a glass does
-  // Beads and fog: a band when its glass's condensation changed (the thickness view is the
-  // bare glasses').
-  const bool condensation = condensation_->update(f) && debug != DebugView::Thickness;
-  screen_->update(f.screen);  // only when another frame comes, into the texture not drawn from
+  // More pixels of the frame just drawn (rects: adaptive supersampling's) take its
+  // textures as they are, so that the frame's updates, uploads and panoramas happen once,
+  // and the finer pixels see the same light maps as their neighbours.
+  const bool same_frame = rects != nullptr;
+  if (!same_frame) {
+    if (matcap) matcap_->update(f);  // a bake or a read only when its inputs change
+    textures_->update(f, width, height);  // only rows that changed; the floor's light when its inputs did
+    has_decals_ = decals_->update(f);     // the images when they change, arc rows when a glass does
+    // Beads and fog: a band when its glass's condensation changed.
+    has_condensation_ = condensation_->update(f);
+    screen_->update(f.screen);  // only when another frame comes, into the texture not drawn from
+  }
+  const bool decals = has_decals_;
+  const bool condensation = has_condensation_ && debug != DebugView::Thickness;  // (the bare glasses')
   screen_->bind();
   textures_->bind();  // (after the updates, which bind what they upload to the active unit)
   if (decals) decals_->bind();
@@ -178,7 +189,7 @@ void Renderer::draw_picture(const FrameState& f, int width, int height, DebugVie
   if (matcap) matcap_->bind();
   // The point clouds: trees kept, refit or rebuilt as their points change (core), the
   // textures uploaded only then.
-  if (cloud_scene_.update(f.clouds)) clouds_->upload(cloud_scene_.texels(), cloud_scene_.changed());
+  if (!same_frame && cloud_scene_.update(f.clouds)) clouds_->upload(cloud_scene_.texels(), cloud_scene_.changed());
   // (The thickness view is the glasses' alone.)
   const bool clouds = !f.clouds.empty() && debug != DebugView::Thickness;
   if (clouds) clouds_->bind();
@@ -224,14 +235,21 @@ void Renderer::draw_picture(const FrameState& f, int width, int height, DebugVie
   // droplets and point clouds (seen as lenses).
   if (matcap) variant = (variant & ~(kWaves | kFoam | kHaze)) | kMatCap;
   // env.reflections: the glasses' surroundings first, from inside each (the full tier's).
-  else if (debug == DebugView::None && draw_reflections(f, block, variant)) variant |= kReflections;
+  else if (debug == DebugView::None && draw_reflections(f, block, variant, same_frame)) variant |= kReflections;
   const std::vector<contract::ObjectRecord> records = matcap ? textures_->records() : std::vector<contract::ObjectRecord>{};
-  if (matcap && debug == DebugView::None) variant |= matcap_background(f, block, records, width, height, variant);
+  // (More pixels of a frame shade their background inline: the kept one is the picture's.)
+  if (matcap && debug == DebugView::None && !same_frame)
+    variant |= matcap_background(f, block, records, width, height, variant);
   // The MatCap tier: only the part of the screen where the objects' bounds lie runs the
   // pass; the rest is the background alone (what the pass gives a line that meets no
   // object's bounds, for a fraction of the cost), read from the kept background, or
   // shaded inline where the view is new (a moving camera: one background per pixel, no
   // pass of its own and no copy).
+  if (rects) {  // a few pixels: the pass alone, which gives a line that meets nothing its background
+    draw_rects(variant, *rects, width, height);
+    if (debug == DebugView::None) draw_bubbles(f, width, height);
+    return;
+  }
   const PixelRect part = matcap && debug == DebugView::None ? objects_on_screen(records, block, width, height)
                                                             : PixelRect{0, 0, width, height};
   const bool whole = part.x <= 0 && part.y <= 0 && part.x + part.w >= width && part.y + part.h >= height;
@@ -304,10 +322,11 @@ PixelRect objects_on_screen(const std::vector<contract::ObjectRecord>& vessels, 
   return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
 }
 
-bool Renderer::draw_reflections(const FrameState& f, contract::FrameBlock& block, int variant) {
+bool Renderer::draw_reflections(const FrameState& f, contract::FrameBlock& block, int variant, bool same_frame) {
   const int layers = reflections_->layers_for(f);
   if (layers == 0) return false;
-  if (reflections_->due(f, layers)) {
+  if (same_frame && reflections_->layers() != layers) return false;
+  if (!same_frame && reflections_->due(f, layers)) {
     GLint target = 0;
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
     const bool ready = reflections_->prepare(std::clamp(f.params.env.reflections_size, 32, 1024), layers);
@@ -407,6 +426,31 @@ int Renderer::matcap_background(const FrameState& f, const contract::FrameBlock&
   return kMatCapCached;
 }
 
+void Renderer::draw_rects(int variant, const std::vector<PixelRect>& rects, int width, int height) {
+  // (The picture's own program: its vertex stage draws rectangles from a buffer.)
+  auto& program = programs_[variant];
+  if (!program) program = build_program(variant);
+  glUseProgram(program->id());
+  glUniform2f(glGetUniformLocation(program->id(), "u_target_inv"), 1.0f / float(width), 1.0f / float(height));
+  if (!rect_vao_) {
+    glGenVertexArrays(1, &rect_vao_);
+    glGenBuffers(1, &rect_vbo_);
+    glBindVertexArray(rect_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, rect_vbo_);
+    glEnableVertexAttribArray(0);  // a_rect
+    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
+    glVertexAttribDivisor(0, 1);
+  }
+  std::vector<float> data;
+  data.reserve(rects.size() * 4);
+  for (const PixelRect& r : rects) data.insert(data.end(), {float(r.x), float(r.y), float(r.w), float(r.h)});
+  glBindVertexArray(rect_vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, rect_vbo_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(), GL_STREAM_DRAW);
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(rects.size()));
+  glBindVertexArray(vao_);
+}
+
 void Renderer::draw_bubbles(const FrameState& f, int width, int height) {
   const std::vector<BubbleSprite> sprites = bubble_sprites(f, width, height);
   if (sprites.empty()) return;
@@ -465,6 +509,7 @@ std::vector<float> read_float_rows(int w, int h) {
 }  // namespace
 
 Image Renderer::render(const FrameState& f, int width, int height) {
+  last_refined_ = {};
   const int ss = std::clamp(f.params.render.supersample, 1, 4);
   const int w = width * ss, h = height * ss;
   // Supersamples averaged in scene-linear light, then the output transform (a camera's
@@ -483,7 +528,21 @@ Image Renderer::render(const FrameState& f, int width, int height) {
   }
   if (linear) {
     draw_picture(f, w, h, DebugView::None, 0, true);
-    return resolve_linear(read_float_rows(w, h), width, height, ss, f.params.render.tonemap);
+    const std::vector<float> samples = read_float_rows(w, h);
+    const RenderParams& r = f.params.render;
+    // Adaptive supersampling: the pixels whose samples disagree, drawn again at more.
+    if (const int fine = std::clamp(r.adaptive_supersample, 1, 4); fine > ss) {
+      RefinedSamples refined{fine, pixels_to_refine(samples, width, height, ss, r.tonemap, r.adaptive_threshold), {}};
+      if (!refined.runs.empty()) {
+        linear.reset();
+        const auto t0 = std::chrono::steady_clock::now();
+        refined.rgba = draw_refined(f, width, height, refined.runs, fine);
+        last_refined_ = {pixels_in(refined.runs), fine,
+                         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count()};
+        return resolve_refined(samples, width, height, ss, refined, r.tonemap);
+      }
+    }
+    return resolve_linear(samples, width, height, ss, r.tonemap);
   }
   RenderTarget target(w, h, RenderTarget::Format::Rgba8);
   draw(f, w, h);
@@ -494,6 +553,53 @@ Image Renderer::render(const FrameState& f, int width, int height) {
   for (int y = 0; y < h / 2; ++y)
     std::swap_ranges(img.px(0, y), img.px(0, y) + size_t(w) * 4, img.px(0, h - 1 - y));
   return downsample(img, ss);
+}
+
+std::vector<float> Renderer::draw_refined(const FrameState& f, int width, int height, const std::vector<PixelRun>& runs,
+                                          int fine) {
+  // The fine picture in tiles (bounded memory whatever the picture's size), each a part of
+  // it through the camera's lens shift (FrameState::view): the same rays as the whole fine
+  // picture's.
+  constexpr int kTile = 1536;  // fine samples a side (a multiple of 2, 3 and 4): 18 MB of half floats
+  const int fw = width * fine, fh = height * fine;
+  std::vector<size_t> at(runs.size() + 1, 0);  // each run's first value in the result
+  for (size_t k = 0; k < runs.size(); ++k) at[k + 1] = at[k] + size_t(runs[k].length) * size_t(fine * fine) * 4;
+  std::vector<float> out(at.back()), band;
+  for (int ty = 0; ty < fh; ty += kTile)
+    for (int tx = 0; tx < fw; tx += kTile) {
+      const int tw = std::min(kTile, fw - tx), th = std::min(kTile, fh - ty);
+      // A run's fine block in this tile, rows top-down (empty where it is not in it).
+      auto block = [&](const PixelRun& r) {
+        return PixelRect{std::max(r.x * fine, tx), std::max(r.y * fine, ty),
+                         std::min((r.x + r.length) * fine, tx + tw) - std::max(r.x * fine, tx),
+                         std::min((r.y + 1) * fine, ty + th) - std::max(r.y * fine, ty)};
+      };
+      std::vector<PixelRect> rects;  // in GL's rows from the bottom of the tile
+      for (const PixelRun& r : runs)
+        if (const PixelRect b = block(r); b.w > 0 && b.h > 0) rects.push_back({b.x - tx, th - (b.y + b.h - ty), b.w, b.h});
+      if (rects.empty()) continue;
+      FrameState tile = f;  // the fine picture's part f.view, in fractions of this tile
+      tile.view = {(f.view.x * fw - tx) / tw, (f.view.y * fh - ty) / th, f.view.width * fw / tw,
+                   f.view.height * fh / th};
+      RenderTarget target(tw, th, RenderTarget::Format::Rgba16F);
+      draw_picture(tile, tw, th, DebugView::None, 0, true, &rects);
+      glPixelStorei(GL_PACK_ALIGNMENT, 4);
+      size_t rect = 0;
+      for (size_t k = 0; k < runs.size(); ++k) {
+        const PixelRun& r = runs[k];
+        const PixelRect b = block(r);
+        if (!(b.w > 0 && b.h > 0)) continue;
+        const PixelRect& g = rects[rect++];
+        band.resize(size_t(g.w) * size_t(g.h) * 4);
+        glReadPixels(g.x, g.y, g.w, g.h, GL_RGBA, GL_FLOAT, band.data());
+        for (int j = 0; j < g.h; ++j) {  // band row j is fine row b.y + b.h - 1 - j (top-down)
+          const int row = b.y + b.h - 1 - j - r.y * fine;
+          float* dst = &out[at[k] + (size_t(row) * size_t(r.length * fine) + size_t(b.x - r.x * fine)) * 4];
+          std::copy_n(&band[size_t(j) * size_t(g.w) * 4], size_t(g.w) * 4, dst);
+        }
+      }
+    }
+  return out;
 }
 
 DebugImage Renderer::render_debug(const FrameState& f, int width, int height, DebugView view, int event) {

@@ -7,6 +7,7 @@
 #include "core/environment/floor_light.hpp"
 #include "core/scene/frame.hpp"
 #include "core/io/image.hpp"
+#include "core/output/refine.hpp"
 #include "core/pointcloud/cloud_scene.hpp"
 #include "generated/constants.hpp"
 #include "generated/frame.hpp"
@@ -95,6 +96,14 @@ class Renderer {
 
   // The final picture at width x height (supersampled by params.render.supersample).
   Image render(const FrameState&, int width, int height);
+  // How many pixels the last render() drew again at render.adaptive_supersample samples,
+  // and the milliseconds that took (drawing, reading back).
+  struct Refined {
+    long pixels = 0;
+    int samples = 0;
+    double ms = 0;
+  };
+  Refined last_refined() const { return last_refined_; }
   // Debug channels; `event` is the event the PathEvent view reports (0 = first surface).
   DebugImage render_debug(const FrameState&, int width, int height, DebugView, int event = 0);
   // Draws into the currently bound framebuffer (windows, the web page, benchmarks).
@@ -136,8 +145,17 @@ class Renderer {
  private:
   // draw(), the passes leaving scene-linear light instead of display values with `linear`
   // (render's supersampled pictures: Frame::output_linear).
-  void draw_picture(const FrameState&, int width, int height, DebugView, int event, bool linear);
+  // `rects`: the picture's pass drawn over these rectangles only (the rest of the target
+  // is left as it was).
+  void draw_picture(const FrameState&, int width, int height, DebugView, int event, bool linear,
+                    const std::vector<PixelRect>* rects = nullptr);
   void draw_bubbles(const FrameState&, int width, int height);
+  void draw_rects(int variant, const std::vector<PixelRect>&, int width, int height);
+  // Adaptive supersampling: the fine x fine samples of the runs' pixels of a width x height
+  // picture (core/output/refine's layout), drawn as tiles of the picture `fine` times as
+  // wide and high, the pass over those pixels only.
+  std::vector<float> draw_refined(const FrameState&, int width, int height, const std::vector<PixelRun>& runs,
+                                  int fine);
 
   // What the path pass is compiled with (software rasterizers pay for code even where a
   // uniform branch skips it, so frames get only the code they use): these bits, and the
@@ -162,7 +180,8 @@ class Renderer {
   };
   // env.reflections: draws the panoramas this frame needs into reflections_ (the block
   // as the picture's, its camera moved into each glass); true when the picture has them.
-  bool draw_reflections(const FrameState&, contract::FrameBlock&, int variant);
+  // same_frame: more pixels of the frame just drawn, which take its panoramas as they are.
+  bool draw_reflections(const FrameState&, contract::FrameBlock&, int variant, bool same_frame);
   // The MatCap tier's background: the variant bits that read it (kMatCapCached, with
   // kMatCapSmall while things move), drawing it when it is not the one of this frame; 0
   // when the pass shades it inline (a view seen once, no float targets, a screen whose
@@ -184,9 +203,12 @@ class Renderer {
   std::unique_ptr<CloudTextures> clouds_;    // u_cloud_points, u_cloud_attrs, u_cloud_nodes
   std::unique_ptr<CondensationTextures> condensation_;  // u_condensation_beads, u_condensation_fog
   unsigned bubble_vao_ = 0, bubble_vbo_ = 0;
+  unsigned rect_vao_ = 0, rect_vbo_ = 0;
   unsigned vao_ = 0, ubo_ = 0;
   bool held_objects_ = true;
   bool moving_drafts_ = false;
+  bool has_decals_ = false, has_condensation_ = false;  // the last frame's update found them
+  Refined last_refined_;
 };
 
 // Turns a debug image into a picture a person can read (grey depth, RGB normals,

@@ -177,6 +177,8 @@ TEST(MatCapTier, DrawsCondensation) {
   Gpu& g = gpu_instance();
   SceneRequest req;
   req.preset = "cold-lager";
+  // (Adaptive supersampling off: it smooths the beads' pixels, which the roughness counts.)
+  req.sets = {"render.adaptive_supersample=1"};
   const FrameState cold = matcap_tier(make_frame(resolve_scene_objects(req)));
   ASSERT_TRUE(cold.vessels.at(0).condensation);
   FrameState dry = cold;

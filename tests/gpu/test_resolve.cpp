@@ -28,7 +28,8 @@ TEST(Resolve, SupersamplesAreAveragedInSceneLinearLight) {
     return make_frame(resolve_scene({"lager", "pint", sets, camera}));
   };
   constexpr int kSize = 48;
-  const Image picture = g.renderer->render(with({"render.supersample=2"}), kSize, kSize);
+  // (Adaptive supersampling off: the picture is its 2 x 2 samples' alone.)
+  const Image picture = g.renderer->render(with({"render.supersample=2", "render.adaptive_supersample=1"}), kSize, kSize);
   constexpr double kDim = 8.0;
   FrameState dim = with({"render.supersample=1", "render.tonemap=none"});
   const double exposure = dim.params.render.exposure;

@@ -16,4 +16,10 @@ namespace draught {
 // Throws std::invalid_argument when the sizes do not match.
 Image resolve_linear(const std::vector<float>& samples, int width, int height, int factor, int tonemap);
 
+// Its two steps. Each pixel's mean of its factor x factor samples (RGBA; a sample's
+// non-finite value, a half float's overflow, counts as none), with the same checks.
+std::vector<double> sample_means(const std::vector<float>& samples, int width, int height, int factor);
+// Pixel means (RGBA, linear light) through display_code, alpha 0-255.
+Image display_means(const std::vector<double>& means, int width, int height, int tonemap);
+
 }  // namespace draught

@@ -292,6 +292,10 @@ std::vector<ParamDesc> make_camera_and_render_rows() {
       ROW(SceneParams, render, transparent, Bool, 0.0f, 1.0f, "",
           "Transparent background, premultiplied alpha (the floor is left out)"),
       ROW(SceneParams, render, supersample, Int, 1.0f, 4.0f, "", "Supersampling factor per axis (anti-aliasing)"),
+      ROW(SceneParams, render, adaptive_supersample, Int, 1.0f, 4.0f, "",
+          "Samples per axis at pixels whose supersamples disagree (fine detail, edges); not above supersample: off"),
+      ROW(SceneParams, render, adaptive_threshold, Float, 0.0f, 255.0f, "levels",
+          "How far a pixel's supersamples may differ (8-bit display levels) before it takes adaptive_supersample"),
       ROW(SceneParams, render, max_events, Int, 2.0f, 32.0f, "", "Most surface interactions followed per pixel"),
       ROW(SceneParams, render, floor_photons, Int, 0.0f, 5000000.0f, "",
           "Photons traced for the floor's shadows and caustics in a still or an animation frame; 0: the app's own "

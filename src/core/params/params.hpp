@@ -254,6 +254,11 @@ struct RenderParams {
   float exposure = 1.15f;
   bool transparent = false;
   int supersample = 2;
+  // Adaptive supersampling (core/output/refine): a pixel whose supersamples differ by more
+  // than adaptive_threshold levels of 8-bit display code is drawn again at
+  // adaptive_supersample samples per axis; not above supersample: off.
+  int adaptive_supersample = 4;
+  float adaptive_threshold = 6.0f;
   int max_events = 12;
   int floor_photons = 0;  // the floor's light map's budget for a still; 0: the app's own
 };
