@@ -526,37 +526,48 @@ Image Renderer::render(const FrameState& f, int width, int height) {
     } catch (const std::runtime_error&) {
     }
   }
+  const RenderParams& r = f.params.render;
+  // Adaptive supersampling: the pixels whose samples disagree drawn again at more, and
+  // the picture resolved with their finer samples (output: the output transform after the
+  // mean, or none for display samples).
+  const int fine = std::clamp(r.adaptive_supersample, 1, 4);
+  const bool in_linear = linear.has_value();
+  auto refine = [&](const std::vector<float>& samples, int output) -> std::optional<Image> {
+    if (fine <= ss) return std::nullopt;
+    RefinedSamples refined{fine, pixels_to_refine(samples, width, height, ss, output, r.adaptive_threshold), {}};
+    if (refined.runs.empty()) return std::nullopt;
+    const auto t0 = std::chrono::steady_clock::now();
+    refined.rgba = draw_refined(f, width, height, refined.runs, fine, in_linear);
+    last_refined_ = {pixels_in(refined.runs), fine,
+                     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count()};
+    return resolve_refined(samples, width, height, ss, refined, output);
+  };
   if (linear) {
     draw_picture(f, w, h, DebugView::None, 0, true);
     const std::vector<float> samples = read_float_rows(w, h);
-    const RenderParams& r = f.params.render;
-    // Adaptive supersampling: the pixels whose samples disagree, drawn again at more.
-    if (const int fine = std::clamp(r.adaptive_supersample, 1, 4); fine > ss) {
-      RefinedSamples refined{fine, pixels_to_refine(samples, width, height, ss, r.tonemap, r.adaptive_threshold), {}};
-      if (!refined.runs.empty()) {
-        linear.reset();
-        const auto t0 = std::chrono::steady_clock::now();
-        refined.rgba = draw_refined(f, width, height, refined.runs, fine);
-        last_refined_ = {pixels_in(refined.runs), fine,
-                         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count()};
-        return resolve_refined(samples, width, height, ss, refined, r.tonemap);
-      }
-    }
+    linear.reset();
+    if (std::optional<Image> img = refine(samples, r.tonemap)) return std::move(*img);
     return resolve_linear(samples, width, height, ss, r.tonemap);
   }
-  RenderTarget target(w, h, RenderTarget::Format::Rgba8);
-  draw(f, w, h);
-  Image img{w, h, std::vector<std::uint8_t>(size_t(w) * size_t(h) * 4)};
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
-  // GL rows are bottom-up; images are top-down.
-  for (int y = 0; y < h / 2; ++y)
-    std::swap_ranges(img.px(0, y), img.px(0, y) + size_t(w) * 4, img.px(0, h - 1 - y));
+  Image img;
+  {
+    RenderTarget target(w, h, RenderTarget::Format::Rgba8);
+    draw(f, w, h);
+    img = Image{w, h, std::vector<std::uint8_t>(size_t(w) * size_t(h) * 4)};
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+    // GL rows are bottom-up; images are top-down.
+    for (int y = 0; y < h / 2; ++y)
+      std::swap_ranges(img.px(0, y), img.px(0, y) + size_t(w) * 4, img.px(0, h - 1 - y));
+  }
+  // (A transparent picture's samples are display values, averaged as they are.)
+  if (ss > 1)
+    if (std::optional<Image> refined = refine(samples_from_display(img), int(Tonemap::None))) return std::move(*refined);
   return downsample(img, ss);
 }
 
 std::vector<float> Renderer::draw_refined(const FrameState& f, int width, int height, const std::vector<PixelRun>& runs,
-                                          int fine) {
+                                          int fine, bool linear) {
   // The fine picture in tiles (bounded memory whatever the picture's size), each a part of
   // it through the camera's lens shift (FrameState::view): the same rays as the whole fine
   // picture's.
@@ -581,8 +592,8 @@ std::vector<float> Renderer::draw_refined(const FrameState& f, int width, int he
       FrameState tile = f;  // the fine picture's part f.view, in fractions of this tile
       tile.view = {(f.view.x * fw - tx) / tw, (f.view.y * fh - ty) / th, f.view.width * fw / tw,
                    f.view.height * fh / th};
-      RenderTarget target(tw, th, RenderTarget::Format::Rgba16F);
-      draw_picture(tile, tw, th, DebugView::None, 0, true, &rects);
+      RenderTarget target(tw, th, linear ? RenderTarget::Format::Rgba16F : RenderTarget::Format::Rgba8);
+      draw_picture(tile, tw, th, DebugView::None, 0, linear, &rects);
       glPixelStorei(GL_PACK_ALIGNMENT, 4);
       size_t rect = 0;
       for (size_t k = 0; k < runs.size(); ++k) {
@@ -591,7 +602,13 @@ std::vector<float> Renderer::draw_refined(const FrameState& f, int width, int he
         if (!(b.w > 0 && b.h > 0)) continue;
         const PixelRect& g = rects[rect++];
         band.resize(size_t(g.w) * size_t(g.h) * 4);
-        glReadPixels(g.x, g.y, g.w, g.h, GL_RGBA, GL_FLOAT, band.data());
+        if (linear) {
+          glReadPixels(g.x, g.y, g.w, g.h, GL_RGBA, GL_FLOAT, band.data());
+        } else {  // display values, decoded as samples_from_display decodes the picture's
+          Image bytes{g.w, g.h, std::vector<std::uint8_t>(band.size())};
+          glReadPixels(g.x, g.y, g.w, g.h, GL_RGBA, GL_UNSIGNED_BYTE, bytes.rgba.data());
+          band = samples_from_display(bytes);
+        }
         for (int j = 0; j < g.h; ++j) {  // band row j is fine row b.y + b.h - 1 - j (top-down)
           const int row = b.y + b.h - 1 - j - r.y * fine;
           float* dst = &out[at[k] + (size_t(row) * size_t(r.length * fine) + size_t(b.x - r.x * fine)) * 4];

@@ -153,9 +153,10 @@ class Renderer {
   void draw_rects(int variant, const std::vector<PixelRect>&, int width, int height);
   // Adaptive supersampling: the fine x fine samples of the runs' pixels of a width x height
   // picture (core/output/refine's layout), drawn as tiles of the picture `fine` times as
-  // wide and high, the pass over those pixels only.
+  // wide and high, the pass over those pixels only: scene-linear light (`linear`), or
+  // display values decoded by samples_from_display.
   std::vector<float> draw_refined(const FrameState&, int width, int height, const std::vector<PixelRun>& runs,
-                                  int fine);
+                                  int fine, bool linear);
 
   // What the path pass is compiled with (software rasterizers pay for code even where a
   // uniform branch skips it, so frames get only the code they use): these bits, and the

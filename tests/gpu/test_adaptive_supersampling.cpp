@@ -19,6 +19,32 @@ int difference(const Image& a, const Image& b, int x, int y) {
   return d;
 }
 
+// How the adaptive picture stands against the 2 x 2 and the 4 x 4 ones.
+struct Against {
+  int changed = 0, changed_right = 0, neither = 0;  // changed_right: at x >= right
+  double changed_off_four = 0, off_two = 0, off_adaptive = 0;
+};
+Against compare(const Image& two, const Image& four, const Image& adaptive, int right) {
+  Against a;
+  for (int y = 0; y < two.height; ++y)
+    for (int x = 0; x < two.width; ++x) {
+      a.off_two += difference(two, four, x, y);
+      a.off_adaptive += difference(adaptive, four, x, y);
+      if (difference(adaptive, two, x, y) == 0) continue;
+      ++a.changed;
+      a.changed_right += x >= right;
+      const int d = difference(adaptive, four, x, y);
+      a.changed_off_four += d;
+      // (The march's jitter follows the tile's own pixel coordinates: a few levels.)
+      a.neither += d > 6;
+    }
+  std::printf("%d pixels changed (%d at x >= %d); off the 4 x 4 picture: changed pixels %.2f levels on average, %d "
+              "by more than 6; the picture %.3f levels a pixel, the 2 x 2 one %.3f\n",
+              a.changed, a.changed_right, right, a.changed_off_four / std::max(a.changed, 1), a.neither,
+              a.off_adaptive / (two.width * two.height), a.off_two / (two.width * two.height));
+  return a;
+}
+
 TEST(AdaptiveSupersampling, RefinedPixelsAreTheFinerPicturesAndTheOthersKeepTheirSamples) {
   Gpu& g = gpu_instance();
   // The bar's lamps and bottles through a pint's base and its walls' edges: fine detail.
@@ -33,33 +59,44 @@ TEST(AdaptiveSupersampling, RefinedPixelsAreTheFinerPicturesAndTheOthersKeepThei
   const Image four = g.renderer->render(with({"render.supersample=4"}), kWidth, kHeight);
   const Image adaptive = g.renderer->render(with({"render.supersample=2", "render.adaptive_supersample=4"}), kWidth, kHeight);
   const gpu::Renderer::Refined refined = g.renderer->last_refined();
+  std::printf("%ld pixels refined in %.0f ms\n", refined.pixels, refined.ms);
   EXPECT_EQ(refined.samples, 4);
   EXPECT_GT(refined.pixels, kWidth * kHeight / 100);
   EXPECT_LT(refined.pixels, kWidth * kHeight / 2);  // (a detailed view: 25 % seen)
-  int changed = 0, changed_beyond_tile = 0, neither = 0;
-  double off_two = 0, off_adaptive = 0, changed_off_four = 0;
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x) {
-      off_two += difference(two, four, x, y);
-      off_adaptive += difference(adaptive, four, x, y);
-      if (difference(adaptive, two, x, y) == 0) continue;
-      ++changed;
-      changed_beyond_tile += x >= 1536 / 4;
-      const int d = difference(adaptive, four, x, y);
-      changed_off_four += d;
-      // (The march's jitter follows the tile's own pixel coordinates: a few levels.)
-      neither += d > 6;
+  const Against a = compare(two, four, adaptive, 1536 / 4);
+  EXPECT_GT(a.changed, 100);
+  EXPECT_GT(a.changed_right, 10);  // beyond the first tile
+  EXPECT_LT(a.changed_off_four / a.changed, 1.0);
+  EXPECT_LT(a.neither, a.changed / 100 + 1);
+  EXPECT_LT(a.off_adaptive, 0.5 * a.off_two);
+}
+
+// A transparent picture (premultiplied display samples, for compositing) is refined in its
+// display values, its coverage's edges included.
+TEST(AdaptiveSupersampling, ATransparentPictureIsRefinedToo) {
+  Gpu& g = gpu_instance();
+  auto with = [](std::vector<std::string> sets) {
+    sets.insert(sets.end(), {"render.transparent=true", "bubbles.max_bubbles=0"});
+    return make_frame(resolve_scene({"lager", "pint", sets, {}}));
+  };
+  constexpr int kSize = 160;
+  const Image two = g.renderer->render(with({"render.adaptive_supersample=1"}), kSize, kSize);
+  const Image four = g.renderer->render(with({"render.supersample=4"}), kSize, kSize);
+  const Image adaptive = g.renderer->render(with({}), kSize, kSize);
+  EXPECT_GT(g.renderer->last_refined().pixels, 0);
+  const Against a = compare(two, four, adaptive, kSize);
+  int alpha_off_two = 0, alpha_off_adaptive = 0;  // coverage against the 4 x 4 picture's
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      alpha_off_two += std::abs(int(two.px(x, y)[3]) - int(four.px(x, y)[3]));
+      alpha_off_adaptive += std::abs(int(adaptive.px(x, y)[3]) - int(four.px(x, y)[3]));
     }
-  std::printf("%ld pixels refined (%d changed, %d of them beyond the first tile) in %.0f ms; off the 4 x 4 "
-              "picture: changed pixels %.2f levels on average, %d by more than 6; the picture %.3f levels a "
-              "pixel, the 2 x 2 one %.3f\n",
-              refined.pixels, changed, changed_beyond_tile, refined.ms, changed_off_four / std::max(changed, 1),
-              neither, off_adaptive / (kWidth * kHeight), off_two / (kWidth * kHeight));
-  EXPECT_GT(changed, 100);
-  EXPECT_GT(changed_beyond_tile, 10);
-  EXPECT_LT(changed_off_four / changed, 1.0);
-  EXPECT_LT(neither, changed / 100 + 1);
-  EXPECT_LT(off_adaptive, 0.5 * off_two);
+  std::printf("coverage off the 4 x 4 picture's: %d levels in all, %d at 2 x 2\n", alpha_off_adaptive, alpha_off_two);
+  EXPECT_GT(a.changed, 100);
+  EXPECT_LT(a.changed_off_four / a.changed, 1.5);
+  EXPECT_LT(a.neither, a.changed / 50 + 1);
+  EXPECT_LT(a.off_adaptive, 0.5 * a.off_two);
+  EXPECT_LT(alpha_off_adaptive, alpha_off_two / 2);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include "core/output/tonemap.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -24,11 +25,11 @@ std::vector<PixelRun> pixels_to_refine(const std::vector<float>& samples, int wi
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       // (display_code rises with the light: the extremes' codes are the codes' extremes.)
-      double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+      double lo[4] = {1e300, 1e300, 1e300, 1e300}, hi[4] = {-1e300, -1e300, -1e300, -1e300};
       for (int j = 0; j < factor; ++j) {
         const float* s = &samples[size_t(y * factor + j) * row + size_t(x) * size_t(factor) * 4];
         for (int i = 0; i < factor; ++i)
-          for (int c = 0; c < 3; ++c) {
+          for (int c = 0; c < 4; ++c) {
             const double v = std::isfinite(s[i * 4 + c]) ? double(s[i * 4 + c]) : 0.0;
             lo[c] = std::min(lo[c], v);
             hi[c] = std::max(hi[c], v);
@@ -36,6 +37,7 @@ std::vector<PixelRun> pixels_to_refine(const std::vector<float>& samples, int wi
       }
       bool d = false;
       for (int c = 0; c < 3; ++c) d = d || display_code(hi[c], tonemap) - display_code(lo[c], tonemap) > threshold;
+      d = d || 255.0 * (hi[3] - lo[3]) > threshold;  // an edge of a transparent picture's coverage
       differs[size_t(y) * size_t(width) + size_t(x)] = d;
     }
   // A pixel next to one whose samples disagree takes more too: detail thinner than the
@@ -64,6 +66,17 @@ std::vector<PixelRun> pixels_to_refine(const std::vector<float>& samples, int wi
     }
   }
   return runs;
+}
+
+std::vector<float> samples_from_display(const Image& img) {
+  static const std::array<float, 256> decoded = [] {
+    std::array<float, 256> t{};
+    for (int i = 0; i < 256; ++i) t[size_t(i)] = float(srgb_to_linear(i / 255.0));
+    return t;
+  }();
+  std::vector<float> s(img.rgba.size());
+  for (size_t i = 0; i < img.rgba.size(); ++i) s[i] = i % 4 == 3 ? float(img.rgba[i] / 255.0) : decoded[img.rgba[i]];
+  return s;
 }
 
 long pixels_in(const std::vector<PixelRun>& runs) {

@@ -21,9 +21,16 @@ struct PixelRun {
 // The pixels of a width x height picture whose factor x factor samples (core/output/resolve's
 // layout: linear light times the exposure) differ in some channel by more than
 // `threshold` levels of 8-bit display code after the output transform `tonemap` (where
-// the eye sees the difference), merged into runs along each row, rows in order.
+// the eye sees the difference), or in coverage by more than `threshold` / 255, and the
+// pixels next to those; merged into runs along each row, rows in order.
 std::vector<PixelRun> pixels_to_refine(const std::vector<float>& samples, int width, int height, int factor,
                                        int tonemap, double threshold);
+
+// A picture of 8-bit display samples (premultiplied sRGB codes and coverage: a
+// transparent picture's, which keeps the per-sample output transform) as samples for the
+// functions here: sRGB decoded, alpha 0-1. With the output transform Tonemap::None their
+// resolve is core/io/image's downsample (the mean of the decoded values, encoded again).
+std::vector<float> samples_from_display(const Image&);
 
 // How many pixels the runs hold.
 long pixels_in(const std::vector<PixelRun>& runs);

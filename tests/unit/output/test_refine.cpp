@@ -87,9 +87,29 @@ TEST(Refine, ResolvedPixelsTakeTheMeanOfTheirFineSamples) {
   const Image plain = resolve_linear(s, 4, 3, 2, kAces);
   for (int y = 0; y < 3; ++y)
     for (int x = 0; x < 4; ++x)
-      if (y != 1 || (x != 1 && x != 2)) EXPECT_EQ(out.px(x, y)[0], plain.px(x, y)[0]) << x << ", " << y;
+      if (y != 1 || (x != 1 && x != 2)) {
+        EXPECT_EQ(out.px(x, y)[0], plain.px(x, y)[0]) << x << ", " << y;
+      }
   // No runs: resolve_linear's picture.
   EXPECT_EQ(resolve_refined(s, 4, 3, 2, RefinedSamples{}, kAces).rgba, plain.rgba);
+}
+
+TEST(Refine, ATransparentPicturesDisplaySamplesResolveAsItsDownsample) {
+  // Premultiplied display codes and coverage (a glass's edge over nothing): decoded, the
+  // resolve without a tone map is core/io/image's downsample, and a coverage edge alone
+  // (black over transparent: the same colour codes) is refined.
+  Image img{4, 2, {}};
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4; ++x) {
+      const std::uint8_t a = x == 1 && y == 0 ? 0 : 255, v = std::uint8_t(x * 60 + y * 7);
+      img.rgba.insert(img.rgba.end(), {v, std::uint8_t(v / 2), 0, a});
+    }
+  const std::vector<float> s = samples_from_display(img);
+  EXPECT_EQ(resolve_linear(s, 2, 1, 2, int(Tonemap::None)).rgba, downsample(img, 2).rgba);
+  Image black{4, 2, std::vector<std::uint8_t>(32, 0)};
+  for (size_t i = 3; i < black.rgba.size(); i += 4) black.rgba[i] = i == 3 ? 255 : 0;  // one sample covered
+  const std::vector<PixelRun> edge = {{0, 0, 2}};
+  EXPECT_EQ(pixels_to_refine(samples_from_display(black), 2, 1, 2, int(Tonemap::None), 6.0), edge);
 }
 
 TEST(Refine, MismatchedSizesAreRefused) {
