@@ -69,7 +69,7 @@ constexpr const char* kKeyHelp =
     "move: droplets follow the mouse\n"
     "click/Tab select  Ctrl+Z undo\n"
     "R reset  P pour  S sip  C cut\n"
-    "D debug view  Q quality";
+    "D debug view  Q quality  F12 save picture";
 
 constexpr DebugView kViews[] = {DebugView::None, DebugView::Depth, DebugView::Normal, DebugView::Material,
                                 DebugView::Cost};
@@ -185,6 +185,10 @@ class Viewer {
   void lay_out();
   FrameState framed() const;  // the simulation's frame, framed in the free part of the window
   void write_screenshot(int width, int height) const;
+  // The picture as the CLI draws a still (gpu::Renderer::render: supersampled, adaptive
+  // supersampling, the tier the parameters ask for), the scene alone framed in the whole
+  // picture, width x height, to `out` (atomically); what it says about it.
+  std::string save_picture(const std::filesystem::path& out, int width, int height);
 
   const ViewerOptions opt_;
   std::optional<Timeline> timeline_;
@@ -227,7 +231,8 @@ int Viewer::run() {
     const double dt_ms = std::chrono::duration<double, std::milli>(t - last).count();
     last = t;
     if (frame > 0) frame_ms_ = frame_ms_ == 0 ? dt_ms : 0.9 * frame_ms_ + 0.1 * dt_ms;
-    now_ = opt_.screenshot.empty() ? std::chrono::duration<double>(t - start).count() : frame / kScreenshotFps;
+    const bool scripted = !opt_.screenshot.empty() || !opt_.picture.empty();
+    now_ = scripted ? frame / kScreenshotFps : std::chrono::duration<double>(t - start).count();
 
     // Keys pressed and released between two frames reach ImGui over two (events.hpp).
     SDL_Event e;
@@ -244,8 +249,9 @@ int Viewer::run() {
     lay_out();
     draw_scene(w, h);
     window_.end_frame();
-    if (!opt_.screenshot.empty() && frame + 1 >= opt_.frames) {
-      write_screenshot(w, h);  // the back buffer, before the swap makes it undefined
+    if (scripted && frame + 1 >= opt_.frames) {
+      if (!opt_.screenshot.empty()) write_screenshot(w, h);  // the back buffer, before the swap makes it undefined
+      if (!opt_.picture.empty()) std::printf("%s\n", save_picture(opt_.picture, w, h).c_str());
       return 0;
     }
     window_.swap();
@@ -290,6 +296,22 @@ void Viewer::key(const SDL_Keysym& k, bool repeat) {
   switch (k.sym) {
     case SDLK_ESCAPE: quit_ = true; break;
     case SDLK_F1: show_panel_ = !show_panel_; break;
+    case SDLK_F12: {  // the first free draught-NNNN.png in the working directory
+      int w = 0, h = 0;
+      window_.drawable_size(w, h);
+      std::filesystem::path out;
+      for (int n = 1; n < 10000 && (out.empty() || std::filesystem::exists(out)); ++n) {
+        char name[32];
+        std::snprintf(name, sizeof name, "draught-%04d.png", n);
+        out = name;
+      }
+      try {
+        note_ = save_picture(out, w, h);
+      } catch (const std::exception& e) {
+        note_ = std::string("save picture: ") + e.what();
+      }
+      break;
+    }
     case SDLK_r: restart(); note_ = timeline_ ? "timeline restarted" : "reset: upright, refilled"; break;
     case SDLK_p:
       if (Simulation* v = selected_sim()) v->pour_over(kPourSeconds);
@@ -376,7 +398,7 @@ void Viewer::follow_pointer(double x, double y, bool over_ui) {
   window_.window_size(m.window_width, m.window_height);
   m.over_ui = over_ui;
   m.dragging_glass = (held_[0] || held_[1]) && selected_sim();
-  m.scripted = timeline_.has_value() || !opt_.screenshot.empty();
+  m.scripted = timeline_.has_value() || !opt_.screenshot.empty() || !opt_.picture.empty();
   pointer_motion_ = m;
 }
 
@@ -613,6 +635,18 @@ void Viewer::draw_overlay(int width, int height) {
   }
   overlay_rect_ = current_window_rect();
   ImGui::End();
+}
+
+std::string Viewer::save_picture(const std::filesystem::path& out, int width, int height) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Image img = renderer_.render(sim_->frame(), std::max(width, 16), std::max(height, 16));
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());  // as the CLI does
+  write_png(out, img);
+  char text[256];
+  std::snprintf(text, sizeof text, "saved %s (%d x %d, %.1f s)", out.string().c_str(), img.width, img.height,
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  return text;
 }
 
 void Viewer::write_screenshot(int width, int height) const {

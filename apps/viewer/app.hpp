@@ -11,6 +11,7 @@ struct ViewerOptions {
   std::string glass;            // empty: the drink's suggested glass
   int width = 1280, height = 800;
   std::string screenshot;       // non-empty: render `frames` frames, write this PNG, exit
+  std::string picture;          // non-empty: after `frames` frames, save the picture (F12) here, exit
   int frames = 30;
   std::string timeline;         // non-empty: play this timeline instead of interactive input
   bool preset_given = false, glass_given = false;  // flags win over the timeline's scene

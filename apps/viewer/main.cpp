@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -34,7 +35,10 @@ int main(int argc, char** argv) {
   app.add_option("-s,--size", size, "Window size WIDTHxHEIGHT")->capture_default_str();
   app.add_option("--screenshot", o.screenshot,
                  "Render --frames frames (1/30 s apart), write the window as this PNG and exit");
-  app.add_option("--frames", o.frames, "Frames to render before the screenshot")
+  app.add_option("--picture", o.picture,
+                 "Render --frames frames (1/30 s apart), save the picture as F12 does (the scene alone, drawn as "
+                 "the CLI draws a still) as this PNG and exit");
+  app.add_option("--frames", o.frames, "Frames to render before the screenshot or the picture")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
   app.add_option("-t,--timeline", o.timeline, "Play this timeline (a name or a JSON file) in a loop instead of "
@@ -46,12 +50,13 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     parse_size(size, o.width, o.height);
-    // Checked before a window opens: the screenshot is PNG data, so its name says so.
-    if (!o.screenshot.empty()) {
-      std::string ext = std::filesystem::path(o.screenshot).extension().string();
+    // Checked before a window opens: the screenshot and the picture are PNG data, so their
+    // names say so.
+    for (const auto& [flag, file] : {std::pair{"--screenshot", o.screenshot}, std::pair{"--picture", o.picture}}) {
+      if (file.empty()) continue;
+      std::string ext = std::filesystem::path(file).extension().string();
       for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-      if (ext != ".png")
-        throw std::runtime_error("--screenshot " + o.screenshot + ": expected a file name ending in .png");
+      if (ext != ".png") throw std::runtime_error(std::string(flag) + " " + file + ": expected a file name ending in .png");
     }
     o.preset_given = app.get_option("--preset")->count() > 0;
     o.glass_given = app.get_option("--glass")->count() > 0;

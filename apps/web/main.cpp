@@ -4,6 +4,7 @@
 // text. The page holds a scene of objects (one glass for a drink preset, several for a
 // scene preset); input drives the selected one and the panel edits it.
 #include "core/io/files.hpp"
+#include "core/io/image.hpp"
 #include "core/scene/frame.hpp"
 #include "core/scene/motion.hpp"
 #include "core/input/combined.hpp"
@@ -30,6 +31,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -41,6 +43,9 @@ namespace {
 
 using namespace draught;
 using nlohmann::json;
+
+// How long a frame may spend refining the floor's light map once the scene holds still.
+constexpr double kFloorRefineMs = 4.0;
 
 // Where the mouse or a finger put the droplets' pointer since the last frame: CSS pixels of a
 // width x height canvas (draught_pointer).
@@ -235,7 +240,7 @@ std::unique_ptr<gpu::Renderer> make_web_renderer() {
   s.threads = 1;
   s.photons = kFloorPhotonsStill;
   r->set_floor_light(s, true, kFloorPhotonsStill / 100);
-  r->set_floor_refinement(kFloorPhotonsStill / 500, 4.0);
+  r->set_floor_refinement(kFloorPhotonsStill / 500, kFloorRefineMs);
   r->set_moving_drafts(true);  // the MatCap tier's background while things move
   return r;
 }
@@ -731,6 +736,48 @@ EMSCRIPTEN_KEEPALIVE const char* draught_export_preset(const char* name) {
   try {
     const std::string text = scene_preset_json(app->scene, name, "Saved from the draught web page");
     return answer_json(json{{"text", text}, {"error", ""}});
+  } catch (const std::exception& e) {
+    return answer_json(json{{"error", e.what()}});
+  }
+}
+
+// The picture as a PNG (the "Save picture" button): the frame now, drawn the CLI's way at
+// width x height (its supersamples and adaptive supersampling, the tier the parameters
+// ask for, not the adaptive quality's fall-backs). The PNG's bytes stay in `saved` until
+// the next call: {"error", "bytes" (their address), "size", "width", "height", "ms"}.
+EMSCRIPTEN_KEEPALIVE const char* draught_save_picture(int width, int height) {
+  static std::string saved;
+  if (!app || !app->renderer || !app->sim || app->context_lost) return answer_json(json{{"error", "not drawing"}});
+  try {
+    width = std::clamp(width, 16, 4096);
+    height = std::clamp(height, 16, 4096);
+    const double t0 = now_s();
+    FrameState f = app->sim->frame();
+    if (f.screen.external) f.screen.set_external_size(app->screen_w, app->screen_h, f.params);
+    emscripten_webgl_make_context_current(app->gl);
+    // A still's backdrop light, not a draft of moving frames, and the floor's light map
+    // refined to the still's whole budget now, not a few batches a frame (set back after).
+    auto still = [](bool on) {
+      app->renderer->set_moving_drafts(!on);
+      app->renderer->set_floor_refinement(kFloorPhotonsStill / 500, on ? 1e9 : kFloorRefineMs);
+    };
+    still(true);
+    Image img;
+    try {
+      img = app->renderer->render(f, width, height);
+    } catch (...) {
+      still(false);
+      throw;
+    }
+    still(false);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    saved = encode_png(img);
+    return answer_json(json{{"error", ""},
+                            {"bytes", reinterpret_cast<std::uintptr_t>(saved.data())},
+                            {"size", saved.size()},
+                            {"width", width},
+                            {"height", height},
+                            {"ms", (now_s() - t0) * 1000.0}});
   } catch (const std::exception& e) {
     return answer_json(json{{"error", e.what()}});
   }

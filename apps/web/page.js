@@ -145,6 +145,7 @@
       loadEnvironment: fn('draught_load_environment', 'json', ['string', 'bytes', 'number']),
       loadCloud: fn('draught_load_cloud', 'json', ['string', 'bytes', 'number']),
       exportPreset: fn('draught_export_preset', 'json', ['string']),
+      savePicture: fn('draught_save_picture', 'json', ['number', 'number']),
       loadDecal: fn('draught_load_decal', 'string', ['string', 'number', 'number', 'number']),
       pour: fn('draught_pour', null),
       setInput: fn('draught_set_input', 'string', ['string']),
@@ -654,6 +655,17 @@
       say(`${name} is the ${layer === 1 ? 'inner' : 'outer'} decal of ${objects.length > 1 ? objects[selected].name : 'the glass'}; place it with ${layerName}.angle, .height and .width`);
       return '';
     };
+    // A file the browser downloads (the Export and Save picture buttons).
+    const download = (name, blob) => {
+      const url = URL.createObjectURL(blob);
+      const a = document.createElement('a');
+      a.href = url;
+      a.download = name;
+      document.body.append(a);
+      a.click();
+      a.remove();
+      setTimeout(() => URL.revokeObjectURL(url), 1000);
+    };
     $('export').addEventListener('click', () => {
       const name = `${current.drink}-custom`;
       const r = JSON.parse(api.exportPreset(name));
@@ -663,15 +675,28 @@
       }
       const text = r.text;
       page.lastExport = text;
-      const url = URL.createObjectURL(new Blob([text], { type: 'application/json' }));
-      const a = document.createElement('a');
-      a.href = url;
-      a.download = name + '.json';
-      document.body.append(a);
-      a.click();
-      a.remove();
-      setTimeout(() => URL.revokeObjectURL(url), 1000);
+      download(name + '.json', new Blob([text], { type: 'application/json' }));
       say(`exported ${name}.json`);
+    });
+    // The picture as the CLI draws a still (2 x 2 samples, 4 x 4 where they disagree), at
+    // the canvas's size on the screen (CSS pixels times the device's ratio, at most 2048 a
+    // side): seconds on a software WebGL, so the message goes up first.
+    $('save-picture').addEventListener('click', () => {
+      const c = $('canvas').getBoundingClientRect(), dpr = Math.max(1, window.devicePixelRatio || 1);
+      const fit = Math.min(1, 2048 / Math.max(c.width * dpr, c.height * dpr, 1));
+      const w = Math.max(16, Math.round(c.width * dpr * fit)), h = Math.max(16, Math.round(c.height * dpr * fit));
+      say(`drawing a ${w} x ${h} picture…`);
+      setTimeout(() => {
+        const r = JSON.parse(api.savePicture(w, h));
+        if (r.error) {
+          say('save picture: ' + r.error, true);
+          return;
+        }
+        const png = M.HEAPU8.slice(r.bytes, r.bytes + r.size);
+        const name = `${current.drink}.png`;
+        download(name, new Blob([png], { type: 'image/png' }));
+        say(`saved ${name} (${r.width} x ${r.height}, drawn in ${(r.ms / 1000).toFixed(1)} s)`);
+      }, 30);
     });
     $('sensors').addEventListener('click', async () => {
       try {

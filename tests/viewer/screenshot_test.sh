@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The viewer in a virtual X server (Xvfb, Mesa's software GLES 3): one screenshot without the
 # panel (the glass must show), one at the low quality tier (still the glass, from half the
-# resolution), one with the panel (the panel must draw), and scenes checked object by object
+# resolution), one with the panel (the panel must draw), the picture F12 saves (the scene
+# alone, with the panel shown), and scenes checked object by object
 # against the reference intersector: the single glass, then with the panel and the overlay
 # (the glass framed clear of them), then the flight of four glasses beside the panel
 # (presets/scenes/flight.json).
@@ -34,6 +35,17 @@ run --preset lager --size 320x240 --frames 30 --screenshot "$out/viewer-panel.pn
 "$checker" "$out/viewer-panel.png" 320 240 panel "$out/viewer-glass.png"
 # The scene check on one glass (the same code path as the flight's).
 "$checker" "$out/viewer-glass.png" 320 240 scene lager
+# The picture as F12 saves it (--picture: the same code after the frames), with the panel
+# shown: the scene alone, framed in the whole picture, drawn as the CLI draws a still.
+if "$viewer" --picture "$out/viewer-picture.jpg" 2>"$out/viewer-picture.err"; then
+  echo "viewer_screenshot: --picture x.jpg was accepted" >&2; exit 1
+fi
+grep -q "expected a file name ending in .png" "$out/viewer-picture.err" || { cat "$out/viewer-picture.err" >&2; exit 1; }
+run --preset lager --size 320x240 --frames 10 --picture "$out/viewer-picture.png" >"$out/viewer-picture.txt"
+cat "$out/viewer-picture.txt"
+grep -q "saved .*viewer-picture.png (320 x 240" "$out/viewer-picture.txt" || { echo "viewer_screenshot: no picture saved" >&2; exit 1; }
+"$checker" "$out/viewer-picture.png" 320 240 glass
+"$checker" "$out/viewer-picture.png" 320 240 scene lager
 # With the panel and the overlay: the glass is framed in the part of the window they leave
 # free, every pixel of it clear of them (the viewer prints where they are).
 run --preset lager --size 800x500 --frames 10 --screenshot "$out/viewer-uncovered.png" >"$out/viewer-uncovered.txt"
@@ -49,4 +61,4 @@ fi
 run --preset flight --size 960x540 --frames 6 --screenshot "$out/viewer-flight.png" >"$out/viewer-flight.txt"
 cat "$out/viewer-flight.txt"
 "$checker" "$out/viewer-flight.png" 960 540 uncovered flight "$out/viewer-flight.txt"
-echo "viewer screenshots: $out/viewer-glass.png $out/viewer-low.png $out/viewer-panel.png $out/viewer-uncovered.png $out/viewer-flight.png"
+echo "viewer screenshots: $out/viewer-glass.png $out/viewer-low.png $out/viewer-panel.png $out/viewer-picture.png $out/viewer-uncovered.png $out/viewer-flight.png"

@@ -227,6 +227,24 @@ test('export downloads the current state as a preset that loads back', async () 
   await page.selectOption('#drink', 'lager');
 });
 
+// "Save picture": the frame drawn as the CLI draws a still, a PNG at the canvas's size.
+test('save picture downloads a PNG of the picture at the canvas size; drawing goes on', async () => {
+  const page = await desktop();
+  const [download] = await Promise.all([page.waitForEvent('download', { timeout: patience(120000) }), page.click('#save-picture')]);
+  assert.match(download.suggestedFilename(), /\.png$/);
+  const png = fs.readFileSync(await download.path());
+  fs.writeFileSync(path.join(artifacts, 'saved-picture.png'), png);
+  assert.equal(png.subarray(1, 4).toString('latin1'), 'PNG');
+  assert.equal(png.subarray(12, 16).toString('latin1'), 'IHDR');
+  assert.deepEqual([png.readUInt32BE(16), png.readUInt32BE(20)], [160, 120]);
+  // A picture, not an empty frame: a glass over the sweep does not compress to nothing.
+  assert.ok(png.length > 8000, `${png.length} bytes`);
+  const message = await page.textContent('#message');
+  assert.match(message, /saved lager\.png \(160 x 120/);
+  note(message);
+  await waitFrames(page, 3);
+});
+
 test('a decal image from disk goes on the selected glass; a broken one changes nothing', async () => {
   const page = await desktop();
   await page.selectOption('#drink', 'lager');
