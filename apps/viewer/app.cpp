@@ -155,10 +155,7 @@ class Viewer {
     if (rig_.gamepad) gamepad_ = std::make_unique<SdlGamepadInput>(*rig_.gamepad);
     // The floor's shadows: drafts while something moves (milliseconds), then the
     // interactive budget in five batches over as many frames once it holds still.
-    FloorLightSettings floor;
-    floor.photons = kFloorPhotonsInteractive;
-    renderer_.set_floor_light(floor, true, kFloorPhotonsInteractive / 5);
-    renderer_.set_moving_drafts(true);  // the MatCap tier's background while things move
+    interactive(true);
     applied_revision_ = editor_.revision();
     restart();
   }
@@ -189,6 +186,9 @@ class Viewer {
   // supersampling, the tier the parameters ask for), the scene alone framed in the whole
   // picture, width x height, to `out` (atomically); what it says about it.
   std::string save_picture(const std::filesystem::path& out, int width, int height);
+  // The renderer's settings for frames drawn as things move (on), or for a still: the
+  // floor's light map at the CLI's still budget at once, the backgrounds not drafted.
+  void interactive(bool on);
 
   const ViewerOptions opt_;
   std::optional<Timeline> timeline_;
@@ -637,9 +637,26 @@ void Viewer::draw_overlay(int width, int height) {
   ImGui::End();
 }
 
+void Viewer::interactive(bool on) {
+  // The floor's shadows while interactive: drafts while something moves (milliseconds),
+  // then the interactive budget in five batches over as many frames once it holds still.
+  FloorLightSettings floor;
+  floor.photons = on ? kFloorPhotonsInteractive : kFloorPhotonsStill;
+  renderer_.set_floor_light(floor, true, on ? kFloorPhotonsInteractive / 5 : 0);
+  renderer_.set_moving_drafts(on);  // the MatCap tier's background while things move
+}
+
 std::string Viewer::save_picture(const std::filesystem::path& out, int width, int height) {
   const auto t0 = std::chrono::steady_clock::now();
-  const Image img = renderer_.render(sim_->frame(), std::max(width, 16), std::max(height, 16));
+  interactive(false);
+  Image img;
+  try {
+    img = renderer_.render(sim_->frame(), std::max(width, 16), std::max(height, 16));
+  } catch (...) {
+    interactive(true);
+    throw;
+  }
+  interactive(true);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());  // as the CLI does
   write_png(out, img);
