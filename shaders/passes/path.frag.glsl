@@ -257,9 +257,11 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
       if (!transparent && !into_wall) look = Look(p, r, path.thr * c.F, rough, true, true, h.obj);
     } else {
       vec3 out_dir;
+      float turned;  // what the way out turns back in sees the sky's mean
       vec3 tr = reflected_light(v, g, h.m, path.medium, below, path.drink == h.obj ? path.left : v.body.absorption_share, pl,
-                                to_local_dir(v, r), to_local_dir(v, c.n), out_dir);
-      look = Look(p, to_world_dir(v, out_dir), path.thr * c.F * tr, rough, false, false, -1);
+                                to_local_dir(v, r), to_local_dir(v, c.n), out_dir, turned);
+      look = Look(p, to_world_dir(v, out_dir), path.thr * c.F * tr * (1.0 - turned), rough, false, false, -1);
+      path.radiance += path.thr * c.F * tr * turned * sky_mean();
 #if DECALS
       if (decal.metal) {  // the metal's reflection takes the same way out
         decal_look *= tr;

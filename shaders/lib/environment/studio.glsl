@@ -88,6 +88,11 @@ vec3 sh_irradiance(vec3 c[9], vec3 n) {
   return max(e, vec3(0.0));
 }
 
+// The sky's mean radiance over the sphere (its band-0 harmonic; the rig's lights left
+// out): what light turned back inside a glass at an internal reflection's way out sees,
+// wherever it leaves in the end (media.glsl reflected_light).
+vec3 sky_mean() { return g_sky_sh[0] * (0.282095 / PI); }
+
 // The sky's irradiance on a surface of unit normal n: the nine coefficients core
 // projected Studio::sky onto.
 vec3 sky_irradiance(vec3 n) { return sh_irradiance(g_sky_sh, n); }

@@ -5,6 +5,7 @@
 #include "lib/scene/objects.glsl"
 #include "lib/vessel/intersect.glsl"
 #include "lib/liquid/body.glsl"
+#include "lib/optics/fresnel.glsl"
 
 // The medium on the far side of surface m for a path now in `from`; `below`: whether
 // the point lies under the liquid's surface (it decides what is behind the inner wall
@@ -88,11 +89,15 @@ vec3 leave_through(vec3 r, vec3 n_out, float eta) {
 // directions the tapered walls bend away: too bright, pinkish). In the drink: across it
 // to the cavity's wall, floor or surface. In the glass: across the wall, the base or the
 // rim bead's tube, and where it turns inwards (off the outer wall or the foot's
-// underside) across the cavity and its drink to the far side. Not a twin: the reference
-// follows these paths (docs/REFERENCE.md measures the difference).
+// underside) across the cavity and its drink to the far side. `turned`: the part the
+// way out reflects back in (Fresnel there, as from the medium straight into the air),
+// which the caller gives the surroundings' mean: it leaves in the end, somewhere (in even
+// light, as the light itself). Not a twin: the reference follows these paths
+// (docs/REFERENCE.md measures the difference).
 vec3 reflected_light(Vessel v, ObjectGlass g, int m, int medium, bool below, vec3 left, vec3 p, vec3 r, vec3 n,
-                     out vec3 out_dir) {
+                     out vec3 out_dir, out float turned) {
   out_dir = r;
+  turned = 0.0;
   bool liquid = medium == MEDIUM_LIQUID;
   if (!liquid && medium != MEDIUM_GLASS) return vec3(1.0);
   // Every case in one pass, each step once (llvmpipe runs every copy of inlined code).
@@ -113,7 +118,11 @@ vec3 reflected_light(Vessel v, ObjectGlass g, int m, int medium, bool below, vec
   if (liquid && !spans) return vec3(1.0);
   if (!spans) n_out = -n;  // out through the face opposite the one it reflected off
   float in_drink = spans && drink ? span.y - span.x : 0.0;
-  if (liquid || m != M_RIM) out_dir = leave_through(r, n_out, liquid ? v.liquid.ior : g.glass_ior);
+  if (liquid || m != M_RIM) {
+    float eta = liquid ? v.liquid.ior : g.glass_ior;
+    out_dir = leave_through(r, n_out, eta);
+    turned = fresnel_dielectric(abs(dot(r, n_out)), eta, 1.0);  // (1 under total internal reflection)
+  }
   // left: the shares of this drink's colour bands on the path (drink_onward); a path in
   // the glass that turns inwards meets the drink again. A haze takes out only what it
   // absorbs: what it scatters out of the way it scatters in from the light around (as
