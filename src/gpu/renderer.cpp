@@ -20,6 +20,7 @@
 #include <cstring>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 namespace draught::gpu {
 
@@ -586,8 +587,12 @@ std::vector<float> Renderer::draw_refined(const FrameState& f, int width, int he
                          std::min((r.y + 1) * fine, ty + th) - std::max(r.y * fine, ty)};
       };
       std::vector<PixelRect> rects;  // in GL's rows from the bottom of the tile
-      for (const PixelRun& r : runs)
-        if (const PixelRect b = block(r); b.w > 0 && b.h > 0) rects.push_back({b.x - tx, th - (b.y + b.h - ty), b.w, b.h});
+      std::vector<std::pair<size_t, PixelRect>> blocks;  // the runs in this tile and their blocks
+      for (size_t k = 0; k < runs.size(); ++k)
+        if (const PixelRect b = block(runs[k]); b.w > 0 && b.h > 0) {
+          rects.push_back({b.x - tx, th - (b.y + b.h - ty), b.w, b.h});
+          blocks.emplace_back(k, b);
+        }
       if (rects.empty()) continue;
       FrameState tile = f;  // the fine picture's part f.view, in fractions of this tile
       tile.view = {(f.view.x * fw - tx) / tw, (f.view.y * fh - ty) / th, f.view.width * fw / tw,
@@ -595,12 +600,10 @@ std::vector<float> Renderer::draw_refined(const FrameState& f, int width, int he
       RenderTarget target(tw, th, linear ? RenderTarget::Format::Rgba16F : RenderTarget::Format::Rgba8);
       draw_picture(tile, tw, th, DebugView::None, 0, linear, &rects);
       glPixelStorei(GL_PACK_ALIGNMENT, 4);
-      size_t rect = 0;
-      for (size_t k = 0; k < runs.size(); ++k) {
+      for (size_t i = 0; i < blocks.size(); ++i) {
+        const auto& [k, b] = blocks[i];
         const PixelRun& r = runs[k];
-        const PixelRect b = block(r);
-        if (!(b.w > 0 && b.h > 0)) continue;
-        const PixelRect& g = rects[rect++];
+        const PixelRect& g = rects[i];
         band.resize(size_t(g.w) * size_t(g.h) * 4);
         if (linear) {
           glReadPixels(g.x, g.y, g.w, g.h, GL_RGBA, GL_FLOAT, band.data());

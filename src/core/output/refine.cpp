@@ -13,11 +13,7 @@ namespace draught {
 
 std::vector<PixelRun> pixels_to_refine(const std::vector<float>& samples, int width, int height, int factor,
                                        int tonemap, double threshold) {
-  if (width < 0 || height < 0 || factor < 1 ||
-      samples.size() != size_t(width) * size_t(height) * size_t(factor) * size_t(factor) * 4)
-    throw std::invalid_argument("pixels_to_refine: " + std::to_string(samples.size()) + " sample values for " +
-                                std::to_string(width) + " x " + std::to_string(height) + " pixels of " +
-                                std::to_string(factor) + " x " + std::to_string(factor) + " samples");
+  check_sample_count("pixels_to_refine", samples, width, height, factor);
   std::vector<PixelRun> runs;
   if (factor < 2) return runs;  // one sample: nothing to disagree
   const size_t row = size_t(width) * size_t(factor) * 4;
@@ -93,7 +89,6 @@ Image resolve_refined(const std::vector<float>& samples, int width, int height, 
     throw std::invalid_argument("resolve_refined: " + std::to_string(refined.rgba.size()) +
                                 " fine sample values for " + std::to_string(pixels_in(refined.runs)) +
                                 " pixels of " + std::to_string(fine) + " x " + std::to_string(fine) + " samples");
-  const double n = double(fine) * double(fine);
   size_t at = 0;  // the run's first sample value
   for (const PixelRun& r : refined.runs) {
     if (r.y < 0 || r.y >= height || r.x < 0 || r.length < 0 || r.x + r.length > width)
@@ -101,18 +96,9 @@ Image resolve_refined(const std::vector<float>& samples, int width, int height, 
                                   std::to_string(r.x) + ", " + std::to_string(r.y) + ") leaves the " +
                                   std::to_string(width) + " x " + std::to_string(height) + " picture");
     const size_t row = size_t(r.length) * size_t(fine) * 4;
-    for (int k = 0; k < r.length; ++k) {
-      double sum[4] = {0, 0, 0, 0};
-      for (int j = 0; j < fine; ++j) {
-        const float* s = &refined.rgba[at + size_t(j) * row + size_t(k) * size_t(fine) * 4];
-        for (int i = 0; i < fine * 4; ++i) {
-          const double v = s[i];
-          sum[i % 4] += std::isfinite(v) ? v : 0.0;
-        }
-      }
-      double* m = &means[(size_t(r.y) * size_t(width) + size_t(r.x + k)) * 4];
-      for (int c = 0; c < 4; ++c) m[c] = sum[c] / n;
-    }
+    for (int k = 0; k < r.length; ++k)
+      block_mean(&refined.rgba[at + size_t(k) * size_t(fine) * 4], row, fine,
+                 &means[(size_t(r.y) * size_t(width) + size_t(r.x + k)) * 4]);
     at += row * size_t(fine);
   }
   return display_means(means, width, height, tonemap);

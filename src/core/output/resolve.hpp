@@ -16,6 +16,13 @@ namespace draught {
 // Throws std::invalid_argument when the sizes do not match.
 Image resolve_linear(const std::vector<float>& samples, int width, int height, int factor, int tonemap);
 
+// Throws std::invalid_argument (naming `who`) unless `samples` holds width x height pixels
+// of factor x factor RGBA samples.
+void check_sample_count(const char* who, const std::vector<float>& samples, int width, int height, int factor);
+// The mean RGBA of one pixel's factor x factor samples, its first at `first`, rows of the
+// samples `row` floats apart (a non-finite value, a half float's overflow, counts as none).
+void block_mean(const float* first, size_t row, int factor, double mean[4]);
+
 // Its two steps. Each pixel's mean of its factor x factor samples (RGBA; a sample's
 // non-finite value, a half float's overflow, counts as none), with the same checks.
 std::vector<double> sample_means(const std::vector<float>& samples, int width, int height, int factor);
