@@ -64,7 +64,7 @@ void BM_SurroundSeenFromAHead(benchmark::State& state) {
   const glm::dvec3 at = head_middle(f.vessels[0]);
   for (auto _ : state)
     benchmark::DoNotOptimize(
-        backdrop_share(studio, f.lights, f.backdrop, f.environment.surround, at, 16, drink_columns(f.vessels)));
+        backdrop_share(studio, f.lights, f.backdrop, *f.environment.paper_bounce, at, 16, drink_columns(f.vessels)));
 }
 BENCHMARK(BM_SurroundSeenFromAHead)->Unit(benchmark::kMicrosecond);
 
@@ -72,7 +72,10 @@ void BM_SurroundOfTheScene(benchmark::State& state) {
   const FrameState f = make_frame(glass_params("pint"));
   const Studio studio(f.params);
   const SkyIrradiance sky = sky_irradiance(studio);
-  for (auto _ : state) benchmark::DoNotOptimize(surround_irradiance(studio, sky, f.lights, f.backdrop, f.lights.aim));
+  for (auto _ : state) {
+    const PaperBounceMap bounce = paper_bounce_map(f.lights, f.backdrop, sky, f.lights.aim);
+    benchmark::DoNotOptimize(surround_irradiance(studio, sky, f.lights, f.backdrop, bounce, f.lights.aim));
+  }
 }
 BENCHMARK(BM_SurroundOfTheScene)->Unit(benchmark::kMicrosecond);
 

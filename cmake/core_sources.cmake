@@ -44,6 +44,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/foam/foam.cpp
   src/core/foam/head_volume.cpp
   src/core/environment/reflection.cpp
+  src/core/environment/paper_bounce.cpp
   src/core/environment/image_patches.cpp
   src/core/environment/media_light.cpp
   src/core/environment/studio.cpp

@@ -58,6 +58,12 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
   b.sweep_albedo = glm::vec3(f.backdrop.sweep_albedo);
   b.sky_light = glm::vec3(f.environment.sky.at({0, 1, 0}) / 3.14159265358979);
   for (int i = 0; i < 9; ++i) b.surround_sh[i] = {glm::vec3(f.environment.surround.coef[size_t(i)]), 0.0f};
+  if (const PaperBounceMap* m = f.environment.paper_bounce.get(); m && !m->empty()) {
+    b.paper_bounce_rect = glm::vec4(glm::vec2(m->origin), glm::vec2(m->size));
+    for (size_t k = 0; k < m->bounce.size(); ++k) b.paper_bounce[k] = {glm::vec3(m->bounce[k]), 0.0f};
+  } else {
+    b.paper_bounce_rect = glm::vec4(0.0f);
+  }
   // What heads and haze take: the rig, or an image's brightest patches (core media_light).
   const MediaLight& media = f.environment.media;
   b.media_light_count = std::min<int>(int(media.lights.size()), contract::kMaxLights);

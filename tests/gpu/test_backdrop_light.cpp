@@ -101,7 +101,7 @@ TEST(BackdropLightPicture, TheSweepIsWithinOneStepOfTheExactShading) {
         if (!clear || !f.backdrop.intersect(r.o, r.d, 0.0, t, n)) continue;
         const glm::dvec3 p = r.at(t);
         const glm::dvec3 e =
-            f.backdrop.albedo(p) / std::numbers::pi * (f.lights.irradiance(p, n) + f.environment.surround.at(n));
+            f.backdrop.albedo(p) / std::numbers::pi * (f.lights.irradiance(p, n) + f.environment.paper_bounce->at(f.backdrop, p));
         for (int c = 0; c < 3; ++c) {
           double v = e[c] * rp.exposure;
           if (rp.tonemap == int(Tonemap::Aces)) v = aces_filmic(v);

@@ -183,7 +183,7 @@ TEST(StudioPicture, ABackdropLitByOneLightShowsItsExactIrradiance) {
       const glm::dvec3 p = r.at(t);
       const glm::dvec3 expected =
           exposure * f.backdrop.albedo(p) / std::numbers::pi *
-          (key.radiance * key.irradiance_factor(p, n) + f.environment.surround.at(n));  // and the paper's own bounce
+          (key.radiance * key.irradiance_factor(p, n) + f.environment.paper_bounce->at(f.backdrop, p));  // and the paper's own bounce
       for (int c = 0; c < 3; ++c) {
         if (expected[c] < 0.05 || expected[c] > 0.95) continue;
         const double got = srgb_to_linear(img.px(x, y)[c] / 255.0);

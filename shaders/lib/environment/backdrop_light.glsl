@@ -2,7 +2,8 @@
 // map core computes when the lights, the backdrop or the scene's aim change
 // (core/environment/backdrop_light), over the sweep unrolled to (x, s); the exact sum of
 // the lights (lights.glsl rig_irradiance) outside the map and where the map distrusts its
-// filtering (a = 0: a light through the paper, a light's plane crossing it).
+// filtering (a = 0: a light through the paper, a light's plane crossing it). And the
+// paper's own bounce, from a coarse map over the same coordinates (paper_bounce).
 #ifndef LIB_ENVIRONMENT_BACKDROP_LIGHT_GLSL
 #define LIB_ENVIRONMENT_BACKDROP_LIGHT_GLSL
 #include "generated/frame.glsl"
@@ -33,6 +34,22 @@ vec3 backdrop_light(vec3 p, vec3 n) {
   // map serves runs none of them).
   bool served = m.a > 0.999;
   return (served ? m.rgb : vec3(0.0)) + rig_irradiance(p, n, served ? 0 : g_light_count);
+}
+
+// The light the paper receives at backdrop point p besides the rig's direct light: its own
+// bounce, the sky's and the lit paper's round it (core/environment/paper_bounce), bilinear
+// between the map's texel centres, the edge's beyond them. Twin of PaperBounceMap::at.
+vec3 paper_bounce(vec3 p) {
+  vec4 rect = frame.paper_bounce_rect;
+  if (rect.z <= 0.0) return vec3(0.0);
+  const int N = PAPER_BOUNCE_TEXELS;
+  vec2 uv = clamp((backdrop_coords(backdrop_surface(), p) - rect.xy) / rect.zw * float(N) - 0.5, vec2(0.0), vec2(float(N - 1)));
+  ivec2 i = min(ivec2(uv), ivec2(N - 2));
+  vec2 f = uv - vec2(i);
+  int k = i.y * N + i.x;
+  vec3 lo = mix(frame.paper_bounce[k].rgb, frame.paper_bounce[k + 1].rgb, f.x);
+  vec3 hi = mix(frame.paper_bounce[k + N].rgb, frame.paper_bounce[k + N + 1].rgb, f.x);
+  return mix(lo, hi, f.y);
 }
 
 #endif  // LIB_ENVIRONMENT_BACKDROP_LIGHT_GLSL

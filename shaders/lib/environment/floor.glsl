@@ -98,11 +98,12 @@ vec3 clouds_glow_irradiance(vec3 p, vec3 n) {
 
 // The backdrop at p (world, normal n), seen along d from `dist` away: albedo / pi times the
 // light it receives, the rig's direct light (one texel of the backdrop's light map; on the
-// floor through the traced map's shadows and caustics), the surround's (the sky and the
-// paper's own bounce, seen from the scene's centre) around the feet, and hot clouds' glow.
+// floor through the traced map's shadows and caustics), the paper's own bounce where it is
+// (the sky and the lit paper round it: paper_bounce) darkened round the feet, and hot
+// clouds' glow.
 vec3 shade_backdrop(vec3 p, vec3 n, vec3 d, float dist) {
   BackdropSurface bd = backdrop_surface();
-  vec3 e = surround_irradiance(n) * floor_contact(p) + floor_direct_light(p, n);
+  vec3 e = paper_bounce(p) * floor_contact(p) + floor_direct_light(p, n);
 #ifdef ENV_IMAGE
   // An image's light is all sky: the map's shadows and caustics (of its brightest patches,
   // core floor_emitters) change it on the floor.
@@ -120,7 +121,7 @@ vec3 shade_backdrop(vec3 p, vec3 n, vec3 d, float dist) {
 // traces no map and darkens what it sees round the feet its own way.)
 vec3 shade_backdrop_mirrored(vec3 p, vec3 n, vec3 d, float dist, bool shadows) {
   BackdropSurface bd = backdrop_surface();
-  vec3 direct = rig_irradiance_far(p, n, g_light_count), around = surround_irradiance(n);
+  vec3 direct = rig_irradiance_far(p, n, g_light_count), around = paper_bounce(p);
   if (shadows) {
     if (n.y > 0.999) direct *= floor_light_factor(p);
     around *= floor_contact(p);

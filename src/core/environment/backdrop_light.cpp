@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <thread>
 
 namespace draught {
 
@@ -32,10 +31,6 @@ glm::dvec3 backdrop_point(const BackdropSurface& b, const glm::dvec2& xs, glm::d
   return {x, r - r * std::cos(phi), b.z_curve - r * std::sin(phi)};
 }
 
-glm::dvec2 BackdropLightMap::texel_centre(int i, int j) const {
-  return origin + glm::dvec2((i + 0.5) * size.x / width, (j + 0.5) * size.y / height);
-}
-
 bool BackdropLightMap::covers(const glm::dvec2& xs) const {
   if (empty()) return false;
   const glm::dvec2 uv = (xs - origin) / size * glm::dvec2(width, height);
@@ -48,16 +43,10 @@ double BackdropLightMap::untrusted_fraction() const {
 }
 
 glm::dvec4 BackdropLightMap::sample(const glm::dvec2& xs) const {
-  const double u = std::clamp((xs.x - origin.x) / size.x * width - 0.5, 0.0, width - 1.0);
-  const double v = std::clamp((xs.y - origin.y) / size.y * height - 0.5, 0.0, height - 1.0);
-  const int i = std::min(int(u), width - 1), j = std::min(int(v), height - 1);
-  const int i1 = std::min(i + 1, width - 1), j1 = std::min(j + 1, height - 1);
-  const double fu = u - i, fv = v - j;
-  auto at = [this](int a, int b) {
+  return bilinear(xs, [this](int a, int b) {
     const size_t k = size_t(b) * size_t(width) + size_t(a);
     return glm::dvec4(glm::dvec3(irradiance[k]), trusted[k]);
-  };
-  return glm::mix(glm::mix(at(i, j), at(i1, j), fu), glm::mix(at(i, j1), at(i1, j1), fu), fv);
+  });
 }
 
 BackdropLightMap compute_backdrop_light(const LightRig& rig, const BackdropSurface& b, const glm::dvec3& aim,
@@ -84,7 +73,7 @@ BackdropLightMap compute_backdrop_light(const LightRig& rig, const BackdropSurfa
   map.size = {map.width * texel.x, map.height * texel.y};
   map.origin = {lo.x, s0};
   map.irradiance.resize(size_t(map.width) * size_t(map.height));
-  const int threads = int(std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
+  const int threads = sweep_grid_lanes();
   auto rows = [&](int t) {
     for (int j = t; j < map.height; j += threads)
       for (int i = 0; i < map.width; ++i) {
@@ -93,10 +82,7 @@ BackdropLightMap compute_backdrop_light(const LightRig& rig, const BackdropSurfa
         map.irradiance[size_t(j) * size_t(map.width) + size_t(i)] = glm::vec3(rig.irradiance(p, n));
       }
   };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(rows, t);
-  rows(0);
-  for (std::thread& t : pool) t.join();
+  in_lanes(threads, rows);
 
   // Cells (i, j)-(i + 1, j + 1) where filtering errs: checked at the middle and at the
   // middles of the bottom and left edges (the others are a neighbour's).
@@ -120,10 +106,7 @@ BackdropLightMap compute_backdrop_light(const LightRig& rig, const BackdropSurfa
             off({mid.x, c00.y}, 0.5 * (e(i, j) + e(i + 1, j))) || off({c00.x, mid.y}, 0.5 * (e(i, j) + e(i, j + 1)));
       }
   };
-  pool.clear();
-  for (int t = 1; t < threads; ++t) pool.emplace_back(cells, t);
-  cells(0);
-  for (std::thread& t : pool) t.join();
+  in_lanes(threads, cells);
   // A bad cell and the cells around it (a light's edge the checks just missed) distrust
   // all their corners.
   map.trusted.assign(map.irradiance.size(), 1.0f);

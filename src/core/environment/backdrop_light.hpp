@@ -13,6 +13,7 @@
 
 #include "core/environment/backdrop.hpp"
 #include "core/environment/lights.hpp"
+#include "core/environment/sweep_grid.hpp"
 #include "core/scene/frame.hpp"
 
 #include <glm/glm.hpp>
@@ -48,20 +49,15 @@ struct BackdropLightSettings {
   int guard = 0;  // rings of cells around a distrusted cell also distrusted
 };
 
-struct BackdropLightMap {
-  glm::dvec2 origin{0.0};  // (x, s) of the map's corner
-  glm::dvec2 size{0.0};    // extent along x and s
-  int width = 0, height = 0;
+struct BackdropLightMap : SweepGrid {
   std::vector<glm::vec3> irradiance;  // W/m^2, row-major, row j along s, at texel centres
   // Per texel, 1 where filtering may be trusted in every cell it is a corner of, 0 where
   // not (a cell whose middle or edges' middles err by more than kBackdropLightTolerance,
   // and the cells around it): there, the exact sum.
   std::vector<float> trusted;
 
-  bool empty() const { return width == 0 || height == 0; }
   // The part of the map's texels that are not trusted.
   double untrusted_fraction() const;
-  glm::dvec2 texel_centre(int i, int j) const;
   // Whether (x, s) lies between the outermost texel centres (where filtering interpolates).
   bool covers(const glm::dvec2& xs) const;
   // The map at (x, s), bilinear between texel centres as GL's linear filter; a (trust)

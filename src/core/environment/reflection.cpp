@@ -29,11 +29,11 @@ void image_glint(const Studio& studio, EnvironmentFrame& f) {
 namespace {
 
 // Where a direction from `at` meets the backdrop, as a cell of a rows x 2 rows grid sees
-// it: the point's normal, its albedo / pi, what the rig gives it (each light's share
+// it: the point and its normal, its albedo / pi, what the rig gives it (each light's share
 // through `passes`), the sky the paper hides there (each times the cell's solid angle)
 // and the harmonics, with the cosine's bands, of the direction.
 struct BackdropPatch {
-  glm::dvec3 n, albedo, rig, hidden;
+  glm::dvec3 p, n, albedo, rig, hidden;
   std::array<double, 9> y;
 };
 
@@ -51,7 +51,7 @@ void for_each_backdrop_patch(const Studio& studio, const LightRig& rig, const Ba
     } else {
       lit = rig.irradiance(p, n);
     }
-    BackdropPatch patch{n, backdrop.albedo(p) / std::numbers::pi * weight, lit, studio.sky(d) * weight,
+    BackdropPatch patch{p, n, backdrop.albedo(p) / std::numbers::pi * weight, lit, studio.sky(d) * weight,
                         SkyIrradiance::basis(d)};
     for (int k = 0; k < 9; ++k) patch.y[size_t(k)] *= kCosineBand[size_t(k)];
     f(patch);
@@ -61,33 +61,24 @@ void for_each_backdrop_patch(const Studio& studio, const LightRig& rig, const Ba
 }  // namespace
 
 SkyIrradiance surround_irradiance(const Studio& studio, const SkyIrradiance& sky, const LightRig& rig,
-                                  const BackdropSurface& backdrop, const glm::dvec3& at) {
+                                  const BackdropSurface& backdrop, const PaperBounceMap& bounce, const glm::dvec3& at) {
   if (!backdrop.present) return sky;
-  // The backdrop's patches of a 32 x 64 grid, once.
-  std::vector<BackdropPatch> patches;
-  for_each_backdrop_patch(studio, rig, backdrop, at, 32, {}, [&](const BackdropPatch& p) { patches.push_back(p); });
-  // The paper is lit by the rig and by what is around it, the paper itself included: three
-  // rounds of its bounce (each about the paper's albedo times its share of the sphere, some
-  // 0.4, of the last for the default sweep: what is left after the third is a few per cent
-  // of the bounce, itself a few per cent of the paper's light).
-  SkyIrradiance s = sky;
-  for (int round = 0; round < 3; ++round) {
-    SkyIrradiance next = sky;
-    for (const BackdropPatch& patch : patches) {
-      const glm::dvec3 change = patch.albedo * (patch.rig + s.at(patch.n)) - patch.hidden;
-      for (int k = 0; k < 9; ++k) next.coef[size_t(k)] += change * patch.y[size_t(k)];
-    }
-    s = next;
-  }
-  return s;
+  // The backdrop's patches of a 32 x 64 grid, each lit by the rig and by the paper's own
+  // bounce where it is.
+  SkyIrradiance out = sky;
+  for_each_backdrop_patch(studio, rig, backdrop, at, 32, {}, [&](const BackdropPatch& patch) {
+    const glm::dvec3 change = patch.albedo * (patch.rig + bounce.at(backdrop, patch.p)) - patch.hidden;
+    for (int k = 0; k < 9; ++k) out.coef[size_t(k)] += change * patch.y[size_t(k)];
+  });
+  return out;
 }
 
 SkyIrradiance backdrop_share(const Studio& studio, const LightRig& rig, const BackdropSurface& backdrop,
-                             const SkyIrradiance& paper_lit_by, const glm::dvec3& at, int rows, const LightPasses& passes) {
+                             const PaperBounceMap& bounce, const glm::dvec3& at, int rows, const LightPasses& passes) {
   SkyIrradiance share;
   if (!backdrop.present) return share;
   for_each_backdrop_patch(studio, rig, backdrop, at, rows, passes, [&](const BackdropPatch& patch) {
-    const glm::dvec3 change = patch.albedo * (patch.rig + paper_lit_by.at(patch.n)) - patch.hidden;
+    const glm::dvec3 change = patch.albedo * (patch.rig + bounce.at(backdrop, patch.p)) - patch.hidden;
     for (int k = 0; k < 9; ++k) share.coef[size_t(k)] += change * patch.y[size_t(k)];
   });
   return share;
@@ -118,7 +109,7 @@ SkyIrradiance environment_seen_from(const EnvironmentFrame& f, const SceneParams
                                     const BackdropSurface& backdrop, const glm::dvec3& at, const LightPasses& passes) {
   SkyIrradiance there = f.media.surround;  // (without a backdrop both shares are zero)
   const SkyIrradiance moved =
-      backdrop_share(Studio(p), rig, drawn_backdrop(p, backdrop), f.surround, at, kSeenFromRows, passes);
+      backdrop_share(Studio(p), rig, drawn_backdrop(p, backdrop), *f.paper_bounce, at, kSeenFromRows, passes);
   for (size_t k = 0; k < there.coef.size(); ++k) there.coef[k] += moved.coef[k] - f.centre_share.coef[k];
   return there;
 }
@@ -130,9 +121,10 @@ EnvironmentFrame environment_frame(const SceneParams& p, const LightRig& rig, co
   const Studio studio(p);
   f.sky = sky_irradiance(studio);
   const BackdropSurface drawn = drawn_backdrop(p, backdrop);
-  f.surround = surround_irradiance(studio, f.sky, rig, drawn, rig.aim);
+  f.paper_bounce = std::make_shared<const PaperBounceMap>(paper_bounce_map(rig, drawn, f.sky, rig.aim));
+  f.surround = surround_irradiance(studio, f.sky, rig, drawn, *f.paper_bounce, rig.aim);
   f.media = media_light(studio, rig, f.surround);
-  if (drawn.present) f.centre_share = backdrop_share(studio, rig, drawn, f.surround, rig.aim, kSeenFromRows);
+  if (drawn.present) f.centre_share = backdrop_share(studio, rig, drawn, *f.paper_bounce, rig.aim, kSeenFromRows);
   for (const glm::dvec3& at : seen_from) f.media_seen_from.push_back(environment_seen_from(f, p, rig, backdrop, at, passes));
   f.image = studio.image;
   f.rotation_cos = float(studio.rotation_cos);

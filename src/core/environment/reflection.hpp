@@ -5,6 +5,7 @@
 #include "core/environment/backdrop.hpp"
 #include "core/environment/lights.hpp"
 #include "core/environment/media_light.hpp"
+#include "core/environment/paper_bounce.hpp"
 #include "core/environment/sky_irradiance.hpp"
 #include "core/params/params.hpp"
 
@@ -31,6 +32,10 @@ struct EnvironmentFrame {
   // What the heads and the haze are lit by besides the lights themselves: the sky, and the
   // lit backdrop where it hides the sky, seen from the scene's centre (surround_irradiance).
   SkyIrradiance surround;
+  // The paper's own bounce where each point of it is (core/environment/paper_bounce): what
+  // the backdrop is lit by besides the rig, as the picture draws it and as the heads and
+  // the haze see it. Made by environment_frame (environment_seen_from needs it).
+  std::shared_ptr<const PaperBounceMap> paper_bounce;
   // What the heads and the haze are lit by, split into lights and the rest: the rig and the
   // surround, or under an image its brightest patches and the surround less them.
   MediaLight media;
@@ -64,18 +69,19 @@ SkyIrradiance environment_seen_from(const EnvironmentFrame&, const SceneParams&,
 
 // The light around point `at` besides the rig's lights: the sky's harmonics `sky`, and
 // where a direction from `at` meets the backdrop, the backdrop's radiance instead of the
-// sky's (its albedo / pi times the rig's unoccluded irradiance and the surround's there:
-// the paper lights itself, in three rounds), so a head above a lit sweep, and the sweep
-// itself, get the light the paper throws back, as the reference's do. The correction is projected over a grid of directions (64 x 32): the backdrop's
-// light changes slowly, and irradiance keeps only its low frequencies.
+// sky's (its albedo / pi times the rig's unoccluded irradiance and the paper's own bounce
+// there, `bounce`), so a head above a lit sweep, and the sweep itself, get the light the
+// paper throws back, as the reference's do. The correction is projected over a grid of
+// directions (64 x 32): the backdrop's light changes slowly, and irradiance keeps only
+// its low frequencies.
 SkyIrradiance surround_irradiance(const Studio&, const SkyIrradiance& sky, const LightRig&, const BackdropSurface&,
-                                  const glm::dvec3& at);
+                                  const PaperBounceMap& bounce, const glm::dvec3& at);
 
 // The backdrop's share of surround_irradiance seen from `at`, in one pass: where a
 // direction of a rows x 2 rows grid meets the backdrop, its radiance (the rig's
-// unoccluded irradiance and `paper_lit_by`'s at its normal, times albedo / pi) less the
-// sky it hides. Zero without a backdrop.
-SkyIrradiance backdrop_share(const Studio&, const LightRig&, const BackdropSurface&, const SkyIrradiance& paper_lit_by,
+// unoccluded irradiance and the paper's own bounce there, `bounce`, times albedo / pi)
+// less the sky it hides. Zero without a backdrop.
+SkyIrradiance backdrop_share(const Studio&, const LightRig&, const BackdropSurface&, const PaperBounceMap& bounce,
                              const glm::dvec3& at, int rows, const LightPasses& passes = {});
 
 // The mean radiance over the whole sphere that harmonics of irradiance hold (their band-0

@@ -27,6 +27,13 @@ glm::dvec3 SkyIrradiance::at(const glm::dvec3& n) const {
   return glm::max(e, glm::dvec3(0.0));
 }
 
+glm::dvec3 SkyIrradiance::radiance(const glm::dvec3& d) const {
+  const std::array<double, 9> y = basis(d);
+  glm::dvec3 l(0.0);
+  for (int i = 0; i < 9; ++i) l += coef[size_t(i)] / kCosineBand[size_t(i)] * y[size_t(i)];
+  return glm::max(l, glm::dvec3(0.0));
+}
+
 namespace {
 
 // An environment image projected texel by texel (of the first level at most 256 wide: each

@@ -20,6 +20,10 @@ struct SkyIrradiance {
   // The irradiance a surface of unit normal n receives from the whole sky (W / m^2 per
   // unit of the sky's radiance units), nothing in between.
   glm::dvec3 at(const glm::dvec3& n) const;
+  // The radiance from direction d of the light these nine bands hold (each coefficient
+  // over its cosine factor), at least 0: the smooth part of the sky, for what a surface
+  // hides of it.
+  glm::dvec3 radiance(const glm::dvec3& d) const;
   // The nine basis functions at unit direction d: 1; y, z, x; xy, yz, 3z^2 - 1, xz, x^2 - y^2
   // with their normalisations.
   static std::array<double, 9> basis(const glm::dvec3& d);

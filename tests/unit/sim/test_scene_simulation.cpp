@@ -198,6 +198,8 @@ TEST(SceneSimulation, NewParametersKeepTheStateOfUnchangedGlasses) {
     return true;
   };
   if (!same(a.environment.sky, b.environment.sky) || !same(a.environment.surround, b.environment.surround) ||
+      !a.environment.paper_bounce || !b.environment.paper_bounce ||
+      a.environment.paper_bounce->bounce != b.environment.paper_bounce->bounce ||
       !same(a.environment.media.surround, b.environment.media.surround))
     return ::testing::AssertionFailure() << "the scene's surroundings differ";
   if (a.environment.media_seen_from.size() != b.environment.media_seen_from.size())
