@@ -279,8 +279,10 @@ void make_texture(unsigned& tex, int width, int rows) {
 }  // namespace
 
 std::vector<glm::vec4> pack_floor_light(const FloorLightMap& m) {
-  std::vector<glm::vec4> texels(m.factor.size());
-  for (size_t k = 0; k < texels.size(); ++k) texels[k] = glm::vec4(m.factor[k], 1.0f);
+  std::vector<glm::vec4> texels;
+  texels.reserve(m.factor.size() + m.surround_factor.size());
+  for (const glm::vec3& f : m.factor) texels.emplace_back(f, 1.0f);
+  for (const glm::vec3& f : m.surround_factor) texels.emplace_back(f, 1.0f);
   return texels;
 }
 
@@ -533,7 +535,7 @@ void SceneTextures::update_floor_light(const FrameState& f) {
   floor_computed_ = true;
   if (!e.map.empty() && !e.tex) {  // (a refined entry made its texture as it began)
     const std::vector<glm::vec4> texels = pack_floor_light(e.map);
-    e.tex = make_floor_texture(e.map.width, e.map.height, &texels[0].x);
+    e.tex = make_floor_texture(e.map.width, 2 * e.map.height, &texels[0].x);
     floor_uploaded_ = true;
   }
   if (floor_cache_.size() == kFloorCache) {
@@ -568,9 +570,9 @@ void SceneTextures::refine_floor_light(FloorEntry& e, int min_batches) {
     const std::vector<glm::vec4> texels = pack_floor_light(m);
     if (e.tex) {  // the same rect: the texels replaced
       glBindTexture(GL_TEXTURE_2D, e.tex);
-      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, m.width, m.height, GL_RGBA, GL_FLOAT, &texels[0].x);
+      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, m.width, 2 * m.height, GL_RGBA, GL_FLOAT, &texels[0].x);
     } else {
-      e.tex = make_floor_texture(m.width, m.height, &texels[0].x);
+      e.tex = make_floor_texture(m.width, 2 * m.height, &texels[0].x);
     }
   }
   if (e.batches_left == 0) e.settle();  // the full budget: done

@@ -35,9 +35,10 @@ void pack_clouds(const FrameState&, const CloudScene& clouds, contract::FrameBlo
 contract::ObjectRecord pack_object(const FrameState&, int row);
 // A vessel's knot row: texel k = (r_outer[k], r_inner[k], r_outer[k + 1], r_inner[k + 1]).
 std::vector<glm::vec4> pack_knots(const Vessel&);
-// The floor's light map as the texture holds it: its factor (FloorLightMap::factor: the
-// light over the unoccluded light per channel), a = 1; the shader multiplies the unoccluded
-// light it computes itself.
+// The floor's light map as the texture holds it, twice its height: its rig's factor
+// (FloorLightMap::factor: the light over the unoccluded light per channel) in the first
+// `height` rows, the surroundings' (surround_factor) in the rest, a = 1; the shader
+// multiplies the unoccluded light it computes itself.
 std::vector<glm::vec4> pack_floor_light(const FloorLightMap&);
 // The backdrop's light map as the texture holds it: rgb the irradiance, a whether the
 // filtering may be trusted (BackdropLightMap::trusted).

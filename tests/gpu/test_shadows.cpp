@@ -2,12 +2,14 @@
 // the floor as it is without the glass; a half-cut glass darkens it less than a whole one.
 // The floor under a glass shows core's traced light map.
 #include "gpu_fixture.hpp"
+#include "core/output/tonemap.hpp"
 #include "gpu/scene_data.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <cstdlib>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -74,7 +76,8 @@ TEST(Shadows, AGlassCutAwayEntirelyCastsNoShadow) {
 
 // The floor's direct light is the unoccluded light times the map's factor: from three
 // pictures (the map on, off, and the key off)
-// the factor at each floor pixel is (on - dark) / (off - dark); it must be core's.
+// the factor at each floor pixel is (on - dark) / (off - dark); it must be core's. (The
+// map's surroundings' shadow is left out here: gather_rays 0.)
 TEST(Shadows, TheFloorUnderTheGlassShowsTheMap) {
   Gpu& g = gpu_instance();
   const std::vector<std::string> sets{"render.tonemap=none", "render.exposure=0.7", "strips.power=0", "backlight.power=0"};
@@ -82,6 +85,9 @@ TEST(Shadows, TheFloorUnderTheGlassShowsTheMap) {
   std::vector<std::string> dark_sets = sets;
   dark_sets.push_back("light.power=0");
   const FrameState dark = glass_on_floor(dark_sets);
+  FloorLightSettings lights_only = test_floor_light();
+  lights_only.gather_rays = 0;
+  g.renderer->set_floor_light(lights_only);
   const Image on = g.renderer->render(f, kW, kH);
   const FloorLightMap map = g.renderer->scene_textures().floor_light();
   ASSERT_FALSE(map.empty());
@@ -122,6 +128,66 @@ TEST(Shadows, TheFloorUnderTheGlassShowsTheMap) {
   // 8-bit pictures (a step is about 1 % of the key's part here), the half-float texture,
   // and the texture filtering the factor where core interpolates the light.
   EXPECT_LT(worst, 0.04);
+}
+
+// The paper's own bounce is its unoccluded light times the map's surroundings' factor: on
+// the studio's paper (matte), the picture with the map less the picture without the
+// surroundings' shadow (gather_rays 0) is the bounce's part of the floor times that
+// factor less one, the bounce's part being core's (albedo / pi x the paper's bounce:
+// the sweep is within an 8-bit step of it, test_backdrop_light); the factor must be core's.
+TEST(Shadows, TheFloorRoundTheFootShowsTheSurroundingsShadow) {
+  Gpu& g = gpu_instance();
+  const double exposure = 2.0;
+  const Params p = resolve_scene({"lager", "pint", {"render.tonemap=none", "render.exposure=2", "bubbles.max_bubbles=0",
+                                  "render.supersample=1", "camera.auto_frame=false"},
+                                 {"eye=0,0.32,0.3", "target=0,0.03,0", "vfov=40"}});
+  const FrameState f = make_frame(p);
+  const Image on = g.renderer->render(f, kW, kH);
+  const FloorLightMap map = g.renderer->scene_textures().floor_light();
+  ASSERT_FALSE(map.empty());
+  FloorLightSettings lights_only = test_floor_light();
+  lights_only.gather_rays = 0;
+  g.renderer->set_floor_light(lights_only);
+  const Image without = g.renderer->render(f, kW, kH);
+  g.renderer->set_floor_light(test_floor_light());
+  const gpu::DebugImage first = g.renderer->render_debug(f, kW, kH, gpu::DebugView::Depth);
+  const CameraBasis cam = camera_basis(f, kW, kH);
+  double worst = 0, darkest = 1, bias = 0, spread = 0;
+  int probed = 0, shaded = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      if (int(first.px(x, y)[1]) != int(Material::Floor)) continue;
+      const glm::dvec3 q = camera_ray(cam, x + 0.5, y + 0.5, kW, kH).at(first.px(x, y)[0]);
+      const glm::dvec2 margin = 4.0 * map.size / glm::dvec2(map.width, map.height);
+      const glm::dvec2 uv(q.x, q.z);
+      if (glm::any(glm::lessThan(uv, map.origin + margin)) || glm::any(glm::greaterThan(uv, map.origin + map.size - margin)))
+        continue;
+      const glm::dvec3 expect = map.surround_sample(q.x, q.z);
+      const glm::dvec3 bounce =
+          exposure * f.backdrop.albedo(q) / std::numbers::pi * f.environment.paper_bounce->at(f.backdrop, q);
+      for (int c = 0; c < 3; ++c) {
+        const double open = srgb_to_linear(without.px(x, y)[c] / 255.0);
+        if (bounce[c] < 0.12 || open > 0.9) continue;  // too dark for 8 bits, or near clipping
+        const double got = 1 + (srgb_to_linear(on.px(x, y)[c] / 255.0) - open) / bounce[c];
+        worst = std::max(worst, std::fabs(got - expect[c]));
+        bias += got - expect[c];
+        spread += std::fabs(got - expect[c]);
+        darkest = std::min(darkest, expect[c]);
+        ++probed;
+        shaded += expect[c] < 0.9;
+      }
+    }
+  ASSERT_GT(shaded, 50) << "the view misses the contact round the foot";
+  bias /= probed;
+  spread /= probed;
+  std::printf("surroundings' shadow: %d probes (%d darker than 0.9, the darkest %.2f), GPU - core: mean %.4f, mean |.| %.4f, "
+              "largest %.3f\n", probed, shaded, darkest, bias, spread, worst);
+  // The bounce is a fifth of the floor's light: one 8-bit step of either picture is up to
+  // 6 % of it, so the largest difference is the pictures' rounding; on average it is
+  // none, and a factor off by 0.02 would show in the mean.
+  EXPECT_LT(std::fabs(bias), 0.005);
+  EXPECT_LT(spread, 0.02);
+  EXPECT_LT(worst, 0.15);
 }
 
 }  // namespace

@@ -103,11 +103,13 @@ vec3 clouds_glow_irradiance(vec3 p, vec3 n) {
 // clouds' glow.
 vec3 shade_backdrop(vec3 p, vec3 n, vec3 d, float dist) {
   BackdropSurface bd = backdrop_surface();
-  vec3 e = paper_bounce(p) * floor_contact(p) + floor_direct_light(p, n);
 #ifdef ENV_IMAGE
   // An image's light is all sky: the map's shadows and caustics (of its brightest patches,
-  // core floor_emitters) change it on the floor.
+  // core floor_emitters) change it on the floor, darkened round the feet.
+  vec3 e = paper_bounce(p) * floor_contact(p) + backdrop_light(p, n);
   if (n.y > 0.999) e *= floor_light_factor(p);
+#else
+  vec3 e = floor_light(p, n, backdrop_light(p, n), paper_bounce(p));
 #endif
   e += clouds_glow_irradiance(p, n);
   return backdrop_faded(bd, albedo(bd, p) / PI * e, d, dist);
@@ -122,11 +124,16 @@ vec3 shade_backdrop(vec3 p, vec3 n, vec3 d, float dist) {
 vec3 shade_backdrop_mirrored(vec3 p, vec3 n, vec3 d, float dist, bool shadows) {
   BackdropSurface bd = backdrop_surface();
   vec3 direct = rig_irradiance_far(p, n, g_light_count), around = paper_bounce(p);
+#ifdef ENV_IMAGE
   if (shadows) {
     if (n.y > 0.999) direct *= floor_light_factor(p);
     around *= floor_contact(p);
   }
-  vec3 c = albedo(bd, p) / PI * (around + direct + clouds_glow_irradiance(p, n));
+  vec3 e = direct + around;
+#else
+  vec3 e = shadows ? floor_light(p, n, direct, around) : direct + around;
+#endif
+  vec3 c = albedo(bd, p) / PI * (e + clouds_glow_irradiance(p, n));
   return backdrop_faded(bd, c, d, dist);
 }
 

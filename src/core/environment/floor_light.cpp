@@ -33,6 +33,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kEps = 1e-7;  // where a photon starts again past the surface it left
 constexpr int kLanes = 4;      // fixed accumulation buffers: the sum does not depend on the thread count
 constexpr int kMaxEvents = 64;
+constexpr int kGatherStep = 4;  // texels between the surroundings' gathered nodes (1 cm)
 constexpr double kKernelScale = 2.0;  // texels per unit of the cubic B-spline (radius 2 units: 4 texels, 1 cm)
 
 double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
@@ -105,6 +106,19 @@ class PhotonTracer {
 
   const MarchedBodies& bodies() const { return bodies_; }
 
+  // The surroundings' light (radiance `around`) arriving at a floor point along the ray
+  // back from it (ray.d up): what the objects in its way let through, from where the path
+  // through them leaves (the lit paper's as the harmonics hold it where it leaves
+  // downwards); nothing in its way, around's radiance along ray.d.
+  glm::dvec3 arriving(Ray ray, const SkyIrradiance& around, Rng& rng) const {
+    glm::dvec4 attrs(0.0);
+    const Hit h = bodies_.nearest(geo_, ray, kEps, MediumKind::Air, -1, attrs);
+    if (!h.valid() || h.m == Material::Floor) return around.radiance(ray.d);
+    glm::dvec3 power(1.0);
+    const Walk w = follow(ray, power, h, attrs, rng, nullptr);
+    return w.end == End::Lost ? glm::dvec3(0.0) : power * around.radiance(ray.d);
+  }
+
   // One photon of power `power` leaving x along d (unit).
   void trace(Ray ray, glm::dvec3 power, Rng& rng, Lane& lane) const {
     glm::dvec4 attrs(0.0);  // a cloud's surface: its temperature and colour there
@@ -121,6 +135,30 @@ class PhotonTracer {
     } else {
       lane.stats.escaped -= power;  // what the glass sends there instead is counted as escaped too
     }
+    const Walk w = follow(ray, power, h, attrs, rng, &lane.stats);
+    if (w.end == End::Landed) {
+      splat(w.p, power, lane);
+      lane.stats.landed += power;
+    } else if (w.end != End::Lost) {
+      lane.stats.escaped += power;  // out of the scene, or onto the sweep's curve or wall
+    }
+  }
+
+  // How a path through the objects ends: out of the scene (along ray.d), on the floor
+  // (at p), on the sweep's curve or wall, or lost (absorbed or trapped).
+  enum class End { Escaped, Landed, Wall, Lost };
+  struct Walk {
+    End end = End::Lost;
+    glm::dvec3 p{0.0};
+  };
+
+  // Follows a path from the air, its first hit h (an object's), with the path tracer's
+  // media rules, until it leaves the objects: `ray` is then its last straight line,
+  // `power` what is left of it; what the media take is added to stats->absorbed.
+  Walk follow(Ray& ray, glm::dvec3& power, Hit h, glm::dvec4& attrs, Rng& rng, FloorLightStats* stats) const {
+    const auto absorb = [stats](const glm::dvec3& x) {
+      if (stats) stats->absorbed += x;
+    };
     MediumKind medium = MediumKind::Air;
     int obj = -1, drink_obj = -1;
     glm::dvec3 drink_left(0.5);  // as the path tracer: the shares of the drink's colour bands
@@ -140,11 +178,11 @@ class PhotonTracer {
         }
         double t_scatter;
         const bool through = liquid_free_flight(media_[size_t(obj)].drink, drink_left, t_end, power, t_scatter, rng);
-        lane.stats.absorbed += before - power;  // in expectation (the free flight's weights are not per channel)
+        absorb(before - power);  // in expectation (the free flight's weights are not per channel)
         if (!through) {
           if (events >= kMaxEvents) {  // scattered too often: what is left is lost
-            lane.stats.absorbed += power;
-            return;
+            absorb(power);
+            return {End::Lost};
           }
           ray.o = ray.at(t_scatter);
           const double spin = rng.uniform(), cos_t = 1 - 2 * rng.uniform();  // (drawn in this order)
@@ -154,32 +192,22 @@ class PhotonTracer {
       } else {
         power *= head_transmittance(ray, t_end, rng);
       }
-      if (medium != MediumKind::Liquid) lane.stats.absorbed += before - power;
-      if (max3(power) <= 0) return;
-      if (!h.valid()) {
-        lane.stats.escaped += power;
-        return;
-      }
+      if (medium != MediumKind::Liquid) absorb(before - power);
+      if (max3(power) <= 0) return {End::Lost};
+      if (!h.valid()) return {End::Escaped};
       const glm::dvec3 p = ray.at(h.t);
       // The floor, or the floor under a foot the photon leaves through; the backdrop's
       // curve and wall are not the floor: what lands there has left it.
-      if (h.m == Material::Floor && h.n.y <= 0.999) {
-        lane.stats.escaped += power;
-        return;
-      }
-      if (h.m == Material::Floor || (p.y < 1e-6 && ray.d.y < 0)) {
-        splat(p, power, lane);
-        lane.stats.landed += power;
-        return;
-      }
+      if (h.m == Material::Floor && h.n.y <= 0.999) return {End::Wall};
+      if (h.m == Material::Floor || (p.y < 1e-6 && ray.d.y < 0)) return {End::Landed, p};
       if (events >= kMaxEvents) {  // trapped between surfaces: what is left is lost
-        lane.stats.absorbed += power;
-        return;
+        absorb(power);
+        return {End::Lost};
       }
       if (h.m == Material::Droplet || h.m == Material::Cloud) {  // water or a blob against the air
         const glm::dvec3 untinted = power;
         bodies_.cross(h, attrs, ray, medium, obj, power, rng);
-        lane.stats.absorbed += untinted - power;  // a cloud point's colour, where it crossed
+        absorb(untinted - power);  // a cloud point's colour, where it crossed
         continue;
       }
       const VesselOptics& m = media_[size_t(h.object)];
@@ -203,7 +231,7 @@ class PhotonTracer {
           double cos_t;
           ray.d = decal_diffuse_direction(*side, rng, cos_t);
         }
-        lane.stats.absorbed += untinted - power;
+        absorb(untinted - power);
         continue;
       }
       fresnel_turn(ray, n, n1, n2, F, u, next, h.object, medium, obj);
@@ -392,6 +420,41 @@ std::vector<int> photon_counts(const LightRig& emitters, const std::vector<Targe
   return n;
 }
 
+// Values over a map's texels known at every `step`-th texel (and the last of a row or
+// column), bilinear between.
+class TexelLattice {
+ public:
+  TexelLattice(const FloorLightMap& m, int step) : step_(step) {
+    for (int i = 0;; i = std::min(i + step, m.width - 1)) {
+      xs_.push_back(i);
+      if (i == m.width - 1) break;
+    }
+    for (int j = 0;; j = std::min(j + step, m.height - 1)) {
+      ys_.push_back(j);
+      if (j == m.height - 1) break;
+    }
+    values_.assign(xs_.size() * ys_.size(), glm::dvec3(1.0));
+  }
+  size_t columns() const { return xs_.size(); }
+  size_t rows() const { return ys_.size(); }
+  int texel_x(size_t a) const { return xs_[a]; }
+  int texel_y(size_t b) const { return ys_[b]; }
+  glm::dvec3& node(size_t a, size_t b) { return values_[b * xs_.size() + a]; }
+  glm::dvec3 at(int i, int j) const {
+    const size_t a = std::min(size_t(i / step_), xs_.size() - 1), b = std::min(size_t(j / step_), ys_.size() - 1);
+    const size_t a1 = std::min(a + 1, xs_.size() - 1), b1 = std::min(b + 1, ys_.size() - 1);
+    const double u = a1 > a ? double(i - xs_[a]) / (xs_[a1] - xs_[a]) : 0.0;
+    const double v = b1 > b ? double(j - ys_[b]) / (ys_[b1] - ys_[b]) : 0.0;
+    auto value = [&](size_t x, size_t y) { return values_[y * xs_.size() + x]; };
+    return glm::mix(glm::mix(value(a, b), value(a1, b), u), glm::mix(value(a, b1), value(a1, b1), u), v);
+  }
+
+ private:
+  int step_;
+  std::vector<int> xs_, ys_;  // the texels where the values are known
+  std::vector<glm::dvec3> values_;
+};
+
 // The unoccluded light over a map's texels for its factor: exact at every kStep-th texel
 // (and the last of a row or column), bilinear between. It is smooth at the texels' scale
 // (a softbox's light changes over tens of centimetres; bilinear over 1 cm is off by about
@@ -400,33 +463,15 @@ std::vector<int> photon_counts(const LightRig& emitters, const std::vector<Targe
 class OpenLightLattice {
  public:
   static constexpr int kStep = 4;
-  explicit OpenLightLattice(const FloorLightMap& m) : map_(m) {
-    for (int i = 0;; i = std::min(i + kStep, m.width - 1)) {
-      xs_.push_back(i);
-      if (i == m.width - 1) break;
-    }
-    for (int j = 0;; j = std::min(j + kStep, m.height - 1)) {
-      ys_.push_back(j);
-      if (j == m.height - 1) break;
-    }
-    open_.resize(xs_.size() * ys_.size());
-    for (size_t b = 0; b < ys_.size(); ++b)
-      for (size_t a = 0; a < xs_.size(); ++a) open_[b * xs_.size() + a] = m.unoccluded(xs_[a], ys_[b]);
+  explicit OpenLightLattice(const FloorLightMap& m) : map_(m), open_(m, kStep) {
+    for (size_t b = 0; b < open_.rows(); ++b)
+      for (size_t a = 0; a < open_.columns(); ++a) open_.node(a, b) = m.unoccluded(open_.texel_x(a), open_.texel_y(b));
   }
-  glm::dvec3 at(int i, int j) const {
-    if (map_.even) return map_.even_light;
-    const size_t a = std::min(size_t(i / kStep), xs_.size() - 1), b = std::min(size_t(j / kStep), ys_.size() - 1);
-    const size_t a1 = std::min(a + 1, xs_.size() - 1), b1 = std::min(b + 1, ys_.size() - 1);
-    const double u = a1 > a ? double(i - xs_[a]) / (xs_[a1] - xs_[a]) : 0.0;
-    const double v = b1 > b ? double(j - ys_[b]) / (ys_[b1] - ys_[b]) : 0.0;
-    auto node = [&](size_t x, size_t y) { return open_[y * xs_.size() + x]; };
-    return glm::mix(glm::mix(node(a, b), node(a1, b), u), glm::mix(node(a, b1), node(a1, b1), u), v);
-  }
+  glm::dvec3 at(int i, int j) const { return map_.even ? map_.even_light : open_.at(i, j); }
 
  private:
   const FloorLightMap& map_;
-  std::vector<int> xs_, ys_;  // the texels where it is exact
-  std::vector<glm::dvec3> open_;
+  TexelLattice open_;
 };
 
 }  // namespace
@@ -445,16 +490,29 @@ glm::dvec3 FloorLightMap::at(int i, int j) const {
   return glm::max(unoccluded(i, j) + glm::dvec3(change[size_t(j) * size_t(width) + size_t(i)]), glm::dvec3(0.0));
 }
 
-glm::dvec3 FloorLightMap::sample(double x, double z) const {
-  if (empty()) return glm::dvec3(0.0);
-  const double u = std::clamp((x - origin.x) / size.x * width - 0.5, 0.0, width - 1.0);
-  const double v = std::clamp((z - origin.y) / size.y * height - 0.5, 0.0, height - 1.0);
-  const int i = std::min(int(u), width - 2 < 0 ? 0 : width - 2), j = std::min(int(v), height - 2 < 0 ? 0 : height - 2);
-  const int i1 = std::min(i + 1, width - 1), j1 = std::min(j + 1, height - 1);
+namespace {
+// `at` at world (x, z) over map m's texels, bilinear between texel centres as GL's linear
+// filter, clamped to the edge.
+template <class At>
+glm::dvec3 bilinear(const FloorLightMap& m, double x, double z, const At& at) {
+  if (m.empty()) return glm::dvec3(0.0);
+  const double u = std::clamp((x - m.origin.x) / m.size.x * m.width - 0.5, 0.0, m.width - 1.0);
+  const double v = std::clamp((z - m.origin.y) / m.size.y * m.height - 0.5, 0.0, m.height - 1.0);
+  const int i = std::min(int(u), m.width - 2 < 0 ? 0 : m.width - 2), j = std::min(int(v), m.height - 2 < 0 ? 0 : m.height - 2);
+  const int i1 = std::min(i + 1, m.width - 1), j1 = std::min(j + 1, m.height - 1);
   const double fu = u - i, fv = v - j;
   const glm::dvec3 a = glm::mix(at(i, j), at(i1, j), fu);
   const glm::dvec3 b = glm::mix(at(i, j1), at(i1, j1), fu);
   return glm::mix(a, b, fv);
+}
+}  // namespace
+
+glm::dvec3 FloorLightMap::sample(double x, double z) const {
+  return bilinear(*this, x, z, [this](int i, int j) { return at(i, j); });
+}
+
+glm::dvec3 FloorLightMap::surround_sample(double x, double z) const {
+  return bilinear(*this, x, z, [this](int i, int j) { return glm::dvec3(surround_factor[size_t(j) * size_t(width) + size_t(i)]); });
 }
 
 LightRig floor_emitters(const FrameState& f) {
@@ -507,6 +565,7 @@ struct FloorLightTrace::State {
   }
 
   void merge();  // the lanes into the map, if batches came since the last merge
+  void gather_surround(const std::vector<Caster>&);  // the map's surround_factor
 
   // Photon i of pair (l, g) in batch b: a point on light l, a direction in g's cone. The
   // weight is the balance heuristic over every target's cone from that point, so directions
@@ -592,6 +651,54 @@ FloorLightTrace::FloorLightTrace(const FrameState& f, const FloorLightSettings& 
   st.lattice = std::make_unique<OpenLightLattice>(st.map);
   st.map.change.assign(texels, glm::vec3(0.0f));
   st.map.factor.assign(texels, glm::vec3(1.0f));
+  st.gather_surround(casters);
+}
+
+void FloorLightTrace::State::gather_surround(const std::vector<Caster>& casters) {
+  map.surround_factor.assign(map.factor.size(), glm::vec3(1.0f));
+  if (frame.environment.image || settings.gather_rays <= 0) return;  // (an image's light is all the photons')
+  const auto start = std::chrono::steady_clock::now();
+  const SkyIrradiance& around = frame.environment.surround;
+  // The nodes: every kGatherStep-th texel (and the last of a row or column), those within
+  // a caster's reach; the texels between bilinear.
+  TexelLattice lattice(map, kGatherStep);
+  const int rays = settings.gather_rays, n = threads();
+  in_parallel([&](int t) {
+    for (size_t b = size_t(t); b < lattice.rows(); b += size_t(n))
+      for (size_t a = 0; a < lattice.columns(); ++a) {
+        const glm::dvec2 c = map.texel_centre(lattice.texel_x(a), lattice.texel_y(b));
+        bool near = false;
+        for (const Caster& k : casters) near = near || glm::length(c - k.foot) < k.reach + k.spread;
+        if (!near) continue;
+        // Cosine-weighted directions from a Hammersley set, shifted at random per node
+        // (randomised quasi-Monte Carlo); the factor a ratio of sums over the same
+        // directions, so it is exactly 1 where nothing is in the way.
+        Rng rng(settings.seed, 0x9a7e, b * lattice.columns() + a);
+        const double s0 = rng.uniform(), s1 = rng.uniform();
+        glm::dvec3 got(0.0), open(0.0);
+        for (int r = 0; r < rays; ++r) {
+          const double u = std::fmod((r + 0.5) / rays + s0, 1.0), v = std::fmod(radical_inverse(2, std::uint64_t(r)) + s1, 1.0);
+          const double sin_t = std::sqrt(u), cos_t = std::sqrt(1 - u), phi = 2 * kPi * v;
+          const glm::dvec3 d(sin_t * std::cos(phi), cos_t, sin_t * std::sin(phi));
+          const glm::dvec3 o(c.x, 1e-6, c.y), l = around.radiance(d);
+          open += l;
+          // (most directions miss every object's bounding sphere: nothing to follow)
+          bool meets = false;
+          for (const Target& g : targets) {
+            const glm::dvec3 to = g.centre - o;
+            const double along = glm::dot(to, d);
+            meets = meets || (along > -g.radius && glm::dot(to, to) - along * along < g.radius * g.radius);
+          }
+          got += meets ? tracer->arriving({o, d}, around, rng) : l;
+        }
+        for (int ch = 0; ch < 3; ++ch) lattice.node(a, b)[ch] = open[ch] > 1e-12 ? got[ch] / open[ch] : 1.0;
+      }
+  });
+  for (int j = 0; j < map.height; ++j)
+    for (int i = 0; i < map.width; ++i)
+      map.surround_factor[size_t(j) * size_t(map.width) + size_t(i)] = glm::vec3(lattice.at(i, j));
+  seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  map.stats.seconds = seconds;
 }
 
 FloorLightTrace::~FloorLightTrace() = default;
@@ -613,6 +720,7 @@ FloorLightSettings floor_light_draft(FloorLightSettings s, int photons) {
   s.photons = std::min(s.photons, photons);
   s.texel *= 2;
   s.max_resolution = std::max(1, s.max_resolution / 2);
+  s.gather_rays = std::min(s.gather_rays, 8);
   return s;
 }
 
@@ -686,6 +794,8 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
   put(b.present ? 1 : 0, int(b.kind), b.plane ? 1 : 0, b.z_curve, b.radius, emitters.lights.size(), f.vessels.size());
   const glm::dvec3 sky = f.environment.image ? f.environment.sky.at({0, 1, 0}) : glm::dvec3(0.0);
   put3(sky);
+  if (!f.environment.image)  // the surroundings whose shadow it gathers
+    for (const glm::dvec3& c : f.environment.surround.coef) put3(c);
   for (const AreaLight& l : emitters.lights) {
     for (double x : l.numbers()) put(x);
   }

@@ -43,6 +43,7 @@ struct FloorLightSettings {
   int threads = 0;                   // 0: the hardware's, at most kFloorLightLanes
   double texel = 0.0025;             // m, the finest texel; coarser when the rect is big
   int max_resolution = 512;          // texels along either side
+  int gather_rays = 32;              // per node of the surroundings' shadow (0: none)
 };
 
 // Where the traced power went, summed over every photon that met a glass (W, per channel).
@@ -68,6 +69,18 @@ struct FloorLightMap {
   // draft's time otherwise).
   std::vector<glm::vec3> change;
   std::vector<glm::vec3> factor;
+  // The surroundings' shadow (in the studio; 1 under an image, whose light is all the
+  // photons'): per texel, the light the floor gathers from the surroundings
+  // (EnvironmentFrame::surround: the sky and the lit paper) through the glasses over what
+  // it gathers with nothing in between. Gathered, not traced from the light: at every
+  // kGatherStep-th texel near the glasses, gather_rays cosine-weighted directions (a
+  // shifted Hammersley set) followed through glass, drink, head, droplets and clouds with
+  // the photons' media rules, each bringing what is left of the surroundings' radiance
+  // where its path leaves them; bilinear between. So it is never below 0, exactly 1 where
+  // nothing is in the way, and its noise is a few per cent. The picture multiplies the
+  // paper's own bounce by it: the glasses' soft shadow round their feet, tinted by what
+  // the drink lets through.
+  std::vector<glm::vec3> surround_factor;
   FloorLightStats stats;
   LightRig lights;             // whose unoccluded light the texels change
   bool even = false;           // under an image: its light is the same everywhere,
@@ -83,6 +96,8 @@ struct FloorLightMap {
   // The map at world (x, z), bilinear between texel centres as GL's linear filter, clamped
   // to the edge.
   glm::dvec3 sample(double x, double z) const;
+  // The surroundings' factor there, the same way.
+  glm::dvec3 surround_sample(double x, double z) const;
 };
 
 // Under an environment image (env.mode image) the photons come from its brightest patches
