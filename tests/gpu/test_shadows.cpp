@@ -74,6 +74,24 @@ TEST(Shadows, AGlassCutAwayEntirelyCastsNoShadow) {
   EXPECT_GT(half.sum, 0.1 * whole.sum) << "half the glass casts (almost) no shadow";
 }
 
+// Calls visit(x, y, p) for each pixel of a kW x kH picture of f whose first surface is the
+// floor at p inside map's rect, short of the texels where it blends into the light outside.
+template <class Visit>
+void for_each_floor_pixel_in(Gpu& g, const FrameState& f, const FloorLightMap& map, const Visit& visit) {
+  const gpu::DebugImage first = g.renderer->render_debug(f, kW, kH, gpu::DebugView::Depth);
+  const CameraBasis cam = camera_basis(f, kW, kH);
+  const glm::dvec2 margin = 4.0 * map.size / glm::dvec2(map.width, map.height);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      if (int(first.px(x, y)[1]) != int(Material::Floor)) continue;
+      const glm::dvec3 p = camera_ray(cam, x + 0.5, y + 0.5, kW, kH).at(first.px(x, y)[0]);
+      const glm::dvec2 uv(p.x, p.z);
+      if (glm::any(glm::lessThan(uv, map.origin + margin)) || glm::any(glm::greaterThan(uv, map.origin + map.size - margin)))
+        continue;
+      visit(x, y, p);
+    }
+}
+
 // The floor's direct light is the unoccluded light times the map's factor: from three
 // pictures (the map on, off, and the key off)
 // the factor at each floor pixel is (on - dark) / (off - dark); it must be core's. (The
@@ -95,34 +113,24 @@ TEST(Shadows, TheFloorUnderTheGlassShowsTheMap) {
   g.renderer->set_floor_light(test_floor_light(), false);
   const Image off = g.renderer->render(f, kW, kH);
   g.renderer->set_floor_light(test_floor_light());
-  const gpu::DebugImage first = g.renderer->render_debug(f, kW, kH, gpu::DebugView::Depth);
-  const CameraBasis cam = camera_basis(f, kW, kH);
   auto linear = [](std::uint8_t v) {
     const double c = v / 255.0;
     return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
   };
   double worst = 0;
   int probed = 0, shaded = 0;
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) {
-      if (int(first.px(x, y)[1]) != int(Material::Floor)) continue;
-      const glm::dvec3 p = camera_ray(cam, x + 0.5, y + 0.5, kW, kH).at(first.px(x, y)[0]);
-      // Inside the map, short of the texels where it blends into the light outside.
-      const glm::dvec2 margin = 4.0 * map.size / glm::dvec2(map.width, map.height);
-      const glm::dvec2 uv(p.x, p.z);
-      if (glm::any(glm::lessThan(uv, map.origin + margin)) || glm::any(glm::greaterThan(uv, map.origin + map.size - margin)))
-        continue;
-      const glm::dvec3 open = unoccluded_floor_irradiance(f.lights, p);
-      const glm::dvec3 expect = map.sample(p.x, p.z) / open;
-      for (int c = 0; c < 3; ++c) {
-        const double key = linear(off.px(x, y)[c]) - linear(no_key.px(x, y)[c]);
-        if (key < 0.1 || linear(off.px(x, y)[c]) > 0.9) continue;  // too dark for 8 bits, or near clipping
-        const double got = (linear(on.px(x, y)[c]) - linear(no_key.px(x, y)[c])) / key;
-        worst = std::max(worst, std::fabs(got - expect[c]));
-        ++probed;
-        shaded += expect[c] < 0.8;
-      }
+  for_each_floor_pixel_in(g, f, map, [&](int x, int y, const glm::dvec3& p) {
+    const glm::dvec3 open = unoccluded_floor_irradiance(f.lights, p);
+    const glm::dvec3 expect = map.sample(p.x, p.z) / open;
+    for (int c = 0; c < 3; ++c) {
+      const double key = linear(off.px(x, y)[c]) - linear(no_key.px(x, y)[c]);
+      if (key < 0.1 || linear(off.px(x, y)[c]) > 0.9) continue;  // too dark for 8 bits, or near clipping
+      const double got = (linear(on.px(x, y)[c]) - linear(no_key.px(x, y)[c])) / key;
+      worst = std::max(worst, std::fabs(got - expect[c]));
+      ++probed;
+      shaded += expect[c] < 0.8;
     }
+  });
   std::printf("floor light factor: %d probes (%d in shadow), largest |GPU - core| %.3f\n", probed, shaded, worst);
   ASSERT_GT(shaded, 50) << "the view misses the shadow";
   // 8-bit pictures (a step is about 1 % of the key's part here), the half-float texture,
@@ -150,33 +158,24 @@ TEST(Shadows, TheFloorRoundTheFootShowsTheSurroundingsShadow) {
   g.renderer->set_floor_light(lights_only);
   const Image without = g.renderer->render(f, kW, kH);
   g.renderer->set_floor_light(test_floor_light());
-  const gpu::DebugImage first = g.renderer->render_debug(f, kW, kH, gpu::DebugView::Depth);
-  const CameraBasis cam = camera_basis(f, kW, kH);
   double worst = 0, darkest = 1, bias = 0, spread = 0;
   int probed = 0, shaded = 0;
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) {
-      if (int(first.px(x, y)[1]) != int(Material::Floor)) continue;
-      const glm::dvec3 q = camera_ray(cam, x + 0.5, y + 0.5, kW, kH).at(first.px(x, y)[0]);
-      const glm::dvec2 margin = 4.0 * map.size / glm::dvec2(map.width, map.height);
-      const glm::dvec2 uv(q.x, q.z);
-      if (glm::any(glm::lessThan(uv, map.origin + margin)) || glm::any(glm::greaterThan(uv, map.origin + map.size - margin)))
-        continue;
-      const glm::dvec3 expect = map.surround_sample(q.x, q.z);
-      const glm::dvec3 bounce =
-          exposure * f.backdrop.albedo(q) / std::numbers::pi * f.environment.paper_bounce->at(f.backdrop, q);
-      for (int c = 0; c < 3; ++c) {
-        const double open = srgb_to_linear(without.px(x, y)[c] / 255.0);
-        if (bounce[c] < 0.12 || open > 0.9) continue;  // too dark for 8 bits, or near clipping
-        const double got = 1 + (srgb_to_linear(on.px(x, y)[c] / 255.0) - open) / bounce[c];
-        worst = std::max(worst, std::fabs(got - expect[c]));
-        bias += got - expect[c];
-        spread += std::fabs(got - expect[c]);
-        darkest = std::min(darkest, expect[c]);
-        ++probed;
-        shaded += expect[c] < 0.9;
-      }
+  for_each_floor_pixel_in(g, f, map, [&](int x, int y, const glm::dvec3& q) {
+    const glm::dvec3 expect = map.surround_sample(q.x, q.z);
+    const glm::dvec3 bounce =
+        exposure * f.backdrop.albedo(q) / std::numbers::pi * f.environment.paper_bounce->at(f.backdrop, q);
+    for (int c = 0; c < 3; ++c) {
+      const double open = srgb_to_linear(without.px(x, y)[c] / 255.0);
+      if (bounce[c] < 0.12 || open > 0.9) continue;  // too dark for 8 bits, or near clipping
+      const double got = 1 + (srgb_to_linear(on.px(x, y)[c] / 255.0) - open) / bounce[c];
+      worst = std::max(worst, std::fabs(got - expect[c]));
+      bias += got - expect[c];
+      spread += std::fabs(got - expect[c]);
+      darkest = std::min(darkest, expect[c]);
+      ++probed;
+      shaded += expect[c] < 0.9;
     }
+  });
   ASSERT_GT(shaded, 50) << "the view misses the contact round the foot";
   bias /= probed;
   spread /= probed;
