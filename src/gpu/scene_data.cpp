@@ -522,8 +522,11 @@ void SceneTextures::update_floor_light(const FrameState& f) {
     // texels are four times the area).
     const int batch = refine_batch_photons_ > 0 ? std::min(refine_batch_photons_, draft_photons_) : draft_photons_;
     s.photons = std::max(1, std::min(s.photons, batch));
-    e.refining = std::make_unique<FloorLightTrace>(f, s);
     e.batches_left = std::max(1, (full.photons + s.photons - 1) / s.photons);
+    // The surroundings' shadow gathered a share with every batch too (all at once it was
+    // most of the first frame's cost).
+    s.gather_rays_per_batch = (s.gather_rays + e.batches_left - 1) / e.batches_left;
+    e.refining = std::make_unique<FloorLightTrace>(f, s);
     refine_floor_light(e, std::max(1, (2 * draft_photons_ + s.photons - 1) / s.photons));
   } else if (draft_photons_ > 0) {
     e.draft = true;

@@ -238,6 +238,7 @@ TEST(SceneData, TheFloorLightIsRefinedInBatchesOnceStill) {
   for (int b = 0; b < 4; ++b) trace.add_batch();
   EXPECT_EQ(widths[5], trace.map().width);
   EXPECT_EQ(t.floor_light().change, trace.map().change);
+  EXPECT_EQ(t.floor_light().surround_factor, trace.map().surround_factor);  // (its rays spread over the batches)
 }
 
 // Batches smaller than the draft's (the web page's): two drafts' worth the first frame it
@@ -268,6 +269,7 @@ TEST(SceneData, TheFloorLightRefinesInSmallerBatchesWithinATimeBudget) {
   FloorLightTrace trace(f, batch);
   for (int b = 0; b < 8; ++b) trace.add_batch();
   EXPECT_EQ(t.floor_light().change, trace.map().change);
+  EXPECT_EQ(t.floor_light().surround_factor, trace.map().surround_factor);
   EXPECT_EQ(still_frames(1e9), (std::vector<int>{20000, 0, 0, 0, 0, 0}));
   EXPECT_EQ(t.floor_light().change, trace.map().change);
 }

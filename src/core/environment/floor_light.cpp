@@ -54,6 +54,16 @@ double radical_inverse(int base, std::uint64_t k) {
   return r;
 }
 
+// The second coordinate of the Sobol' sequence (its first is radical_inverse(2, k)): with
+// it every power-of-two prefix of the points is a (0, m, 2)-net, as even as a Hammersley
+// set of that many, so a gather spread over batches is even after each of them.
+double sobol_second(std::uint32_t k) {
+  std::uint32_t r = 0;
+  for (std::uint32_t v = 1u << 31; k != 0; k >>= 1, v ^= v >> 1)
+    if (k & 1u) r ^= v;
+  return double(r) * 0x1.0p-32;
+}
+
 // What the photons aim at: the sphere around a glass's bounding cylinder, or around a
 // droplet trail's or a cloud's box.
 struct Target {
@@ -551,6 +561,21 @@ struct FloorLightTrace::State {
   int merged = 0;  // the batches the map holds
   double seconds = 0;
 
+  // The surroundings' shadow, gathered a share of the rays with each batch: per node, the
+  // radiance that got through and what would have with nothing in the way, summed over the
+  // rays so far in the rays' order (so the sums do not depend on how the rays were split).
+  struct GatherNode {
+    size_t a = 0, b = 0;      // in gather_lattice
+    glm::dvec3 o{0.0};        // on the floor
+    glm::dvec2 shift{0.0};    // the node's random shift of the directions
+    std::uint64_t index = 0;  // the node's random streams
+    glm::dvec3 got{0.0}, open{0.0};
+  };
+  std::vector<GatherNode> gather_nodes;
+  std::unique_ptr<TexelLattice> gather_lattice;
+  int gathered = 0;         // rays gathered at every node so far
+  int gather_merged = 0;    // those the map's surround_factor holds
+
   int threads() const {
     const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
     return std::clamp(settings.threads > 0 ? settings.threads : int(hw), 1, kLanes);
@@ -565,7 +590,8 @@ struct FloorLightTrace::State {
   }
 
   void merge();  // the lanes into the map, if batches came since the last merge
-  void gather_surround(const std::vector<Caster>&);  // the map's surround_factor
+  void plan_gather(const std::vector<Caster>&);  // the nodes near the casters
+  void gather(int rays);                          // that many more rays at every node
 
   // Photon i of pair (l, g) in batch b: a point on light l, a direction in g's cone. The
   // weight is the balance heuristic over every target's cone from that point, so directions
@@ -651,54 +677,64 @@ FloorLightTrace::FloorLightTrace(const FrameState& f, const FloorLightSettings& 
   st.lattice = std::make_unique<OpenLightLattice>(st.map);
   st.map.change.assign(texels, glm::vec3(0.0f));
   st.map.factor.assign(texels, glm::vec3(1.0f));
-  st.gather_surround(casters);
+  st.map.surround_factor.assign(texels, glm::vec3(1.0f));
+  st.plan_gather(casters);
 }
 
-void FloorLightTrace::State::gather_surround(const std::vector<Caster>& casters) {
-  map.surround_factor.assign(map.factor.size(), glm::vec3(1.0f));
+void FloorLightTrace::State::plan_gather(const std::vector<Caster>& casters) {
   if (frame.environment.image || settings.gather_rays <= 0) return;  // (an image's light is all the photons')
-  const auto start = std::chrono::steady_clock::now();
-  const SkyIrradiance& around = frame.environment.surround;
   // The nodes: every kGatherStep-th texel (and the last of a row or column), those within
   // a caster's reach; the texels between bilinear.
-  TexelLattice lattice(map, kGatherStep);
-  const int rays = settings.gather_rays, n = threads();
+  gather_lattice = std::make_unique<TexelLattice>(map, kGatherStep);
+  const TexelLattice& lattice = *gather_lattice;
+  for (size_t b = 0; b < lattice.rows(); ++b)
+    for (size_t a = 0; a < lattice.columns(); ++a) {
+      const glm::dvec2 c = map.texel_centre(lattice.texel_x(a), lattice.texel_y(b));
+      bool near = false;
+      for (const Caster& k : casters) near = near || glm::length(c - k.foot) < k.reach + k.spread;
+      if (!near) continue;
+      GatherNode node;
+      node.a = a;
+      node.b = b;
+      node.o = {c.x, 1e-6, c.y};
+      node.index = b * lattice.columns() + a;
+      Rng rng(settings.seed, 0x9a7e, node.index);
+      node.shift.x = rng.uniform();
+      node.shift.y = rng.uniform();
+      gather_nodes.push_back(node);
+    }
+}
+
+void FloorLightTrace::State::gather(int rays) {
+  rays = std::min(rays, settings.gather_rays - gathered);
+  if (gather_nodes.empty() || rays <= 0) return;
+  const SkyIrradiance& around = frame.environment.surround;
+  const int from = gathered, n = threads();
+  gathered += rays;
   in_parallel([&](int t) {
-    for (size_t b = size_t(t); b < lattice.rows(); b += size_t(n))
-      for (size_t a = 0; a < lattice.columns(); ++a) {
-        const glm::dvec2 c = map.texel_centre(lattice.texel_x(a), lattice.texel_y(b));
-        bool near = false;
-        for (const Caster& k : casters) near = near || glm::length(c - k.foot) < k.reach + k.spread;
-        if (!near) continue;
-        // Cosine-weighted directions from a Hammersley set, shifted at random per node
-        // (randomised quasi-Monte Carlo); the factor a ratio of sums over the same
-        // directions, so it is exactly 1 where nothing is in the way.
-        Rng rng(settings.seed, 0x9a7e, b * lattice.columns() + a);
-        const double s0 = rng.uniform(), s1 = rng.uniform();
-        glm::dvec3 got(0.0), open(0.0);
-        for (int r = 0; r < rays; ++r) {
-          const double u = std::fmod((r + 0.5) / rays + s0, 1.0), v = std::fmod(radical_inverse(2, std::uint64_t(r)) + s1, 1.0);
-          const double sin_t = std::sqrt(u), cos_t = std::sqrt(1 - u), phi = 2 * kPi * v;
-          const glm::dvec3 d(sin_t * std::cos(phi), cos_t, sin_t * std::sin(phi));
-          const glm::dvec3 o(c.x, 1e-6, c.y), l = around.radiance(d);
-          open += l;
-          // (most directions miss every object's bounding sphere: nothing to follow)
-          bool meets = false;
-          for (const Target& g : targets) {
-            const glm::dvec3 to = g.centre - o;
-            const double along = glm::dot(to, d);
-            meets = meets || (along > -g.radius && glm::dot(to, to) - along * along < g.radius * g.radius);
-          }
-          got += meets ? tracer->arriving({o, d}, around, rng) : l;
+    for (size_t k = size_t(t); k < gather_nodes.size(); k += size_t(n)) {
+      GatherNode& node = gather_nodes[k];
+      // Cosine-weighted directions from the Sobol' sequence's first two coordinates,
+      // shifted at random per node (randomised quasi-Monte Carlo); the factor a ratio of
+      // sums over the same directions, so it is exactly 1 where nothing is in the way.
+      for (int r = from; r < from + rays; ++r) {
+        const double u = std::fmod(radical_inverse(2, std::uint64_t(r)) + node.shift.x, 1.0);
+        const double v = std::fmod(sobol_second(std::uint32_t(r)) + node.shift.y, 1.0);
+        const double sin_t = std::sqrt(u), cos_t = std::sqrt(1 - u), phi = 2 * kPi * v;
+        const glm::dvec3 d(sin_t * std::cos(phi), cos_t, sin_t * std::sin(phi)), l = around.radiance(d);
+        node.open += l;
+        // (most directions miss every object's bounding sphere: nothing to follow)
+        bool meets = false;
+        for (const Target& g : targets) {
+          const glm::dvec3 to = g.centre - node.o;
+          const double along = glm::dot(to, d);
+          meets = meets || (along > -g.radius && glm::dot(to, to) - along * along < g.radius * g.radius);
         }
-        for (int ch = 0; ch < 3; ++ch) lattice.node(a, b)[ch] = open[ch] > 1e-12 ? got[ch] / open[ch] : 1.0;
+        Rng rng(settings.seed, (std::uint64_t(0x9a7e) << 32) | std::uint64_t(r), node.index);  // the ray's own
+        node.got += meets ? tracer->arriving({node.o, d}, around, rng) : l;
       }
+    }
   });
-  for (int j = 0; j < map.height; ++j)
-    for (int i = 0; i < map.width; ++i)
-      map.surround_factor[size_t(j) * size_t(map.width) + size_t(i)] = glm::vec3(lattice.at(i, j));
-  seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  map.stats.seconds = seconds;
 }
 
 FloorLightTrace::~FloorLightTrace() = default;
@@ -735,12 +771,22 @@ void FloorLightTrace::add_batch() {
     for (int l = t; l < kLanes; l += threads)
       for (long long k = l; k < total; k += kLanes) st.photon(b, k, st.lanes[size_t(l)]);
   });
+  st.gather(st.settings.gather_rays_per_batch > 0 ? st.settings.gather_rays_per_batch : st.settings.gather_rays);
   st.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void FloorLightTrace::State::merge() {
   if (map.empty() || merged == batches) return;
   const auto start = std::chrono::steady_clock::now();
+  if (gather_merged != gathered) {  // the surroundings' factor: the nodes' ratios, bilinear between
+    gather_merged = gathered;
+    for (const GatherNode& node : gather_nodes)
+      for (int c = 0; c < 3; ++c)
+        gather_lattice->node(node.a, node.b)[c] = node.open[c] > 1e-12 ? node.got[c] / node.open[c] : 1.0;
+    for (int j = 0; j < map.height; ++j)
+      for (int i = 0; i < map.width; ++i)
+        map.surround_factor[size_t(j) * size_t(map.width) + size_t(i)] = glm::vec3(gather_lattice->at(i, j));
+  }
   merged = batches;
   const long long total = first.back();
   // The mean change over the batches, the lanes summed in a fixed order, and the factor the

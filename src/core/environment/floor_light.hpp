@@ -44,6 +44,9 @@ struct FloorLightSettings {
   double texel = 0.0025;             // m, the finest texel; coarser when the rect is big
   int max_resolution = 512;          // texels along either side
   int gather_rays = 32;              // per node of the surroundings' shadow (0: none)
+  // In batches (FloorLightTrace): the rays each batch adds to every node until all are in
+  // (0: all in the first). The same factor however they are split.
+  int gather_rays_per_batch = 0;
 };
 
 // Where the traced power went, summed over every photon that met a glass (W, per channel).
@@ -74,7 +77,7 @@ struct FloorLightMap {
   // (EnvironmentFrame::surround: the sky and the lit paper) through the glasses over what
   // it gathers with nothing in between. Gathered, not traced from the light: at every
   // kGatherStep-th texel near the glasses, gather_rays cosine-weighted directions (a
-  // shifted Hammersley set) followed through glass, drink, head, droplets and clouds with
+  // shifted Sobol' set) followed through glass, drink, head, droplets and clouds with
   // the photons' media rules, each bringing what is left of the surroundings' radiance
   // where its path leaves them; bilinear between. So it is never below 0, exactly 1 where
   // nothing is in the way, and its noise is a few per cent. The picture multiplies the
