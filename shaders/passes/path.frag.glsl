@@ -71,8 +71,8 @@ struct Look {
   vec3 o, d;       // from where, which way (world)
   vec3 w;          // what reaches the eye of what it sees
   float rough;     // the GGX roughness of the surface that sent it (0: none)
-  bool backdrop;   // from the air: the backdrop can be seen (inside a glass or drink, where
-                   // the way out is not traced, the lights and the sky only)
+  bool backdrop;   // the backdrop can be seen (not by a path that finds no way out of a
+                   // glass or drink while it still has events: the lights and the sky)
   bool mirrored;   // a reflection off a glass: its backdrop as a glass mirrors it
   int obj;         // the glass it reflects off, for its panorama (env.reflections); -1: none
 };
@@ -240,9 +240,11 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
   // through the refraction, along the ray from its point: no highlight on top.
   float rough = h.m == M_LIQUID_SURFACE || h.m == M_CLIP_LIQUID ? v.liquid.roughness : g.glass_roughness;
   if (c.F < 1.0) {
-    // The reflection sees the surroundings: a light, the backdrop or the sky from the
-    // air; the lights and the sky from inside a glass, where it is absorbed on its way
-    // out and leaves bent.
+    // The reflection sees the surroundings: a light, the backdrop or the sky, from the
+    // air or from inside a glass, where it is absorbed on its way out and leaves bent
+    // (looked up from where it reflects: the backdrop is far beside the way out's few
+    // centimetres; with the sky alone a thick base's inner reflections, which lead down
+    // to the floor, came out dark: docs/REFERENCE.md).
     vec3 r = reflect(path.d, c.n);
     // Towards a bead's rim its cap is steep, and what it reflects goes down into the wall
     // beside it, into the glass and the drink the path itself goes on to see: that share
@@ -260,7 +262,7 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
       float turned;  // what the way out turns back in sees the sky's mean
       vec3 tr = reflected_light(v, g, h.m, path.medium, below, path.drink == h.obj ? path.left : v.body.absorption_share, pl,
                                 to_local_dir(v, r), to_local_dir(v, c.n), out_dir, turned);
-      look = Look(p, to_world_dir(v, out_dir), path.thr * c.F * tr * (1.0 - turned), rough, false, false, -1);
+      look = Look(p, to_world_dir(v, out_dir), path.thr * c.F * tr * (1.0 - turned), rough, true, true, -1);
       path.radiance += path.thr * c.F * tr * turned * sky_mean();
 #if DECALS
       if (decal.metal) {  // the metal's reflection takes the same way out
@@ -326,9 +328,8 @@ Crossing droplet_crossing(Path path, Hit h) {
 }
 
 // As shade_interface for a droplet: the water inside absorbs (Beer-Lambert); the reflected
-// part's look at the surroundings goes to `look` (from inside: the lights and the sky,
-// absorbed along one more chord of the same length: the internal reflection is not
-// followed); the refracted part goes on, into the next object or the air.
+// part's look at the surroundings goes to `look` (from inside absorbed along one more
+// chord of the same length: the internal reflection is not followed); the refracted part goes on, into the next object or the air.
 void shade_droplet(inout Path path, Hit h, bool transparent, out Look look) {
   look = no_look();
   vec3 p = path.o + h.t * path.d;
@@ -339,7 +340,7 @@ void shade_droplet(inout Path path, Hit h, bool transparent, out Look look) {
   float rough = frame.droplet_roughness;
   if (c.F < 1.0) {
     vec3 r = reflect(path.d, c.n);
-    if (inside) look = Look(p, r, path.thr * c.F * chord, rough, false, false, -1);
+    if (inside) look = Look(p, r, path.thr * c.F * chord, rough, true, true, -1);
     else if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true, -1);
     path.thr *= 1.0 - c.F;
   }
@@ -389,7 +390,7 @@ void shade_cloud(inout Path path, Hit h, bool transparent, out Look look) {
   float rough = frame.cloud_hi[k].w;
   if (c.F < 1.0) {
     vec3 r = reflect(path.d, c.n);
-    if (inside) look = Look(p, r, path.thr * c.F * chord, rough, false, false, -1);
+    if (inside) look = Look(p, r, path.thr * c.F * chord, rough, true, true, -1);
     else if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true, -1);
     path.thr *= 1.0 - c.F;
     if (max3(g_cloud_attrs.yzw) > 0.0) path.thr *= g_cloud_attrs.yzw;

@@ -297,6 +297,16 @@ INSTANTIATE_TEST_SUITE_P(
     // -> 1.40 / 2.54; the droplets 1.00 / 1.81 -> 0.55 / 0.95; the hefeweizen's haze 1.33 /
     // 2.46 -> 1.56 / 3.56 and the pour's base band 2.37 / 6.46 -> 2.66 / 8.01 the other way
     // (docs/REFERENCE.md, "The paper's own light").
+    // Stop 50: what an internal reflection in a glass, a drink, a droplet or a cloud sees
+    // on its way out includes the backdrop (the floor and the paper), not the sky alone,
+    // whose lower half is the studio's dark: the pour's base band, which leads through the
+    // thick base down to the floor, liquid 2.10 / 5.02 -> 1.47 / 3.05, its glass 0.69 /
+    // 1.06 -> 0.57 / 0.91; the bar's glass 2.15 / 4.57 -> 1.98 / 4.43; the tulip's glass
+    // 0.97 / 2.79 -> 0.85 / 2.20; the lager's head close up 1.49 / 2.31 -> 1.13 / 1.78;
+    // the default pint's liquid 0.60 / 0.62 -> 0.46 / 0.69; the stouts' liquids the other
+    // way (1.21 / 2.30 -> 1.52 / 3.14 close up, 0.77 / 1.42 -> 1.07 / 1.89 by the key
+    // alone: the picture's stout a level or two brighter than the reference's already,
+    // now two more).
     ::testing::Values(
         ComparisonCase{"lager-pint", SceneRequest{"lager", "pint"}, 64, 8192, {1.0, 2.3}, {0.8, 0.7}, {1.6, 2.3}},
         ComparisonCase{"lager-pint-optics",
@@ -317,7 +327,7 @@ INSTANTIATE_TEST_SUITE_P(
         // 0.97 / 2.13 (4.15 / 6.97 and 1.18 / 2.32 without the neighbours). With the way out
         // of an internal reflection taking its Fresnel: 2.16 / 4.57 and 0.93 / 2.12.
         ComparisonCase{"lager-pint-bar", SceneRequest{"lager", "pint", {"env.mode=image", "env.image=bar"}},
-                       64, 16384, {2.6, 5.5}, {1.1, 2.4}, {2.0, 4.0}},
+                       64, 16384, {2.2, 4.9}, {1.0, 2.2}, {2.0, 4.0}},
         // A hazy drink (a nearly white haze, 30 /m): its liquid 4.03 / 7.46 (4.6 / 8.6 while
         // the drink's colour was one coefficient per channel, fitted at 4 cm). With the
         // preset's old haze (45 /m, albedo [0.95, 0.72, 0.38]) 5.9 / 11.1 since the lights
@@ -355,7 +365,7 @@ INSTANTIATE_TEST_SUITE_P(
         // 1.82 / 2.87 since the haze's light falls off from the wall (a thin haze in a deep
         // colour: a little less red scattered than the reference's).
         ComparisonCase{"amber-tulip", SceneRequest{"amber-ale", "tulip", {"bubbles.carbonation=0"}}, 64, 4096,
-                       {1.3, 2.9}, {1.4, 2.3}, {1.8, 2.5}},
+                       {1.0, 2.5}, {1.4, 2.3}, {1.8, 2.5}},
         // The heads close up against a reference of 1024 paths (at 256 its own noise was
         // half the figure: lager 2.86 / 5.91, stout 4.97 / 11.84): lager 1.84 / 4.31, within
         // the target; stout 3.74 / 9.34, its mean within it, its head's lower side
@@ -424,7 +434,7 @@ INSTANTIATE_TEST_SUITE_P(
         // Bounds: the worst seed and about 10 %. Against 1536 paths (192 before, stop 43,
         // after the head's wall boundary): glass 0.84 / 1.22, liquid 2.59 / 7.70, head 2.05
         // / 4.43, the stream 0.85 / 1.23; bounds about 10 % over.
-        ComparisonCase{"fresh-pour", SceneRequest{}, 80, 1536, {1.0, 1.4}, {2.9, 8.8}, {2.0, 3.8}, {0, 0}, {0.5, 0.9}, 0,
+        ComparisonCase{"fresh-pour", SceneRequest{}, 80, 1536, {0.7, 1.1}, {1.7, 3.4}, {2.0, 4.0}, {0, 0}, {0.5, 0.9}, 0,
                        "fresh-pour", 1.5}),
     [](const ::testing::TestParamInfo<ComparisonCase>& i) { return case_file_name(i.param.name); });
 
