@@ -458,15 +458,19 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
       Look look;
       bool leaves = h.m == M_NONE;
       if (leaves) {
-        // Out of events, a path in glass or a drink (held in a rim or a wall by total
-        // internal reflection) looks on along its ray at the backdrop too, not only at the
-        // sky: the studio's sky behind the sweep is dark, and rims came out as black rings
-        // where the reference shows a light one with the drink's colour in it.
-        look = Look(path.o, path.d, path.thr, 0.0, path.medium == MEDIUM_AIR || !in_events, false, -1);
+        look = Look(path.o, path.d, path.thr, 0.0, path.medium == MEDIUM_AIR, false, -1);
         if (transparent) {
           float m = min(path.thr.r, min(path.thr.g, path.thr.b));
           see_through = m;
           path.radiance += (path.thr - vec3(m)) * sky_light();
+          look.w = vec3(0.0);
+        } else if (!in_events && path.medium != MEDIUM_AIR) {
+          // Out of events, a path in glass or a drink (held in a rim or a wall by total
+          // internal reflection, a light guide that leaves it far from here) takes the
+          // mean radiance of the surroundings (the sky and the lit backdrop). Along its
+          // ray the sky alone gave black rims (the studio's sky behind the sweep is dark),
+          // the backdrop there rims brighter than the reference's (docs/REFERENCE.md).
+          path.radiance += path.thr * surround_mean();
           look.w = vec3(0.0);
         }
       } else {

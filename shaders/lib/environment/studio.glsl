@@ -102,6 +102,8 @@ vec3 sky_irradiance(vec3 n) { return sh_irradiance(g_sky_sh, n); }
 // of the heads, the haze, condensation's mist and the backdrop itself (its bounce off
 // its own paper).
 vec3 surround_irradiance(vec3 n) { return sh_irradiance(g_surround_sh, n); }
+// Its mean radiance over the sphere (as sky_mean).
+vec3 surround_mean() { return g_surround_sh[0] * (0.282095 / PI); }
 
 // The diffuse radiance that gives a surface facing up the sky's irradiance (the heads'
 // and the haze's even light).
