@@ -1,9 +1,10 @@
 // The backdrop in the picture (the sweep or the checker floor, lib/environment/backdrop.glsl):
 // where a path meets it, and the light it receives: the rig's direct light from the
 // backdrop's light map (backdrop_light.glsl), with every glass's shadow and caustics from
-// the traced map near the glasses (floor_light.glsl), and
-// the sky's irradiance darkened around each foot (contact). A cross-section (clip.*) takes
-// away the contact of what it cuts away (the map honours it).
+// the traced map near the glasses (floor_light.glsl), and the paper's own bounce with
+// the glasses' gathered soft shadow round the feet (the map's second half); the MatCap
+// tier, which traces no map, darkens round each foot with an estimate (floor_contact).
+// A cross-section (clip.*) takes away the shadows of what it cuts away.
 #ifndef LIB_ENVIRONMENT_FLOOR_GLSL
 #define LIB_ENVIRONMENT_FLOOR_GLSL
 #include "generated/frame.glsl"
@@ -48,7 +49,9 @@ Hit hit_floor(vec3 o, vec3 d, float tmin) {
   return Hit(t, n, M_FLOOR, -1);
 }
 
-// Ambient occlusion (contact) at backdrop point p (world) from every glass: darker near
+// The MatCap tier's contact (it traces no floor map; the full tier's is gathered, core
+// FloorLightMap::surround_factor): an ambient-occlusion estimate at backdrop point p
+// (world) from every glass: darker near
 // each foot (which lifts off the floor when the glass tips), where the cross-section
 // leaves the foot: its point nearest p decides, blended over 2 mm. Beyond three bound
 // radii (at least two foot radii from the foot) it darkens by less than 2e-4 of the
@@ -104,10 +107,10 @@ vec3 clouds_glow_irradiance(vec3 p, vec3 n) {
 vec3 shade_backdrop(vec3 p, vec3 n, vec3 d, float dist) {
   BackdropSurface bd = backdrop_surface();
 #ifdef ENV_IMAGE
-  // An image's light is all sky: the map's shadows and caustics (of its brightest patches,
-  // core floor_emitters) change it on the floor, darkened round the feet.
-  vec3 e = paper_bounce(p) * floor_contact(p) + backdrop_light(p, n);
-  if (n.y > 0.999) e *= floor_light_factor(p);
+  // An image's light is all sky: the map's shadows and caustics of its brightest patches
+  // (core floor_emitters) and the gathered shadow of the rest change it on the floor.
+  vec3 e = paper_bounce(p) + backdrop_light(p, n);
+  if (n.y > 0.999) e *= floor_image_factor(p);
 #else
   vec3 e = floor_light(p, n, backdrop_light(p, n), paper_bounce(p));
 #endif
@@ -125,11 +128,8 @@ vec3 shade_backdrop_mirrored(vec3 p, vec3 n, vec3 d, float dist, bool shadows) {
   BackdropSurface bd = backdrop_surface();
   vec3 direct = rig_irradiance_far(p, n, g_light_count), around = paper_bounce(p);
 #ifdef ENV_IMAGE
-  if (shadows) {
-    if (n.y > 0.999) direct *= floor_light_factor(p);
-    around *= floor_contact(p);
-  }
   vec3 e = direct + around;
+  if (shadows && n.y > 0.999) e *= floor_image_factor(p);
 #else
   vec3 e = shadows ? floor_light(p, n, direct, around) : direct + around;
 #endif

@@ -28,11 +28,13 @@ void floor_light_factors(vec3 p, out vec3 lights, out vec3 around) {
   around = mix(vec3(1.0), textureLod(u_floor_light, vec2(uv.x, v + 0.5), 0.0).rgb, inside);
 }
 
-// The rig's factor alone (under an image, whose light the photons trace).
-vec3 floor_light_factor(vec3 p) {
+// Under an image, the factor of its whole light at p: the map's two factors are each a
+// share of that light (the photons' of its brightest patches, the gathered of the rest:
+// FloorLightMap::surround_factor), their shadows of different light, so they add.
+vec3 floor_image_factor(vec3 p) {
   vec3 lights, around;
   floor_light_factors(p, lights, around);
-  return lights;
+  return max(lights + around - 1.0, 0.0);
 }
 
 // The light the backdrop receives at p (normal n) from the rig (backdrop_light.glsl) and

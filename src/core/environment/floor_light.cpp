@@ -1,5 +1,6 @@
 #include "core/environment/floor_light.hpp"
 
+#include "core/environment/environment_map.hpp"
 #include "core/environment/image_patches.hpp"
 #include "core/environment/studio.hpp"
 #include "core/math/basis.hpp"
@@ -120,13 +121,14 @@ class PhotonTracer {
   // back from it (ray.d up): what the objects in its way let through, from where the path
   // through them leaves (the lit paper's as the harmonics hold it where it leaves
   // downwards); nothing in its way, around's radiance along ray.d.
-  glm::dvec3 arriving(Ray ray, const SkyIrradiance& around, Rng& rng) const {
+  template <class Around>  // glm::dvec3 around(direction)
+  glm::dvec3 arriving(Ray ray, const Around& around, Rng& rng) const {
     glm::dvec4 attrs(0.0);
     const Hit h = bodies_.nearest(geo_, ray, kEps, MediumKind::Air, -1, attrs);
-    if (!h.valid() || h.m == Material::Floor) return around.radiance(ray.d);
+    if (!h.valid() || h.m == Material::Floor) return around(ray.d);
     glm::dvec3 power(1.0);
     const Walk w = follow(ray, power, h, attrs, rng, nullptr);
-    return w.end == End::Lost ? glm::dvec3(0.0) : power * around.radiance(ray.d);
+    return w.end == End::Lost ? glm::dvec3(0.0) : power * around(ray.d);
   }
 
   // One photon of power `power` leaving x along d (unit).
@@ -525,19 +527,60 @@ glm::dvec3 FloorLightMap::surround_sample(double x, double z) const {
   return bilinear(*this, x, z, [this](int i, int j) { return glm::dvec3(surround_factor[size_t(j) * size_t(width) + size_t(i)]); });
 }
 
-LightRig floor_emitters(const FrameState& f) {
-  if (!f.environment.image) return f.lights;
-  // The image's patches of the level nearest 32 wide, the brightest on the floor first.
-  ImagePatches level = image_patches(Studio(f.params), 32, true);
+namespace {
+// Under an image: its patches of the level nearest 32 wide that give the floor the most
+// light, the brightest first (none in the studio).
+ImagePatches floor_emitter_patches(const FrameState& f) {
+  if (!f.environment.image) return {};
+  ImagePatches level = image_patches(Studio(f.params), kImageFloorEmitterWidth, true);
   std::vector<ImagePatch>& patches = level.patches;
   const auto floor_light = [](const ImagePatch& p) { return channel_mean(p.radiance) * p.solid_angle * p.dir.y; };
   const size_t keep = std::min(patches.size(), kImageFloorEmitters);
   std::partial_sort(patches.begin(), patches.begin() + long(keep), patches.end(),
                     [&](const ImagePatch& a, const ImagePatch& b) { return floor_light(a) > floor_light(b); });
+  size_t n = 0;
+  while (n < keep && floor_light(patches[n]) > 0) ++n;
+  patches.resize(n);
+  return level;
+}
+
+// What the floor gathers under an image: the image less the patches the photons trace,
+// read at the level twice as fine as the patches' (a patch's four texels), so the two
+// parts add up to the image's light, each once; below the horizon, where the image's
+// ground is the floor itself, the lit floor as the surroundings' harmonics hold it (what
+// a glass mirrors down onto the floor beside it).
+class ImageRest {
+ public:
+  ImageRest(const FrameState& f, const ImagePatches& taken)
+      : studio_(f.params), surround_(f.environment.surround),
+        level_(image_level(*studio_.image, 2 * kImageFloorEmitterWidth)),
+        width_(std::max(taken.width, 1)), height_(std::max(taken.height, 1)),
+        taken_(size_t(width_) * size_t(height_), false) {
+    for (const ImagePatch& p : taken.patches) taken_[size_t(p.j) * size_t(width_) + size_t(p.i)] = true;
+  }
+  glm::dvec3 operator()(const glm::dvec3& d) const {
+    if (d.y < 0) return surround_.radiance(d);
+    const glm::dvec2 uv = equirect_uv(studio_.image_direction(d));
+    const int i = std::clamp(int(uv.x * level_.width), 0, level_.width - 1);
+    const int j = std::clamp(int(uv.y * level_.height), 0, level_.height - 1);
+    const size_t patch = size_t(j * height_ / level_.height) * size_t(width_) + size_t(i * width_ / level_.width);
+    return taken_[patch] ? glm::dvec3(0.0) : glm::dvec3(level_.at(i, j)) * double(studio_.env.intensity);
+  }
+
+ private:
+  Studio studio_;
+  SkyIrradiance surround_;
+  const HdrImage& level_;
+  int width_, height_;
+  std::vector<bool> taken_;
+};
+}  // namespace
+
+LightRig floor_emitters(const FrameState& f) {
+  if (!f.environment.image) return f.lights;
   LightRig rig;
   rig.aim = f.lights.aim;
-  for (size_t k = 0; k < keep && floor_light(patches[k]) > 0; ++k)
-    rig.lights.push_back(far_patch_light(patches[k], rig.aim));
+  for (const ImagePatch& p : floor_emitter_patches(f).patches) rig.lights.push_back(far_patch_light(p, rig.aim));
   return rig;
 }
 
@@ -573,6 +616,11 @@ struct FloorLightTrace::State {
   };
   std::vector<GatherNode> gather_nodes;
   std::unique_ptr<TexelLattice> gather_lattice;
+  // The light gathered (radiance by direction): the surroundings' harmonics, or an
+  // image less the patches the photons trace; and its share of the light the map's
+  // factor is over.
+  std::function<glm::dvec3(const glm::dvec3&)> gather_light;
+  glm::dvec3 gather_share{1.0};
   int gathered = 0;         // rays gathered at every node so far
   int gather_merged = 0;    // those the map's surround_factor holds
 
@@ -682,7 +730,21 @@ FloorLightTrace::FloorLightTrace(const FrameState& f, const FloorLightSettings& 
 }
 
 void FloorLightTrace::State::plan_gather(const std::vector<Caster>& casters) {
-  if (frame.environment.image || settings.gather_rays <= 0) return;  // (an image's light is all the photons')
+  if (settings.gather_rays <= 0) return;
+  if (!map.even) {
+    gather_light = [sky = frame.environment.surround](const glm::dvec3& d) { return sky.radiance(d); };
+  } else {
+    // Under an image the photons trace its brightest patches (floor_emitters) and the
+    // map's factor is over the image's whole light (even_light): the gather takes the
+    // rest of the image, and its factor is turned into one over the whole light (merge)
+    // with the rest's share of it, the whole less what the patches give the floor.
+    const ImagePatches taken = floor_emitter_patches(frame);
+    gather_light = ImageRest(frame, taken);
+    glm::dvec3 rest = map.even_light;
+    for (const ImagePatch& p : taken.patches) rest -= p.irradiance() * std::max(p.dir.y, 0.0);
+    for (int c = 0; c < 3; ++c)
+      gather_share[c] = map.even_light[c] > 1e-12 ? std::clamp(rest[c] / map.even_light[c], 0.0, 1.0) : 0.0;
+  }
   // The nodes: every kGatherStep-th texel (and the last of a row or column), those within
   // a caster's reach; the texels between bilinear.
   gather_lattice = std::make_unique<TexelLattice>(map, kGatherStep);
@@ -708,7 +770,7 @@ void FloorLightTrace::State::plan_gather(const std::vector<Caster>& casters) {
 void FloorLightTrace::State::gather(int rays) {
   rays = std::min(rays, settings.gather_rays - gathered);
   if (gather_nodes.empty() || rays <= 0) return;
-  const SkyIrradiance& around = frame.environment.surround;
+  const auto& around = gather_light;
   const int from = gathered, n = threads();
   gathered += rays;
   in_parallel([&](int t) {
@@ -721,7 +783,7 @@ void FloorLightTrace::State::gather(int rays) {
         const double u = std::fmod(radical_inverse(2, std::uint64_t(r)) + node.shift.x, 1.0);
         const double v = std::fmod(sobol_second(std::uint32_t(r)) + node.shift.y, 1.0);
         const double sin_t = std::sqrt(u), cos_t = std::sqrt(1 - u), phi = 2 * kPi * v;
-        const glm::dvec3 d(sin_t * std::cos(phi), cos_t, sin_t * std::sin(phi)), l = around.radiance(d);
+        const glm::dvec3 d(sin_t * std::cos(phi), cos_t, sin_t * std::sin(phi)), l = around(d);
         node.open += l;
         // (most directions miss every object's bounding sphere: nothing to follow)
         bool meets = false;
@@ -781,8 +843,10 @@ void FloorLightTrace::State::merge() {
   if (gather_merged != gathered) {  // the surroundings' factor: the nodes' ratios, bilinear between
     gather_merged = gathered;
     for (const GatherNode& node : gather_nodes)
-      for (int c = 0; c < 3; ++c)
-        gather_lattice->node(node.a, node.b)[c] = node.open[c] > 1e-12 ? node.got[c] / node.open[c] : 1.0;
+      for (int c = 0; c < 3; ++c) {
+        const double kept = node.open[c] > 1e-12 ? node.got[c] / node.open[c] : 1.0;
+        gather_lattice->node(node.a, node.b)[c] = 1 - gather_share[c] * (1 - kept);
+      }
     for (int j = 0; j < map.height; ++j)
       for (int i = 0; i < map.width; ++i)
         map.surround_factor[size_t(j) * size_t(map.width) + size_t(i)] = glm::vec3(gather_lattice->at(i, j));
@@ -840,8 +904,7 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
   put(b.present ? 1 : 0, int(b.kind), b.plane ? 1 : 0, b.z_curve, b.radius, emitters.lights.size(), f.vessels.size());
   const glm::dvec3 sky = f.environment.image ? f.environment.sky.at({0, 1, 0}) : glm::dvec3(0.0);
   put3(sky);
-  if (!f.environment.image)  // the surroundings whose shadow it gathers
-    for (const glm::dvec3& c : f.environment.surround.coef) put3(c);
+  for (const glm::dvec3& c : f.environment.surround.coef) put3(c);  // the surroundings whose shadow it gathers
   for (const AreaLight& l : emitters.lights) {
     for (double x : l.numbers()) put(x);
   }

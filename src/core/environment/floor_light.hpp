@@ -72,11 +72,13 @@ struct FloorLightMap {
   // draft's time otherwise).
   std::vector<glm::vec3> change;
   std::vector<glm::vec3> factor;
-  // The surroundings' shadow (in the studio; 1 under an image, whose light is all the
-  // photons'): per texel, the light the floor gathers from the surroundings
-  // (EnvironmentFrame::surround: the sky and the lit paper) through the glasses over what
-  // it gathers with nothing in between. Gathered, not traced from the light: at every
-  // kGatherStep-th texel near the glasses, gather_rays cosine-weighted directions (a
+  // The surroundings' shadow: per texel, the light the floor gathers from the
+  // surroundings (EnvironmentFrame::surround: the sky and the lit paper) through the
+  // glasses over what it gathers with nothing in between. (Under an image: from the
+  // image less the patches the photons trace, and as a share of the image's whole light
+  // as `factor` is, 1 - share x (1 - gathered / open): the floor's light is
+  // that whole light times factor + surround_factor - 1.) Gathered, not traced from the
+  // light: at every kGatherStep-th texel near the glasses, gather_rays cosine-weighted directions (a
   // shifted Sobol' set) followed through glass, drink, head, droplets and clouds with
   // the photons' media rules, each bringing what is left of the surroundings' radiance
   // where its path leaves them; bilinear between. So it is never below 0, exactly 1 where
@@ -109,6 +111,7 @@ struct FloorLightMap {
 // with its radiance. Their photons change the image's whole, even light on the floor
 // (its spherical harmonics) near the glasses: the shadows of what lights the floor most.
 inline constexpr size_t kImageFloorEmitters = 16;
+inline constexpr int kImageFloorEmitterWidth = 32;  // the patches' level, at most this wide
 // The lights whose photons the map traces: the rig's, or an image's patches.
 LightRig floor_emitters(const FrameState&);
 

@@ -342,6 +342,32 @@ TEST(FloorLight, TheSoftShadowRoundTheFootFollowsTheDrink) {
   for (const Contact* c : {&l, &s, &e}) EXPECT_GE(c->darkest, 0.0);
 }
 
+// Under an environment image the photons trace its brightest patches, and the soft shadow
+// is gathered from the rest of the image: as a share of the image's whole light, so never
+// below 1 less that share (what the patches give the floor); a stout's ring darker than
+// an empty glass's, with a real shadow at its darkest. (Above 1 on average beside the
+// foot: under the studio image the patches give the floor three quarters of its light,
+// and the glass turns the lit floor, brighter than the rest of the image, onto it.)
+TEST(FloorLight, UnderAnImageTheSoftShadowIsGatheredFromTheRestOfTheImage) {
+  const std::vector<std::string> image = {"env.mode=image", "env.image=studio"};
+  std::vector<std::string> empty_sets = image;
+  empty_sets.push_back("liquid.fill=0");
+  const FrameState stout = pint(image, "stout"), empty = pint(empty_sets);
+  const FloorLightMap s = compute_floor_light(stout, budget(20000)), e = compute_floor_light(empty, budget(20000));
+  ASSERT_TRUE(s.even);
+  const glm::dvec3 patches = unoccluded_floor_irradiance(floor_emitters(stout), {0, 0, 0});
+  const double share = 1 - mean(patches) / mean(s.even_light);
+  const Contact cs = contact_ring(stout, s), ce = contact_ring(empty, e);
+  std::printf("under the studio image: the rest's share %.3f; 1-3 cm from the foot: stout %.3f (darkest %.3f), empty %.3f\n",
+              share, mean(cs.mean), cs.darkest, mean(ce.mean));
+  EXPECT_GT(share, 0.05);
+  EXPECT_LT(share, 0.95);
+  EXPECT_LT(mean(cs.mean), mean(ce.mean) - 0.01);
+  EXPECT_LT(cs.darkest, 1.0 - 0.5 * share);
+  EXPECT_GE(cs.darkest, 1.0 - share - 1e-9);
+  EXPECT_GE(ce.darkest, 1.0 - share - 1e-9);
+}
+
 // Interactive apps refine a still's map over frames: a batch is compute_floor_light's map,
 // and batches go on where the last stopped, so four of them are as good as one four times
 // the size (the noise against a map of many photons falls by about two).
