@@ -425,6 +425,10 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
   int events = 0, steps = 0, max_steps = max_events * (OBJECT_COUNT + 1) + 1;  // iterations of the path loop
   float tmin = 0.0;
   bool foam_done = false, lace_done = false;  // this segment's heads marched, this hit's wall laced
+  // A path held in a glass or a drink past its last event (below): what it still carries,
+  // and whether it runs down a vessel's wall (the vessel's index; -1: not so).
+  vec3 trapped = vec3(0.0), trapped_at = vec3(0.0), trapped_dir = vec3(0.0);
+  int trapped_wall = -1;
   // A path stops at most once per segment for the heads and once per event for the
   // lacing (a path held in a glass wall by total internal reflection above the drink
   // meets the inner wall again and again); the last stage stops for nothing.
@@ -467,10 +471,17 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
         } else if (!in_events && path.medium != MEDIUM_AIR) {
           // Out of events, a path in glass or a drink (held in a rim or a wall by total
           // internal reflection, a light guide that leaves it far from here) takes the
-          // mean radiance of the surroundings (the sky and the lit backdrop). Along its
-          // ray the sky alone gave black rims (the studio's sky behind the sweep is dark),
-          // the backdrop there rims brighter than the reference's (docs/REFERENCE.md).
-          path.radiance += path.thr * surround_mean();
+          // mean radiance of the surroundings (the sky and the lit backdrop), through the
+          // drink where it runs down a wall round the drink (the light a wall guides up to
+          // a rim comes from the base and the drink above it; not a stem's or a foot's,
+          // below the cavity); after the loop, once. Along its ray
+          // the sky alone gave black rims (the studio's sky behind the sweep is dark), the
+          // backdrop there rims brighter than the reference's (docs/REFERENCE.md). (Not a
+          // condensation bead's path: its events ran out in the bead.)
+          trapped = path.thr;
+          trapped_at = path.o;
+          trapped_dir = path.d;
+          trapped_wall = path.medium == MEDIUM_GLASS && g_bead_events > 0 ? path.obj : -1;
           look.w = vec3(0.0);
         }
       } else {
@@ -506,6 +517,16 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
 #else
     break;
 #endif
+  }
+  for (int k = 0; k < 1; ++k) {  // (a SIMD group with no such path leaves at once)
+    if (max3(trapped) <= 0.0) break;
+    vec3 drink = vec3(1.0);
+    if (trapped_wall >= 0) {
+      Vessel tv = load_vessel(trapped_wall);
+      bool down_a_wall = to_local_dir(tv, trapped_dir).y < 0.0 && to_local_point(tv, trapped_at).y > tv.shape.base;
+      if (down_a_wall) drink = drink_transmittance(tv.body, fetch_object_foam(tv.row).under_chord);
+    }
+    path.radiance += trapped * surround_mean() * drink;
   }
   // The backdrop the path's ray met, lit.
   if (max3(lit.w) > 0.0) path.radiance += lit.w * shade_backdrop(lit.p, lit.n, lit.d, length(lit.p - frame.cam_eye));
