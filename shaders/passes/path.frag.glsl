@@ -329,7 +329,8 @@ Crossing droplet_crossing(Path path, Hit h) {
 
 // As shade_interface for a droplet: the water inside absorbs (Beer-Lambert); the reflected
 // part's look at the surroundings goes to `look` (from inside absorbed along one more
-// chord of the same length: the internal reflection is not followed); the refracted part goes on, into the next object or the air.
+// chord of the same length: the internal reflection is not followed); the refracted part
+// goes on, into the next object or the air.
 void shade_droplet(inout Path path, Hit h, bool transparent, out Look look) {
   look = no_look();
   vec3 p = path.o + h.t * path.d;
@@ -340,8 +341,7 @@ void shade_droplet(inout Path path, Hit h, bool transparent, out Look look) {
   float rough = frame.droplet_roughness;
   if (c.F < 1.0) {
     vec3 r = reflect(path.d, c.n);
-    if (inside) look = Look(p, r, path.thr * c.F * chord, rough, true, true, -1);
-    else if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true, -1);
+    if (inside || !transparent) look = Look(p, r, path.thr * c.F * (inside ? chord : vec3(1.0)), rough, true, true, -1);
     path.thr *= 1.0 - c.F;
   }
   go_on(path, h, c, p);
@@ -390,8 +390,7 @@ void shade_cloud(inout Path path, Hit h, bool transparent, out Look look) {
   float rough = frame.cloud_hi[k].w;
   if (c.F < 1.0) {
     vec3 r = reflect(path.d, c.n);
-    if (inside) look = Look(p, r, path.thr * c.F * chord, rough, true, true, -1);
-    else if (!transparent) look = Look(p, r, path.thr * c.F, rough, true, true, -1);
+    if (inside || !transparent) look = Look(p, r, path.thr * c.F * (inside ? chord : vec3(1.0)), rough, true, true, -1);
     path.thr *= 1.0 - c.F;
     if (max3(g_cloud_attrs.yzw) > 0.0) path.thr *= g_cloud_attrs.yzw;
   }

@@ -574,15 +574,18 @@ class ImageRest {
   int width_, height_;
   std::vector<bool> taken_;
 };
-}  // namespace
 
-LightRig floor_emitters(const FrameState& f) {
+// The lights whose photons the map traces, given the image's patches (none in the studio).
+LightRig emitters_of(const FrameState& f, const ImagePatches& patches) {
   if (!f.environment.image) return f.lights;
   LightRig rig;
   rig.aim = f.lights.aim;
-  for (const ImagePatch& p : floor_emitter_patches(f).patches) rig.lights.push_back(far_patch_light(p, rig.aim));
+  for (const ImagePatch& p : patches.patches) rig.lights.push_back(far_patch_light(p, rig.aim));
   return rig;
 }
+}  // namespace
+
+LightRig floor_emitters(const FrameState& f) { return emitters_of(f, floor_emitter_patches(f)); }
 
 glm::dvec3 unoccluded_floor_irradiance(const LightRig& rig, const glm::dvec3& p) {
   return rig.irradiance(p, {0, 1, 0});
@@ -638,7 +641,7 @@ struct FloorLightTrace::State {
   }
 
   void merge();  // the lanes into the map, if batches came since the last merge
-  void plan_gather(const std::vector<Caster>&);  // the nodes near the casters
+  void plan_gather(const std::vector<Caster>&, const ImagePatches&);  // the nodes near the casters
   void gather(int rays);                          // that many more rays at every node
 
   // Photon i of pair (l, g) in batch b: a point on light l, a direction in g's cone. The
@@ -681,7 +684,8 @@ FloorLightTrace::FloorLightTrace(const FrameState& f, const FloorLightSettings& 
   State& st = *state_;
   st.frame = f;
   st.settings = s;
-  st.emitters = floor_emitters(f);
+  const ImagePatches patches = floor_emitter_patches(f);  // (an image's: its light for both parts)
+  st.emitters = emitters_of(f, patches);
   if (!scene_geometry(f).backdrop.present || st.emitters.lights.empty()) return;
   st.tracer = std::make_unique<PhotonTracer>(st.frame, st.map);
   std::vector<Caster> casters;
@@ -726,10 +730,10 @@ FloorLightTrace::FloorLightTrace(const FrameState& f, const FloorLightSettings& 
   st.map.change.assign(texels, glm::vec3(0.0f));
   st.map.factor.assign(texels, glm::vec3(1.0f));
   st.map.surround_factor.assign(texels, glm::vec3(1.0f));
-  st.plan_gather(casters);
+  st.plan_gather(casters, patches);
 }
 
-void FloorLightTrace::State::plan_gather(const std::vector<Caster>& casters) {
+void FloorLightTrace::State::plan_gather(const std::vector<Caster>& casters, const ImagePatches& taken) {
   if (settings.gather_rays <= 0) return;
   if (!map.even) {
     gather_light = [sky = frame.environment.surround](const glm::dvec3& d) { return sky.radiance(d); };
@@ -738,7 +742,6 @@ void FloorLightTrace::State::plan_gather(const std::vector<Caster>& casters) {
     // map's factor is over the image's whole light (even_light): the gather takes the
     // rest of the image, and its factor is turned into one over the whole light (merge)
     // with the rest's share of it, the whole less what the patches give the floor.
-    const ImagePatches taken = floor_emitter_patches(frame);
     gather_light = ImageRest(frame, taken);
     glm::dvec3 rest = map.even_light;
     for (const ImagePatch& p : taken.patches) rest -= p.irradiance() * std::max(p.dir.y, 0.0);
