@@ -307,11 +307,19 @@ INSTANTIATE_TEST_SUITE_P(
     // way (1.21 / 2.30 -> 1.52 / 3.14 close up, 0.77 / 1.42 -> 1.07 / 1.89 by the key
     // alone: the picture's stout a level or two brighter than the reference's already,
     // now two more).
+    // Stop 51: a head's march places each step's sample by the attenuation into the step
+    // (march_foam), not evenly along it: a ray into a head's side, whose steps are several
+    // optical depths thick, took its light from twice too deep (too little single
+    // scattering, too much tinted diffusion: the sides yellow). Heads (mean / p90): the
+    // default pint 1.34 / 1.80 -> 1.00 / 1.55, the stout close up 2.52 / 4.24 -> 2.04 /
+    // 3.43, by the key alone 3.23 / 5.26 -> 2.73 / 4.81, the cold pint 1.58 / 2.14 -> 1.23
+    // / 1.60, the bar 1.74 / 3.06 -> 1.86 / 2.74; the optics 2.29 / 4.30 -> 2.43 / 4.48 the
+    // other way; the rest within 0.1.
     ::testing::Values(
-        ComparisonCase{"lager-pint", SceneRequest{"lager", "pint"}, 64, 8192, {1.0, 2.3}, {0.8, 0.7}, {1.6, 2.3}},
+        ComparisonCase{"lager-pint", SceneRequest{"lager", "pint"}, 64, 8192, {1.0, 2.3}, {0.8, 0.7}, {1.2, 1.8}},
         ComparisonCase{"lager-pint-optics",
                        SceneRequest{"checker-studio", "pint", {"env.floor=false", "bubbles.carbonation=0"}},
-                       64, 8192, {0.7, 1.3}, {0.3, 0.6}, {2.5, 4.7}},
+                       64, 8192, {0.7, 1.3}, {0.3, 0.6}, {2.7, 4.9}},
         ComparisonCase{"lager-pint-studio-image",
                        SceneRequest{"lager", "pint", {"env.mode=image", "env.image=studio", "env.floor=false", "bubbles.carbonation=0"}},
                        64, 8192, {0.6, 1.3}, {0.5, 0.5}, {2.1, 5.3}},
@@ -387,14 +395,14 @@ INSTANTIATE_TEST_SUITE_P(
         ComparisonCase{"lager-head", SceneRequest{"lager", "pint", {}, {"eye=0,0.17,0.2", "target=0,0.14,0", "vfov=25"}},
                        48, 4096, {0, 0}, {0, 0}, {1.6, 2.5}},
         ComparisonCase{"stout-head", SceneRequest{"stout", "nonic", {}, {"eye=0,0.2,0.3", "target=0,0.14,0", "vfov=22"}},
-                       48, 4096, {0, 0}, {0, 0}, {2.8, 4.7}},
+                       48, 4096, {0, 0}, {0, 0}, {2.3, 3.8}},
         // The stout's head lit by the key alone (no strips, no backlight, a black sky: the
         // sweep lit by the key is the only other light), where a light's single
         // scattering counted twice shows: 4.31 / 10.04 (4.71 / 12.38 while it was).
         ComparisonCase{"stout-head-key",
                        SceneRequest{"stout", "nonic", {"strips.power=0", "backlight.power=0", "env.mode=constant", "env.color=0,0,0"},
                                     {"eye=0,0.2,0.3", "target=0,0.14,0", "vfov=22"}},
-                       48, 4096, {0, 0}, {0, 0}, {3.5, 5.6}},
+                       48, 4096, {0, 0}, {0, 0}, {3.0, 5.3}},
         // Condensation (the reference's beads are the picture's water lenses, its mist
         // scatters diffusely to either side): the cold pint glass 1.37 / 3.05, liquid 3.21 /
         // 6.62 (at 64 x 64 a bead is a pixel or two: the picture's few samples a pixel catch

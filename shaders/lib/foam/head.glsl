@@ -72,14 +72,20 @@ const float FOAM_GROWTH = 1.5;
 const float FOAM_SOFT_TOP = 0.12;
 float foam_growth(float height, float top) { return 1.0 + FOAM_GROWTH * (1.0 - height / top); }
 
+// The extinction the head has on average at `height` above the liquid, under its top:
+// foam_density without the bubbles' detail and the big bubbles.
+float foam_smooth_density(ObjectFoam f, float height, float top) {
+  if (height < 0.0 || height > top) return 0.0;
+  return f.density / foam_growth(height, top) * clamp((top - height) / (FOAM_SOFT_TOP * top), 0.0, 1.0);
+}
+
 // Extinction at p; `height` is p's height above the liquid, `top` the head's thickness
 // there. The twin of core/foam/head_volume.cpp HeadVolume::density.
 float foam_density(Vessel v, ObjectFoam f, vec3 p, float height, float top) {
   if (height < 0.0 || height > top || p.y > v.body.height || length(p.xz) > inner_radius(v, p.y) || clipped(v, p))
     return 0.0;
   float grow = foam_growth(height, top);
-  float d = f.density / grow * max(1.0 + 1.6 * f.detail * (value_noise(p / (f.bubble_size * grow)) - 0.5), 0.0);
-  d *= clamp((top - height) / (FOAM_SOFT_TOP * top), 0.0, 1.0);
+  float d = foam_smooth_density(f, height, top) * max(1.0 + 1.6 * f.detail * (value_noise(p / (f.bubble_size * grow)) - 0.5), 0.0);
   for (int i = 0; i < f.big_bubble_count; ++i) {
     BigBubble b = big_bubble(v, i);
     float r = b.radius, dist = length(p - b.centre);
@@ -294,19 +300,31 @@ bool foam_interval(Vessel v, ObjectFoam f, vec3 o, vec3 d, inout float t0, inout
 void march_foam(Vessel v, ObjectFoam f, vec3 o, vec3 d, float t0, float t1, inout vec3 radiance,
                 inout vec3 thr) {
   // Steps of at most one optical depth of the top's density (a thick head stops the
-  // march within about ten), at least 6 and at most 40 over the stretch.
+  // march within about ten), at least 6 and at most 40 over the stretch. A step may still
+  // be several optical depths thick (a ray into the head's side crosses a hundred), so its
+  // one sample is not placed evenly along it: its depth into the step is drawn (the pixel's
+  // jitter u) from the attenuation exp(-sigma s) of the foam's smooth density where the last
+  // sample was, as the light scattered there reaches the eye. Placed evenly, a side's first
+  // sample lay half a step deep on average, twice as deep as the light it sends comes from:
+  // too little of a light's single scattering and too much of the diffusion's tinted light
+  // (a stout's head side yellow against the reference). Weighed by its own opacity, a
+  // step's share still telescopes: a white head in even light is exactly that light.
   float len = t1 - t0;
   int steps = int(clamp(ceil(len * f.density), 6.0, 40.0));
   float dt = len / float(steps);
-  float t = t0 + dt * march_jitter();
+  float u = march_jitter(), t = t0;
   HeadLight h = head_light(v, f);
   head_along(h, v, f, d, (o + t0 * d).xz);
+  vec3 p = o + t0 * d;
+  float sigma_n = foam_smooth_density(f, level_over(v.liquid, p), foam_thickness_at(v, f, p.xz));
   for (int i = 0; i < 40; ++i) {
     if (i >= steps) break;
     ++g_foam_steps;
-    vec3 p = o + t * d;
+    float dn = sigma_n * dt, s = dn > 1e-3 ? -log(1.0 - u * (1.0 - exp(-dn))) / sigma_n : u * dt;  // (u dt: even)
+    p = o + (t + s) * d;
     float height = level_over(v.liquid, p), top = foam_thickness_at(v, f, p.xz);
     float sigma = foam_density(v, f, p, height, top);
+    sigma_n = foam_smooth_density(f, height, top);
     if (sigma > 0.0) {
       float trans = exp(-sigma * dt);
       radiance += thr * head_source(v, f, h, d, p, height, top) * (1.0 - trans);
