@@ -256,7 +256,15 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
     into_wall = bead.found && path.medium == MEDIUM_AIR && dot(r, bead_wall) < 0.0;
 #endif
     if (path.medium == MEDIUM_AIR) {
-      if (!transparent && !into_wall) look = Look(p, r, path.thr * c.F, rough, true, true, h.obj);
+      vec3 out_w = vec3(1.0);
+      if (h.m == M_LIQUID_SURFACE) {
+        float turned;
+        bool down;
+        out_w = surface_reflection_out(v, g, pl, to_local_dir(v, r), turned, down);
+        vec3 back = turned * surround_mean() * (down ? drink_transmittance(v.body, fetch_object_foam(v.row).under_chord) : vec3(1.0));
+        if (!transparent) path.radiance += path.thr * c.F * back;
+      }
+      if (!transparent && !into_wall) look = Look(p, r, path.thr * c.F * out_w, rough, true, true, h.obj);
     } else {
       vec3 out_dir;
       float turned;  // what the way out turns back in sees the sky's mean

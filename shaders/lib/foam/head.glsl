@@ -15,6 +15,7 @@
 #include "lib/optics/fresnel.glsl"
 #include "lib/scene/objects.glsl"
 #include "lib/vessel/intersect.glsl"
+#include "lib/vessel/media.glsl"
 #include "lib/liquid/surface.glsl"
 #include "lib/liquid/body.glsl"
 #include "lib/environment/lights.glsl"
@@ -156,13 +157,6 @@ void head_along(inout HeadLight h, Vessel v, ObjectFoam f, vec3 d, vec2 xz) {
     h.cos_top[i] = dot(n_top, h.l[i]);
     h.top_key += h.key[i] * max(h.cos_top[i], 0.0) * (1.0 - single_exitance(h.cos_top[i], f.anisotropy));
   }
-}
-
-// What a glass wall (two faces, air on both sides) lets through of light falling at
-// cosine cos_i (the inner face reflects as much as the outer: Fresnel is reciprocal).
-float wall_transmittance(float cos_i, float ior) {
-  float t = 1.0 - fresnel_dielectric(cos_i, 1.0, ior);
-  return t * t;
 }
 
 HeadLight head_light(Vessel v, ObjectFoam f) {

@@ -25,6 +25,47 @@ float medium_ior(Vessel v, ObjectGlass g, int medium) {
   return medium == MEDIUM_GLASS ? g.glass_ior : (medium == MEDIUM_LIQUID ? v.liquid.ior : 1.0);
 }
 
+// What a glass wall (two faces, air on both sides) lets through of light falling at
+// cosine cos_i (the inner face reflects as much as the outer: Fresnel is reciprocal).
+float wall_transmittance(float cos_i, float ior) {
+  float t = 1.0 - fresnel_dielectric(cos_i, 1.0, ior);
+  return t * t;
+}
+
+// Light reflected off the drink's surface from the air in the cavity (p, r local: the
+// point and the reflected direction) leaves through the opening, or through the wall
+// where it meets it first: what reaches the eye of it per unit of what it sees beyond,
+// through both faces and the glass between (the way on taken straight: parallel faces).
+// `turned`: the part the wall sends back into the cavity (`turned_down`: heading down,
+// into the drink), which the caller gives the surroundings' mean (through the drink): it leaves in the
+// end, somewhere (in even light, as the light itself). A wine glass's bowl curves in over
+// its drink, and what the surface mirrors at a grazing view is its far wall from inside,
+// not the open studio: the surface's band came out 15-20 levels lighter than the
+// reference's, which follows the reflection through the wall.
+vec3 surface_reflection_out(Vessel v, ObjectGlass g, vec3 p, vec3 r, out float turned, out bool turned_down) {
+  turned = 0.0;
+  turned_down = false;
+  // The cavity above p as one cone from p's height to the rim (a wall walked segment by
+  // segment cost the frame up to a sixth more on llvmpipe; a bowl's curve between the
+  // two matters little to where and how steeply the reflection meets it).
+  float H = v.body.height, r0 = inner_radius(v, p.y), s = (inner_radius(v, H) - r0) / max(H - p.y, 1e-6);
+  float A = dot(r.xz, r.xz) - s * s * r.y * r.y, B = dot(p.xz, r.xz) - s * r0 * r.y, C = dot(p.xz, p.xz) - r0 * r0;
+  float disc = B * B - A * C;
+  if (r.y <= 0.0 || C >= 0.0 || disc < 0.0 || abs(A) < 1e-12) return vec3(1.0);
+  float sq = sqrt(disc), t = (-B + sq) / A;
+  if (t <= 0.0) t = (-B - sq) / A;
+  vec3 q = p + t * r;
+  if (t <= 0.0 || q.y >= H) return vec3(1.0);  // out through the opening
+  float rq = length(q.xz);
+  vec3 n = rq > 0.0 ? normalize(vec3(q.x / rq, -s, q.z / rq)) : vec3(0.0, -1.0, 0.0);  // outward
+  float c = abs(dot(n, r)), pass = wall_transmittance(c, g.glass_ior);
+  float ct = sqrt(max(1.0 - (1.0 - c * c) / (g.glass_ior * g.glass_ior), 0.0));  // inside the glass
+  float thick = (outer_radius(v, q.y) - inner_radius(v, q.y)) * length(n.xz) / max(ct, 0.05);
+  turned = 1.0 - pass;
+  turned_down = reflect(r, n).y < 0.0;
+  return pass * exp(-g.glass_absorption * thick);
+}
+
 // Where the ray o + t r (local) crosses the cavity: within its cylinder (the radius at
 // o's height), above its floor and, with `drink`, below the surface plane. span: the
 // part inside, n_out: the outward normal where it leaves (the wall's, tilted by its
