@@ -453,6 +453,12 @@ INSTANTIATE_TEST_SUITE_P(
         // 4096 paths: glass 0.28 / 0.58 and liquid 0.97 / 2.61; glass 0.51 / 1.58 (1.05-1.88
         // over seeds 1-3) and liquid 0.38 / 0.69. Bounds about 10 % over (more on the
         // champagne's 76 pixels of glass).
+        // The default pint from above (the golden pint_lager_above's view; stop 51), where
+        // the head fills the picture and the rim rings it, against 2048 paths (165 s to
+        // trace): glass (its 20 pixels clear of an edge: the rim is thinner than a pixel
+        // here) 0.25 / 0.90, liquid 1.44 / 3.11, head 1.80 / 2.69 over 478 pixels.
+        ComparisonCase{"lager-pint-above", SceneRequest{"lager", "pint", {}, {"eye=0.08,0.32,0.2", "target=0,0.07,0"}},
+                       64, 2048, {0.4, 1.1}, {1.6, 3.4}, {2.0, 3.0}},
         ComparisonCase{"red-wine", SceneRequest{"red-wine"}, 64, 16384, {0.4, 1.0}, {1.8, 4.1}, {0, 0}},
         ComparisonCase{"rose-wine", SceneRequest{"rose-wine"}, 64, 4096, {0.4, 0.9}, {1.1, 2.9}, {0, 0}},
         ComparisonCase{"champagne", SceneRequest{"champagne"}, 64, 4096, {0.6, 2.0}, {0.5, 0.8}, {0, 0}},
