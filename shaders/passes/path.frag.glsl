@@ -261,8 +261,8 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
         float turned;
         bool down;
         out_w = surface_reflection_out(v, g, pl, to_local_dir(v, r), turned, down);
-        vec3 back = turned * surround_mean() * (down ? drink_transmittance(v.body, fetch_object_foam(v.row).under_chord) : vec3(1.0));
-        if (!transparent) path.radiance += path.thr * c.F * back;
+        vec3 drink = down ? drink_transmittance(v.body, fetch_object_foam(v.row).under_chord) : vec3(1.0);
+        if (!transparent) path.radiance += path.thr * c.F * turned * surround_mean() * drink;
       }
       if (!transparent && !into_wall) look = Look(p, r, path.thr * c.F * out_w, rough, true, true, h.obj);
     } else {

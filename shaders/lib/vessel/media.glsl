@@ -37,11 +37,12 @@ float wall_transmittance(float cos_i, float ior) {
 // where it meets it first: what reaches the eye of it per unit of what it sees beyond,
 // through both faces and the glass between (the way on taken straight: parallel faces).
 // `turned`: the part the wall sends back into the cavity (`turned_down`: heading down,
-// into the drink), which the caller gives the surroundings' mean (through the drink): it leaves in the
-// end, somewhere (in even light, as the light itself). A wine glass's bowl curves in over
-// its drink, and what the surface mirrors at a grazing view is its far wall from inside,
-// not the open studio: the surface's band came out 15-20 levels lighter than the
-// reference's, which follows the reflection through the wall.
+// into the drink), which the caller gives the surroundings' mean (through the drink): it
+// leaves in the end, somewhere (in even light, as the light itself). A wine glass's bowl
+// curves in over its drink, and what the surface mirrors at a grazing view is its far
+// wall from inside, not the open studio: the surface's band came out 15-20 levels lighter
+// than the reference's, which follows the reflection through the wall. Not a twin (the
+// reference follows the reflection; docs/REFERENCE.md, "Wines and champagne").
 vec3 surface_reflection_out(Vessel v, ObjectGlass g, vec3 p, vec3 r, out float turned, out bool turned_down) {
   turned = 0.0;
   turned_down = false;
