@@ -258,11 +258,9 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
     if (path.medium == MEDIUM_AIR) {
       vec3 out_w = vec3(1.0);
       if (h.m == M_LIQUID_SURFACE) {
-        float turned;
-        bool down;
-        out_w = surface_reflection_out(v, g, pl, to_local_dir(v, r), turned, down);
-        vec3 drink = down ? drink_transmittance(v.body, fetch_object_foam(v.row).under_chord) : vec3(1.0);
-        if (!transparent) path.radiance += path.thr * c.F * turned * surround_mean() * drink;
+        vec3 back;
+        out_w = surface_reflection_out(v, g, pl, to_local_dir(v, r), back);
+        if (!transparent) path.radiance += path.thr * c.F * back * surround_mean();
       }
       if (!transparent && !into_wall) look = Look(p, r, path.thr * c.F * out_w, rough, true, true, h.obj);
     } else {
@@ -531,7 +529,7 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
     if (trapped_wall >= 0) {
       Vessel tv = load_vessel(trapped_wall);
       bool down_a_wall = to_local_dir(tv, trapped_dir).y < 0.0 && to_local_point(tv, trapped_at).y > tv.shape.base;
-      if (down_a_wall) drink = drink_transmittance(tv.body, fetch_object_foam(tv.row).under_chord);
+      if (down_a_wall) drink = mean_chord_transmittance(tv);
     }
     path.radiance += trapped * surround_mean() * drink;
   }

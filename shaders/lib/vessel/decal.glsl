@@ -133,7 +133,7 @@ DecalEffect decal_effect(Vessel v, Hit h, int medium, vec3 p, vec3 pl, vec3 d, b
     vec3 n = dot(h.n, d) < 0.0 ? h.n : -h.n;  // the face the path sees
     e.look = -n;
     bool faces_drink = below && ((h.m == M_GLASS_INNER) != (medium == MEDIUM_GLASS));
-    vec3 drink = below ? drink_transmittance(v.body, fetch_object_foam(v.row).under_chord) : vec3(1.0);
+    vec3 drink = below ? mean_chord_transmittance(v) : vec3(1.0);
     vec3 light = (rig_irradiance(p, n, lit ? frame.light_count : 0) + sky_irradiance(n) + floor_bounce(p, n)) / PI *
                  (faces_drink ? drink : vec3(1.0));
     float n_far = medium_ior(v, glass_of(v.row), medium_across(h.m, medium, below));

@@ -25,6 +25,11 @@ float medium_ior(Vessel v, ObjectGlass g, int medium) {
   return medium == MEDIUM_GLASS ? g.glass_ior : (medium == MEDIUM_LIQUID ? v.liquid.ior : 1.0);
 }
 
+// What even light keeps of vessel v's drink across its mean chord (4 V / S, core
+// drink_mean_chord): light that reaches a point through the drink from all around it
+// (under a head, up a wall to a rim, onto a decal facing the drink, turned down into it).
+vec3 mean_chord_transmittance(Vessel v) { return drink_transmittance(v.body, fetch_object_foam(v.row).under_chord); }
+
 // What a glass wall (two faces, air on both sides) lets through of light falling at
 // cosine cos_i (the inner face reflects as much as the outer: Fresnel is reciprocal).
 float wall_transmittance(float cos_i, float ior) {
@@ -36,16 +41,15 @@ float wall_transmittance(float cos_i, float ior) {
 // point and the reflected direction) leaves through the opening, or through the wall
 // where it meets it first: what reaches the eye of it per unit of what it sees beyond,
 // through both faces and the glass between (the way on taken straight: parallel faces).
-// `turned`: the part the wall sends back into the cavity (`turned_down`: heading down,
-// into the drink), which the caller gives the surroundings' mean (through the drink): it
-// leaves in the end, somewhere (in even light, as the light itself). A wine glass's bowl
+// `back`: the part the wall sends back into the cavity (through the drink's mean chord
+// where it heads down into it), which the caller gives the surroundings' mean: it leaves
+// in the end, somewhere (in even light, as the light itself). A wine glass's bowl
 // curves in over its drink, and what the surface mirrors at a grazing view is its far
 // wall from inside, not the open studio: the surface's band came out 15-20 levels lighter
 // than the reference's, which follows the reflection through the wall. Not a twin (the
 // reference follows the reflection; docs/REFERENCE.md, "Wines and champagne").
-vec3 surface_reflection_out(Vessel v, ObjectGlass g, vec3 p, vec3 r, out float turned, out bool turned_down) {
-  turned = 0.0;
-  turned_down = false;
+vec3 surface_reflection_out(Vessel v, ObjectGlass g, vec3 p, vec3 r, out vec3 back) {
+  back = vec3(0.0);
   // The cavity above p as one cone from p's height to the rim (a wall walked segment by
   // segment cost the frame up to a sixth more on llvmpipe; a bowl's curve between the
   // two matters little to where and how steeply the reflection meets it).
@@ -62,8 +66,7 @@ vec3 surface_reflection_out(Vessel v, ObjectGlass g, vec3 p, vec3 r, out float t
   float c = abs(dot(n, r)), pass = wall_transmittance(c, g.glass_ior);
   float ct = sqrt(max(1.0 - (1.0 - c * c) / (g.glass_ior * g.glass_ior), 0.0));  // inside the glass
   float thick = (outer_radius(v, q.y) - inner_radius(v, q.y)) * length(n.xz) / max(ct, 0.05);
-  turned = 1.0 - pass;
-  turned_down = reflect(r, n).y < 0.0;
+  back = (1.0 - pass) * (reflect(r, n).y < 0.0 ? mean_chord_transmittance(v) : vec3(1.0));
   return pass * exp(-g.glass_absorption * thick);
 }
 
