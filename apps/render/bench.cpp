@@ -35,6 +35,7 @@ struct BenchScene {
   bool flight = false;  // the tasting flight (four glasses) seen with request.camera
   bool general = false;  // drawn with the general (several-object) shader path
   bool objects = false;  // a scene preset's every object (resolve_scene_objects)
+  bool whole_pass = false;  // the objects' pass over the whole picture (Renderer::set_background_pass)
 };
 
 // The tasting flight of tests/gpu (pilsner, amber ale in a tulip, stout in a nonic,
@@ -378,6 +379,9 @@ void bench_condensation(gpu::Renderer& renderer, const std::vector<int>& sizes, 
 int bench(int frames, const std::vector<int>& sizes, const std::vector<std::string>& only, bool verbose) {
   const std::vector<BenchScene> scenes = {
       {"pint-lager", {"lager", "pint", {}, {}}},
+      // The same with the objects' pass over the whole picture, not only where the pint can
+      // show (the background pass around it): what that saves.
+      {"pint-lager-whole-pass", {"lager", "pint", {}, {}}, nullptr, 0, false, false, false, true},
       // The same with two decals (docs/DECALS.md): the enamel wordmark on the front, the crest inside at the back.
       {"pint-lager-decals", {"lager", "pint", {"decal_outer.file=wordmark", "decal_outer.width=0.07", "decal_outer.color=0.75,0.06,0.05",
                                                "decal_inner.file=crest", "decal_inner.width=0.04", "decal_inner.angle=180"}, {}}},
@@ -435,6 +439,7 @@ int bench(int frames, const std::vector<int>& sizes, const std::vector<std::stri
     FrameState empty = f;
     empty.vessels.clear();
     renderer.set_held_objects(!s.general);
+    renderer.set_background_pass(!s.whole_pass);
     for (int size : sizes) {
       const double med_empty = median_ms(renderer, empty, size, size, frames);
       const Measured m = measure(renderer, f, size, frames, med_empty);

@@ -333,7 +333,7 @@ void main() {
   return;
 #endif
   vec3 thr;
-#ifdef MATCAP_BACKGROUND_ONLY
+#ifdef BACKGROUND_ONLY
   // Outside the objects' part of the screen (gpu/renderer objects_on_screen): what a line
   // that meets no object's bounds sees.
   thr = vec3(1.0);

@@ -448,8 +448,14 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
       ++steps;
       Vessel v;
       Hit h = no_hit();
-      // Out of events (or of iterations) the path looks out from where it is.
+      // Out of events (or of iterations) the path looks out from where it is. Compiled
+      // for the background alone (gpu/renderer: where no object can show), it has none:
+      // what its ray sees, none of the objects' code.
+#ifdef BACKGROUND_ONLY
+      bool in_events = false;
+#else
       bool in_events = events < max_events && steps < max_steps && g_bead_events > 0;
+#endif
       if (in_events && !search_step(s, path.o, path.d, path.medium, path.obj, false, v)) continue;
       if (in_events) h = s.best;
 #if FOAM_HEAD

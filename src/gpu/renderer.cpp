@@ -110,7 +110,7 @@ std::unique_ptr<Program> Renderer::build_program(int variant) const {
   if (variant & kMatCapBackdrop) frag = with_define(std::move(frag), "MATCAP_BACKDROP");
   if (variant & kMatCapCached) frag = with_define(std::move(frag), "MATCAP_CACHED");
   if (variant & kMatCapSmall) frag = with_define(std::move(frag), "MATCAP_CACHED_SMALL");
-  if (variant & kMatCapBackgroundOnly) frag = with_define(std::move(frag), "MATCAP_BACKGROUND_ONLY");
+  if (variant & kBackgroundOnly) frag = with_define(std::move(frag), "BACKGROUND_ONLY");
   if (variant & kPanorama) frag = with_define(std::move(frag), "PANORAMA");
   if (variant & kReflections) frag = with_define(std::move(frag), "REFLECTIONS");
   if (const int held = (variant >> kHeldShift) & kHeldMask)
@@ -241,33 +241,35 @@ void Renderer::draw_picture(const FrameState& f, int width, int height, DebugVie
   // (More pixels of a frame shade their background inline: the kept one is the picture's.)
   if (matcap && debug == DebugView::None && !same_frame)
     variant |= matcap_background(f, block, records, width, height, variant);
-  // The MatCap tier: only the part of the screen where the objects' bounds lie runs the
-  // pass; the rest is the background alone (what the pass gives a line that meets no
-  // object's bounds, for a fraction of the cost), read from the kept background, or
-  // shaded inline where the view is new (a moving camera: one background per pixel, no
-  // pass of its own and no copy).
+  // Only the part of the screen where the objects' bounds lie runs the pass with their
+  // code; around it the same pass without it gives what a ray that meets no bound sees
+  // (the background, a fraction of the cost: llvmpipe pays for all of a pass's code in
+  // every pixel). The MatCap tier's background is read from the kept one, or shaded
+  // inline where the view is new (a moving camera: one background per pixel, no pass of
+  // its own and no copy).
   if (rects) {  // a few pixels: the pass alone, which gives a line that meets nothing its background
     draw_rects(variant, *rects, width, height);
     if (debug == DebugView::None) draw_bubbles(f, width, height);
     return;
   }
-  const PixelRect part = matcap && debug == DebugView::None ? objects_on_screen(records, block, width, height)
-                                                            : PixelRect{0, 0, width, height};
+  const PixelRect part = debug != DebugView::None || !background_pass_ ? PixelRect{0, 0, width, height}
+                         : matcap                 ? objects_on_screen(records, block, width, height)
+                                                  : objects_on_screen(f, block, width, height);
   const bool whole = part.x <= 0 && part.y <= 0 && part.x + part.w >= width && part.y + part.h >= height;
   glBindVertexArray(vao_);
   if (!whole) {
     // (Without the objects' code: one small program whatever the scene holds.)
-    const int v = (variant & ~(kDecals | kDroplets | kClouds | kCondensation)) | kMatCapBackgroundOnly;
-    auto& background = programs_[v];
-    if (!background) background = build_program(v);
-    glUseProgram(background->id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(part.x, part.y, part.w, part.h);
+    const int objects_code = kWaves | kFoam | kHaze | kDecals | kDroplets | kClouds | kCondensation | kReflections |
+                             (kHeldMask << kHeldShift);
+    draw_background_around((variant & ~objects_code) | kBackgroundOnly, part, width, height);
   }
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
   glUseProgram(program->id());
+  if (!whole) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(part.x, part.y, part.w, part.h);
+  }
   if (part.w > 0 && part.h > 0) glDrawArrays(GL_TRIANGLES, 0, 3);
   if (!whole) glDisable(GL_SCISSOR_TEST);
   // The rising bubbles over the picture (the MatCap tier's where its straight view sees them).
@@ -450,6 +452,23 @@ void Renderer::draw_rects(int variant, const std::vector<PixelRect>& rects, int 
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(), GL_STREAM_DRAW);
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(rects.size()));
   glBindVertexArray(vao_);
+}
+
+// The background variant over the picture less `part`: the bands below and above it
+// and those either side of it (GL's rows from the bottom), each in a scissor.
+void Renderer::draw_background_around(int variant, const PixelRect& part, int width, int height) {
+  auto& program = programs_[variant];
+  if (!program) program = build_program(variant);
+  glUseProgram(program->id());
+  glEnable(GL_SCISSOR_TEST);
+  const int top = part.y + part.h, right = part.x + part.w;
+  for (const PixelRect& band : {PixelRect{0, 0, width, part.y}, PixelRect{0, top, width, height - top},
+                                PixelRect{0, part.y, part.x, part.h}, PixelRect{right, part.y, width - right, part.h}}) {
+    if (band.w <= 0 || band.h <= 0) continue;
+    glScissor(band.x, band.y, band.w, band.h);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glDisable(GL_SCISSOR_TEST);
 }
 
 void Renderer::draw_bubbles(const FrameState& f, int width, int height) {

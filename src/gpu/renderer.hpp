@@ -37,8 +37,8 @@ struct PixelRect {
 // Where the frame's objects can show in a width x height picture of block b's camera: the
 // boxes around their search bounds (glasses' cylinders, the droplets' box, the clouds'
 // root boxes) projected, grown by two pixels; the whole picture when a box reaches behind
-// the eye. Outside it every line misses every object (the MatCap tier draws only the
-// background there).
+// the eye. Outside it every line misses every object (either tier draws only the
+// background there: Renderer's kBackgroundOnly).
 // `vessels`: the glasses' records as u_objects holds them (SceneTextures::records).
 PixelRect objects_on_screen(const std::vector<contract::ObjectRecord>& vessels, const contract::FrameBlock& b, int width,
                             int height);
@@ -128,6 +128,10 @@ class Renderer {
   // (tests and benchmarks compare the two).
   static constexpr int kMaxHeldObjects = 4;
   void set_held_objects(bool on) { held_objects_ = on; }
+  // The picture's pass runs with the objects' code only where they can show
+  // (objects_on_screen), the background pass around it. Off: the objects' pass over the
+  // whole picture (tests compare the two; the bench shows what it saves).
+  void set_background_pass(bool on) { background_pass_ = on; }
   // The floor's shadows and caustics: the photon budget of its light map, or off (the floor
   // takes the unoccluded light); draft_photons > 0: drafts while the scene moves, the full
   // budget once it holds still (SceneTextures::set_floor_light).
@@ -151,6 +155,7 @@ class Renderer {
                     const std::vector<PixelRect>* rects = nullptr);
   void draw_bubbles(const FrameState&, int width, int height);
   void draw_rects(int variant, const std::vector<PixelRect>&, int width, int height);
+  void draw_background_around(int variant, const PixelRect& part, int width, int height);
   // Adaptive supersampling: the fine x fine samples of the runs' pixels of a width x height
   // picture (core/output/refine's layout), drawn as tiles of the picture `fine` times as
   // wide and high, the pass over those pixels only: scene-linear light (`linear`), or
@@ -163,13 +168,14 @@ class Renderer {
   // number of held objects (0: the general path) from bit kHeldShift on.
   // kMatCap: the MatCap tier's pass (passes/matcap.frag.glsl) instead of the path pass.
   // kMatCapBackdrop: its background pass (what lies behind, into MatCapBackground);
-  // kMatCapCached: its picture pass reading that background; kMatCapBackgroundOnly: that
-  // background alone, tone-mapped (the picture outside the objects' part of the screen).
+  // kMatCapCached: its picture pass reading that background. kBackgroundOnly: either
+  // pass's picture where no object can show (outside objects_on_screen's part): what a
+  // ray that meets no object's bounds sees, without the objects' code.
   enum Variant {
     kWaves = 1, kFoam = 2, kDebug = 4, kImage = 8, kDecals = 16, kScreenCard = 32, kScreenBackground = 64,
     kSphereLights = 128, kPaintedSky = 256, kDroplets = 512, kMatCap = 1024, kMatCapBackdrop = 2048,
     kMatCapCached = 4096, kHeldShift = 13, kHeldMask = 7, kClouds = 1 << 16,  // (held objects: bits 13-15)
-    kCondensation = 1 << 17, kMatCapBackgroundOnly = 1 << 18,
+    kCondensation = 1 << 17, kBackgroundOnly = 1 << 18,
     // kPanorama: a glass's surroundings for env.reflections (gpu/reflection_panoramas);
     // kReflections: the picture looking its glasses' reflections up there.
     kPanorama = 1 << 19, kReflections = 1 << 20,
@@ -207,6 +213,7 @@ class Renderer {
   unsigned rect_vao_ = 0, rect_vbo_ = 0;
   unsigned vao_ = 0, ubo_ = 0;
   bool held_objects_ = true;
+  bool background_pass_ = true;
   bool moving_drafts_ = false;
   bool has_decals_ = false, has_condensation_ = false;  // the last frame's update found them
   Refined last_refined_;

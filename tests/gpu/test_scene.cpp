@@ -354,5 +354,32 @@ TEST(Variants, HeldObjectsDrawWhatTheGeneralPathDraws) {
   }
 }
 
+// Only the part of the screen where the objects can show runs the pass with their code;
+// the background pass around it must give what that pass gives a ray that meets nothing:
+// a pint (its head within the glass's bounds), the stout cut open close up, a glass
+// tipped and spilling, the flight, under an environment image, transparent (the alpha
+// too), and the MatCap tier.
+TEST(Variants, TheBackgroundPassDrawsWhatTheObjectsPassDraws) {
+  Gpu& g = gpu_instance();
+  const FrameState frames[] = {
+      scene_frame({"lager", "pint", {"render.supersample=1"}, {}}),
+      scene_frame({"stout", "nonic", {"render.supersample=1", "clip.enabled=true"}, {"eye=0,0.2,0.3", "target=0,0.14,0"}}),
+      timeline_frame("tilt-until-spill", 3.0),
+      make_frame(flight_scene(FlightView::AtAnAngle, {"render.supersample=1"})),
+      scene_frame({"lager", "pint", {"render.supersample=1", "env.mode=image", "env.image=bar"}, {}}),
+      scene_frame({"hefeweizen", "weizen", {"render.supersample=1", "render.transparent=true"}, {}}),
+      scene_frame({"lager", "pint", {"render.supersample=1", "render.tier=matcap"}, {}}),
+  };
+  for (const FrameState& f : frames) {
+    const Image split = g.renderer->render(f, 96, 96);
+    g.renderer->set_background_pass(false);
+    const Image whole = g.renderer->render(f, 96, 96);
+    g.renderer->set_background_pass(true);
+    int worst = 0;
+    for (size_t i = 0; i < split.rgba.size(); ++i) worst = std::max(worst, std::abs(int(split.rgba[i]) - int(whole.rgba[i])));
+    EXPECT_LE(worst, 1) << "the background pass differs from the objects' pass";
+  }
+}
+
 }  // namespace
 }  // namespace draught::test
