@@ -241,37 +241,30 @@ void Renderer::draw_picture(const FrameState& f, int width, int height, DebugVie
   // (More pixels of a frame shade their background inline: the kept one is the picture's.)
   if (matcap && debug == DebugView::None && !same_frame)
     variant |= matcap_background(f, block, records, width, height, variant);
-  // Only the part of the screen where the objects' bounds lie runs the pass with their
-  // code; around it the same pass without it gives what a ray that meets no bound sees
+  // Only the runs of the screen where the objects' bounds lie run the pass with their
+  // code; around them the same pass without it gives what a ray that meets no bound sees
   // (the background, a fraction of the cost: llvmpipe pays for all of a pass's code in
-  // every pixel). The MatCap tier's background is read from the kept one, or shaded
-  // inline where the view is new (a moving camera: one background per pixel, no pass of
-  // its own and no copy).
+  // every pixel). Each run is drawn in a scissor (as instanced rectangles the MatCap
+  // tier's droplets came out slower on llvmpipe). The MatCap tier's background is read
+  // from the kept one, or shaded inline where the view is new (a moving camera: one
+  // background per pixel, no pass of its own and no copy).
   if (rects) {  // a few pixels: the pass alone, which gives a line that meets nothing its background
     draw_rects(variant, *rects, width, height);
     if (debug == DebugView::None) draw_bubbles(f, width, height);
     return;
   }
-  const PixelRect part = debug != DebugView::None || !background_pass_ ? PixelRect{0, 0, width, height}
-                         : matcap                 ? objects_on_screen(records, block, width, height)
-                                                  : objects_on_screen(f, block, width, height);
-  const bool whole = part.x <= 0 && part.y <= 0 && part.x + part.w >= width && part.y + part.h >= height;
+  const ScreenParts parts = debug != DebugView::None || !background_pass_
+                                ? ScreenParts{{PixelRect{0, 0, width, height}}, {}}
+                            : matcap ? objects_on_screen(records, block, width, height)
+                                     : objects_on_screen(f, block, width, height);
   glBindVertexArray(vao_);
-  if (!whole) {
+  if (!parts.background.empty()) {
     // (Without the objects' code: one small program whatever the scene holds.)
     const int objects_code = kWaves | kFoam | kHaze | kDecals | kDroplets | kClouds | kCondensation | kReflections |
                              (kHeldMask << kHeldShift);
-    draw_background_around((variant & ~objects_code) | kBackgroundOnly, part, width, height);
+    draw_scissored((variant & ~objects_code) | kBackgroundOnly, parts.background);
   }
-  auto& program = programs_[variant];
-  if (!program) program = build_program(variant);
-  glUseProgram(program->id());
-  if (!whole) {
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(part.x, part.y, part.w, part.h);
-  }
-  if (part.w > 0 && part.h > 0) glDrawArrays(GL_TRIANGLES, 0, 3);
-  if (!whole) glDisable(GL_SCISSOR_TEST);
+  draw_scissored(variant, parts.objects);
   // The rising bubbles over the picture (the MatCap tier's where its straight view sees them).
   if (debug == DebugView::None) draw_bubbles(f, width, height);
 }
@@ -291,38 +284,87 @@ std::optional<glm::dvec2> on_screen(const contract::FrameBlock& b, const glm::ve
 
 }  // namespace
 
-PixelRect objects_on_screen(const FrameState& f, const contract::FrameBlock& b, int width, int height) {
+ScreenParts objects_on_screen(const FrameState& f, const contract::FrameBlock& b, int width, int height) {
   std::vector<contract::ObjectRecord> vessels;
   for (int i = 0; i < int(f.vessels.size()); ++i) vessels.push_back(pack_object(f, i));
   return objects_on_screen(vessels, b, width, height);
 }
 
-PixelRect objects_on_screen(const std::vector<contract::ObjectRecord>& vessels, const contract::FrameBlock& b, int width,
-                            int height) {
-  const PixelRect all{0, 0, width, height};
-  glm::dvec2 lo(1e30), hi(-1e30);
+ScreenParts objects_on_screen(const std::vector<contract::ObjectRecord>& vessels, const contract::FrameBlock& b,
+                              int width, int height) {
+  std::vector<PixelRect> boxes;  // each box's part of the picture
   bool behind = false;
   auto box = [&](const glm::vec3& a, const glm::vec3& c) {  // a box's corners
+    glm::dvec2 lo(1e30), hi(-1e30);
     for (int k = 0; k < 8; ++k) {
       const glm::vec3 p(k & 1 ? c.x : a.x, k & 2 ? c.y : a.y, k & 4 ? c.z : a.z);
       const auto s = on_screen(b, p, width, height);
       if (!s) behind = true;
       else lo = glm::min(lo, *s), hi = glm::max(hi, *s);
     }
+    if (behind || hi.x < lo.x) return;
+    // GL's rows count from the bottom; two pixels more each side for the rounding, then out
+    // to whole blocks of kScreenBlock pixels (a software rasterizer shades blocks of
+    // pixels: a run's edge through one shades it twice, once in each pass).
+    auto down = [](double v) { return std::floor(v / kScreenBlock) * kScreenBlock; };
+    auto up = [](double v) { return std::ceil(v / kScreenBlock) * kScreenBlock; };
+    const double x0 = std::max(0.0, down(lo.x - 2)), x1 = std::min(double(width), up(hi.x + 2));
+    const double y0 = std::max(0.0, down(height - hi.y - 2)), y1 = std::min(double(height), up(height - lo.y + 2));
+    if (x1 > x0 && y1 > y0) boxes.push_back({int(x0), int(y0), int(x1 - x0), int(y1 - y0)});
   };
   for (const contract::ObjectRecord& r : vessels) {  // the bounding cylinder of the search (object_span)
     const glm::vec3 base(r.bound_base), axis(r.bound_axis), top = base + r.bound_length * axis;
     const glm::vec3 grow = r.bound_radius * glm::sqrt(glm::max(glm::vec3(1.0f) - axis * axis, glm::vec3(0.0f)));
     box(glm::min(base, top) - grow, glm::max(base, top) + grow);
   }
-  if (b.droplet_count > 0) box(b.droplet_bound_lo, b.droplet_bound_hi);
+  // A droplet march is clipped to the droplets' box and to the spheres grown by the
+  // field's reach (droplet_sphere_span): each sphere's cube within the box.
+  for (int i = 0; i < b.droplet_count; ++i) {
+    const glm::vec4 s = b.droplet_spheres[i];
+    const float r = s.w + b.droplet_margin;
+    if (!(r > 0.0f)) continue;
+    const glm::vec3 lo = glm::max(glm::vec3(s) - r, b.droplet_bound_lo), hi = glm::min(glm::vec3(s) + r, b.droplet_bound_hi);
+    if (glm::all(glm::lessThanEqual(lo, hi))) box(lo, hi);
+  }
   for (int c = 0; c < b.cloud_count; ++c) box(glm::vec3(b.cloud_lo[c]), glm::vec3(b.cloud_hi[c]));
-  if (behind) return all;
-  if (hi.x < lo.x) return {0, 0, 0, 0};  // nothing to draw
-  // GL's rows count from the bottom; two pixels more each side for the rounding.
-  const int x0 = std::max(0, int(std::floor(lo.x)) - 2), x1 = std::min(width, int(std::ceil(hi.x)) + 2);
-  const int y0 = std::max(0, height - int(std::ceil(hi.y)) - 2), y1 = std::min(height, height - int(std::floor(lo.y)) + 2);
-  return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+  if (behind) return {{PixelRect{0, 0, width, height}}, {}};
+  // The union of the boxes' parts in bands between their top and bottom edges: in each, the
+  // boxes that span it give runs along the row, the gaps between them the background's; a
+  // band whose runs are the last band's extends them.
+  std::vector<int> ys = {0, height};
+  for (const PixelRect& r : boxes) ys.insert(ys.end(), {r.y, r.y + r.h});
+  std::sort(ys.begin(), ys.end());
+  ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
+  ScreenParts parts;
+  std::vector<std::pair<int, int>> last;  // the last band's runs
+  size_t last_objects = 0, last_background = 0;  // where its rects start in the lists
+  for (size_t k = 0; k + 1 < ys.size(); ++k) {
+    const int y = ys[k], h = ys[k + 1] - y;
+    std::vector<std::pair<int, int>> runs;
+    for (const PixelRect& r : boxes)
+      if (r.y <= y && r.y + r.h >= y + h) runs.push_back({r.x, r.x + r.w});
+    std::sort(runs.begin(), runs.end());
+    std::vector<std::pair<int, int>> merged;
+    for (const auto& run : runs)
+      if (!merged.empty() && run.first <= merged.back().second) merged.back().second = std::max(merged.back().second, run.second);
+      else merged.push_back(run);
+    if (k > 0 && merged == last) {
+      for (size_t i = last_objects; i < parts.objects.size(); ++i) parts.objects[i].h += h;
+      for (size_t i = last_background; i < parts.background.size(); ++i) parts.background[i].h += h;
+      continue;
+    }
+    last_objects = parts.objects.size();
+    last_background = parts.background.size();
+    int x = 0;
+    for (const auto& [x0, x1] : merged) {
+      if (x0 > x) parts.background.push_back({x, y, x0 - x, h});
+      parts.objects.push_back({x0, y, x1 - x0, h});
+      x = x1;
+    }
+    if (x < width) parts.background.push_back({x, y, width - x, h});
+    last = std::move(merged);
+  }
+  return parts;
 }
 
 bool Renderer::draw_reflections(const FrameState& f, contract::FrameBlock& block, int variant, bool same_frame) {
@@ -454,18 +496,15 @@ void Renderer::draw_rects(int variant, const std::vector<PixelRect>& rects, int 
   glBindVertexArray(vao_);
 }
 
-// The background variant over the picture less `part`: the bands below and above it
-// and those either side of it (GL's rows from the bottom), each in a scissor.
-void Renderer::draw_background_around(int variant, const PixelRect& part, int width, int height) {
+// The pass of `variant` over each rectangle in turn, its one triangle in a scissor.
+void Renderer::draw_scissored(int variant, const std::vector<PixelRect>& rects) {
+  if (rects.empty()) return;
   auto& program = programs_[variant];
   if (!program) program = build_program(variant);
   glUseProgram(program->id());
   glEnable(GL_SCISSOR_TEST);
-  const int top = part.y + part.h, right = part.x + part.w;
-  for (const PixelRect& band : {PixelRect{0, 0, width, part.y}, PixelRect{0, top, width, height - top},
-                                PixelRect{0, part.y, part.x, part.h}, PixelRect{right, part.y, width - right, part.h}}) {
-    if (band.w <= 0 || band.h <= 0) continue;
-    glScissor(band.x, band.y, band.w, band.h);
+  for (const PixelRect& r : rects) {
+    glScissor(r.x, r.y, r.w, r.h);
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
   glDisable(GL_SCISSOR_TEST);

@@ -34,15 +34,23 @@ class ReflectionPanoramas;
 struct PixelRect {
   int x = 0, y = 0, w = 0, h = 0;
 };
-// Where the frame's objects can show in a width x height picture of block b's camera: the
-// boxes around their search bounds (glasses' cylinders, the droplets' box, the clouds'
-// root boxes) projected, grown by two pixels; the whole picture when a box reaches behind
-// the eye. Outside it every line misses every object (either tier draws only the
-// background there: Renderer's kBackgroundOnly).
+// Where the frame's objects can show in a width x height picture of block b's camera:
+// `objects`, the union of the parts of the picture that the boxes around their search
+// bounds reach (a glass's cylinder, each droplet's sphere grown by the field's reach
+// within the droplets' box, a cloud's root box), projected, grown by two pixels and out to
+// whole blocks of kScreenBlock pixels, as runs along rows in bands between the boxes'
+// edges; `background`, the runs between them.
+// Together they cover the picture once. A box that reaches behind the eye makes it all
+// objects. Outside the objects' runs every line misses every object (either tier draws
+// only the background there: Renderer's kBackgroundOnly).
+constexpr int kScreenBlock = 4;
+struct ScreenParts {
+  std::vector<PixelRect> objects, background;
+};
 // `vessels`: the glasses' records as u_objects holds them (SceneTextures::records).
-PixelRect objects_on_screen(const std::vector<contract::ObjectRecord>& vessels, const contract::FrameBlock& b, int width,
-                            int height);
-PixelRect objects_on_screen(const FrameState&, const contract::FrameBlock& b, int width, int height);  // packs them
+ScreenParts objects_on_screen(const std::vector<contract::ObjectRecord>& vessels, const contract::FrameBlock& b,
+                              int width, int height);
+ScreenParts objects_on_screen(const FrameState&, const contract::FrameBlock& b, int width, int height);  // packs them
 
 // Debug views, declared in src/interface/constants.def (shared with the shaders).
 using contract::DebugView;
@@ -155,7 +163,7 @@ class Renderer {
                     const std::vector<PixelRect>* rects = nullptr);
   void draw_bubbles(const FrameState&, int width, int height);
   void draw_rects(int variant, const std::vector<PixelRect>&, int width, int height);
-  void draw_background_around(int variant, const PixelRect& part, int width, int height);
+  void draw_scissored(int variant, const std::vector<PixelRect>&);
   // Adaptive supersampling: the fine x fine samples of the runs' pixels of a width x height
   // picture (core/output/refine's layout), drawn as tiles of the picture `fine` times as
   // wide and high, the pass over those pixels only: scene-linear light (`linear`), or

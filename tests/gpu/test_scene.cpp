@@ -359,11 +359,12 @@ TEST(Variants, HeldObjectsDrawWhatTheGeneralPathDraws) {
   }
 }
 
-// Only the part of the screen where the objects can show runs the pass with their code;
-// the background pass around it must give what that pass gives a ray that meets nothing:
-// a pint (its head within the glass's bounds), the stout cut open close up, a glass
-// tipped and spilling, the flight, under an environment image, transparent (the alpha
-// too), and the MatCap tier.
+// Only the tiles of the screen where the objects can show run the pass with their code;
+// the background pass around them must give what that pass gives a ray that meets
+// nothing: a pint (its head within the glass's bounds), the stout cut open close up, a
+// glass tipped and spilling, the flight, under an environment image, transparent (the
+// alpha too), the droplets' stretched trail (each sphere's tiles), the molten gob and the
+// MatCap tier.
 TEST(Variants, TheBackgroundPassDrawsWhatTheObjectsPassDraws) {
   Gpu& g = gpu_instance();
   const FrameState frames[] = {
@@ -374,6 +375,8 @@ TEST(Variants, TheBackgroundPassDrawsWhatTheObjectsPassDraws) {
       scene_frame({"lager", "pint", {"render.supersample=1", "env.mode=image", "env.image=bar"}, {}}),
       scene_frame({"hefeweizen", "weizen", {"render.supersample=1", "render.transparent=true"}, {}}),
       scene_frame({"lager", "pint", {"render.supersample=1", "render.tier=matcap"}, {}}),
+      draught::timeline_frame(load_timeline("droplets-trail"), resolve_scene_objects({"droplets", "", {}, {}}), 1.0),
+      make_frame(resolve_scene_objects({"molten-gob", "", {"render.supersample=1"}, {}})),
   };
   for (const FrameState& f : frames) {
     const Image split = g.renderer->render(f, 96, 96);
