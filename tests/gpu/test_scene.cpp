@@ -359,12 +359,12 @@ TEST(Variants, HeldObjectsDrawWhatTheGeneralPathDraws) {
   }
 }
 
-// Only the tiles of the screen where the objects can show run the pass with their code;
+// Only the runs of the screen where the objects can show run the pass with their code;
 // the background pass around them must give what that pass gives a ray that meets
 // nothing: a pint (its head within the glass's bounds), the stout cut open close up, a
 // glass tipped and spilling, the flight, under an environment image, transparent (the
-// alpha too), the droplets' stretched trail (each sphere's tiles), the molten gob and the
-// MatCap tier.
+// alpha too), the droplets' stretched trail (each sphere's own runs), the molten gob and
+// the MatCap tier.
 TEST(Variants, TheBackgroundPassDrawsWhatTheObjectsPassDraws) {
   Gpu& g = gpu_instance();
   const FrameState frames[] = {
