@@ -237,7 +237,10 @@ void Renderer::draw_picture(const FrameState& f, int width, int height, DebugVie
   if (matcap) variant = (variant & ~(kWaves | kFoam | kHaze)) | kMatCap;
   // env.reflections: the glasses' surroundings first, from inside each (the full tier's).
   else if (debug == DebugView::None && draw_reflections(f, block, variant, same_frame)) variant |= kReflections;
-  const std::vector<contract::ObjectRecord> records = matcap ? textures_->records() : std::vector<contract::ObjectRecord>{};
+  // Where the objects can show is found from their records as uploaded this frame.
+  const bool parted = debug == DebugView::None && background_pass_;
+  const std::vector<contract::ObjectRecord> records =
+      matcap || parted ? textures_->records() : std::vector<contract::ObjectRecord>{};
   // (More pixels of a frame shade their background inline: the kept one is the picture's.)
   if (matcap && debug == DebugView::None && !same_frame)
     variant |= matcap_background(f, block, records, width, height, variant);
@@ -253,10 +256,8 @@ void Renderer::draw_picture(const FrameState& f, int width, int height, DebugVie
     if (debug == DebugView::None) draw_bubbles(f, width, height);
     return;
   }
-  const ScreenParts parts = debug != DebugView::None || !background_pass_
-                                ? ScreenParts{{PixelRect{0, 0, width, height}}, {}}
-                            : matcap ? objects_on_screen(records, block, width, height)
-                                     : objects_on_screen(f, block, width, height);
+  const ScreenParts parts =
+      parted ? objects_on_screen(records, block, width, height) : ScreenParts{{PixelRect{0, 0, width, height}}, {}};
   glBindVertexArray(vao_);
   if (!parts.background.empty()) {
     // (Without the objects' code: one small program whatever the scene holds.)
