@@ -339,24 +339,30 @@ int worst_level_difference(const Image& a, const Image& b) {
   return worst;
 }
 
+// Each frame drawn at 96 x 96 with one of the renderer's switches on and then off: the
+// same picture within one 8-bit level (`what` names the difference when it is not).
+void expect_the_same_either_way(const std::vector<FrameState>& frames, void (gpu::Renderer::*set)(bool),
+                                const char* what) {
+  Gpu& g = gpu_instance();
+  for (const FrameState& f : frames) {
+    const Image on = g.renderer->render(f, 96, 96);
+    (g.renderer.get()->*set)(false);
+    const Image off = g.renderer->render(f, 96, 96);
+    (g.renderer.get()->*set)(true);
+    EXPECT_LE(worst_level_difference(on, off), 1) << what;
+  }
+}
+
 // Scenes of a few objects are drawn with their records held per pixel; the general path
 // (records fetched where used) must give the same picture: one glass with waves, a head
 // and a cross-section, and the flight of four.
 TEST(Variants, HeldObjectsDrawWhatTheGeneralPathDraws) {
-  Gpu& g = gpu_instance();
-  const FrameState frames[] = {
+  expect_the_same_either_way({
       scene_frame({"lager", "pint", {"render.supersample=1"}, {}}),
       scene_frame({"stout", "nonic", {"render.supersample=1", "clip.enabled=true"}, {"eye=0,0.2,0.3", "target=0,0.14,0"}}),
       timeline_frame("shake-and-settle", 1.3),
       make_frame(flight_scene(FlightView::AtAnAngle, {"render.supersample=1"})),
-  };
-  for (const FrameState& f : frames) {
-    const Image fast = g.renderer->render(f, 96, 96);
-    g.renderer->set_held_objects(false);
-    const Image general = g.renderer->render(f, 96, 96);
-    g.renderer->set_held_objects(true);
-    EXPECT_LE(worst_level_difference(fast, general), 1) << "the held-objects variant differs from the general path";
-  }
+  }, &gpu::Renderer::set_held_objects, "the held-objects variant differs from the general path");
 }
 
 // Only the runs of the screen where the objects can show run the pass with their code;
@@ -366,8 +372,7 @@ TEST(Variants, HeldObjectsDrawWhatTheGeneralPathDraws) {
 // alpha too), the droplets' stretched trail (each sphere's own runs), the molten gob and
 // the MatCap tier.
 TEST(Variants, TheBackgroundPassDrawsWhatTheObjectsPassDraws) {
-  Gpu& g = gpu_instance();
-  const FrameState frames[] = {
+  expect_the_same_either_way({
       scene_frame({"lager", "pint", {"render.supersample=1"}, {}}),
       scene_frame({"stout", "nonic", {"render.supersample=1", "clip.enabled=true"}, {"eye=0,0.2,0.3", "target=0,0.14,0"}}),
       timeline_frame("tilt-until-spill", 3.0),
@@ -377,14 +382,7 @@ TEST(Variants, TheBackgroundPassDrawsWhatTheObjectsPassDraws) {
       scene_frame({"lager", "pint", {"render.supersample=1", "render.tier=matcap"}, {}}),
       draught::timeline_frame(load_timeline("droplets-trail"), resolve_scene_objects({"droplets", "", {}, {}}), 1.0),
       make_frame(resolve_scene_objects({"molten-gob", "", {"render.supersample=1"}, {}})),
-  };
-  for (const FrameState& f : frames) {
-    const Image split = g.renderer->render(f, 96, 96);
-    g.renderer->set_background_pass(false);
-    const Image whole = g.renderer->render(f, 96, 96);
-    g.renderer->set_background_pass(true);
-    EXPECT_LE(worst_level_difference(split, whole), 1) << "the background pass differs from the objects' pass";
-  }
+  }, &gpu::Renderer::set_background_pass, "the background pass differs from the objects' pass");
 }
 
 }  // namespace
