@@ -414,9 +414,21 @@ int Renderer::matcap_background(const FrameState& f, const contract::FrameBlock&
   // A transparent picture has no background; a screen's frames change without the block.
   if (f.params.render.transparent || f.screen.mode != ScreenMode::Off || !matcap_background_->usable()) return 0;
   // What the background depends on: the block (camera, size, surroundings), the
-  // environment image, and where the glasses stand (their contact on the floor).
-  std::vector<unsigned char> key(sizeof block + sizeof(void*));
-  std::memcpy(key.data(), &block, sizeof block);
+  // environment image, and where the glasses stand (their contact on the floor). Not the
+  // droplets, nor the floor's light map, whose rect follows them (the tier's backdrop has no
+  // traced shadows: seen_straight): droplets following a pointer keep the background whole.
+  contract::FrameBlock seen;
+  std::memcpy(&seen, &block, sizeof block);  // (the padding too: the key is the bytes)
+  seen.droplet_count = 0;
+  seen.droplet_kernel = 0;
+  seen.droplet_blend = seen.droplet_noise_amplitude = seen.droplet_noise_frequency = seen.droplet_lipschitz = 0.0f;
+  seen.droplet_margin = seen.droplet_ior = seen.droplet_roughness = 0.0f;
+  seen.droplet_absorption = seen.droplet_bound_lo = seen.droplet_bound_hi = glm::vec3(0.0f);
+  for (glm::vec4& s : seen.droplet_spheres) s = glm::vec4(0.0f);
+  seen.floor_light_on = 0;
+  seen.floor_light_origin = seen.floor_light_size = glm::vec2(0.0f);
+  std::vector<unsigned char> key(sizeof seen + sizeof(void*));
+  std::memcpy(key.data(), &seen, sizeof seen);
   const void* image = f.environment.image.get();
   std::memcpy(key.data() + sizeof block, &image, sizeof image);
   for (const contract::ObjectRecord& r : records) {

@@ -337,6 +337,50 @@ TEST(MatCapTier, TheBackgroundIsKeptOncePerHeldViewAndDrawnSmallerWhileMoving) {
   EXPECT_EQ(g.renderer->matcap_background().small_draws(), small_now);
 }
 
+// Droplets following a pointer change nothing behind them in the tier (its backdrop has
+// no traced shadows): the background kept for the view serves each frame as they move, not
+// drawn again (nor smaller, as for a moving camera), and it is the picture drawn with its
+// background inline.
+TEST(MatCapTier, MovingDropletsKeepTheBackground) {
+  Gpu& g = gpu_instance();
+  SceneRequest req;
+  req.preset = "droplets-seed";
+  FrameState f = matcap_tier(make_frame(resolve_scene_objects(req)));
+  f.camera.eye.y += 0.004f;  // a view no other test draws
+  ASSERT_FALSE(f.droplets.empty());
+  g.renderer->set_moving_drafts(true);
+  const int before = g.renderer->matcap_background().draws();
+  for (int i = 0; i < 3; ++i) g.renderer->draw(f, 48, 48);  // held: kept (the backdrop's light settles after a frame)
+  ASSERT_GT(g.renderer->matcap_background().draws(), before);
+  const int draws = g.renderer->matcap_background().draws(), small = g.renderer->matcap_background().small_draws();
+  FrameState moved = f;
+  for (int i = 1; i <= 4; ++i) {
+    for (DropletSphere& s : moved.droplets.front().field.spheres) s.centre.x += 0.004;
+    g.renderer->draw(moved, 48, 48);
+  }
+  g.renderer->set_moving_drafts(false);
+  EXPECT_EQ(g.renderer->matcap_background().draws(), draws);
+  EXPECT_EQ(g.renderer->matcap_background().small_draws(), small);
+  // (render draws at its own supersampled size: the kept background of f's view, then the
+  // moved droplets over it; against them over a background drawn inline, after another view.)
+  g.renderer->render(f, 48, 48);
+  g.renderer->render(f, 48, 48);
+  const Image kept = g.renderer->render(moved, 48, 48);
+  FrameState other = moved;
+  other.camera.eye.x += 0.003f;
+  g.renderer->render(other, 48, 48);
+  const Image inline_picture = g.renderer->render(moved, 48, 48);
+  int worst = 0;
+  long differ = 0;
+  for (size_t i = 0; i < kept.rgba.size(); ++i) {
+    const int d = std::abs(int(kept.rgba[i]) - int(inline_picture.rgba[i]));
+    worst = std::max(worst, d);
+    differ += d > 0;
+  }
+  std::printf("moved droplets over the kept background against inline: worst %d levels, %ld values differ\n", worst, differ);
+  EXPECT_LE(worst, 1);
+}
+
 // Every matcap.* number at its minimum and its maximum: a picture with no black hole (a NaN
 // shows as black). (matcap.tint black is a black glass body, rightly.)
 TEST(MatCapTier, ExtremeParametersDrawAPicture) {
