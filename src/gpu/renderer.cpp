@@ -175,7 +175,9 @@ void Renderer::draw_picture(const FrameState& f, int width, int height, DebugVie
   const bool same_frame = rects != nullptr;
   if (!same_frame) {
     if (matcap) matcap_->update(f);  // a bake or a read only when its inputs change
-    textures_->update(f, width, height);  // only rows that changed; the floor's light when its inputs did
+    // Only rows that changed; the floor's light when its inputs did, and never for the
+    // MatCap tier, which does not read it.
+    textures_->update(f, width, height, !matcap);
     has_decals_ = decals_->update(f);     // the images when they change, arc rows when a glass does
     // Beads and fog: a band when its glass's condensation changed.
     has_condensation_ = condensation_->update(f);
@@ -415,8 +417,8 @@ int Renderer::matcap_background(const FrameState& f, const contract::FrameBlock&
   if (f.params.render.transparent || f.screen.mode != ScreenMode::Off || !matcap_background_->usable()) return 0;
   // What the background depends on: the block (camera, size, surroundings), the
   // environment image, and where the glasses stand (their contact on the floor). Not the
-  // droplets, nor the floor's light map, whose rect follows them (the tier's backdrop has no
-  // traced shadows: seen_straight): droplets following a pointer keep the background whole.
+  // droplets (the tier's backdrop has no traced shadows: seen_straight; nor has the block
+  // a floor light map in this tier): droplets following a pointer keep the background whole.
   contract::FrameBlock seen;
   std::memcpy(&seen, &block, sizeof block);  // (the padding too: the key is the bytes)
   seen.droplet_count = 0;
@@ -425,8 +427,6 @@ int Renderer::matcap_background(const FrameState& f, const contract::FrameBlock&
   seen.droplet_margin = seen.droplet_ior = seen.droplet_roughness = 0.0f;
   seen.droplet_absorption = seen.droplet_bound_lo = seen.droplet_bound_hi = glm::vec3(0.0f);
   for (glm::vec4& s : seen.droplet_spheres) s = glm::vec4(0.0f);
-  seen.floor_light_on = 0;
-  seen.floor_light_origin = seen.floor_light_size = glm::vec2(0.0f);
   std::vector<unsigned char> key(sizeof seen + sizeof(void*));
   std::memcpy(key.data(), &seen, sizeof seen);
   const void* image = f.environment.image.get();

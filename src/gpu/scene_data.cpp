@@ -377,7 +377,7 @@ void SceneTextures::allocate(int rows) {
   knots_.clear();
 }
 
-void SceneTextures::update(const FrameState& f, int width, int height) {
+void SceneTextures::update(const FrameState& f, int width, int height, bool floor_light) {
   const int n = int(f.vessels.size());
   if (n > contract::kMaxSceneObjects)
     throw std::runtime_error("the scene has " + std::to_string(n) + " objects; the renderer draws at most " +
@@ -408,7 +408,9 @@ void SceneTextures::update(const FrameState& f, int width, int height) {
       ++knot_uploads_;
     }
   }
-  update_floor_light(f);
+  floor_read_ = floor_light;
+  if (floor_light) update_floor_light(f);
+  else floor_computed_ = floor_uploaded_ = false;
   update_backdrop_light(f, backdrop_light_texel(f, width, height));
   update_environment(f);
 }
@@ -598,7 +600,8 @@ const FloorLightMap& SceneTextures::floor_rect() const {
 }
 
 void SceneTextures::describe_floor_light(contract::FrameBlock& b) const {
-  const FloorLightMap& m = floor_rect();
+  static const FloorLightMap none;
+  const FloorLightMap& m = floor_read_ ? floor_rect() : none;
   b.floor_light_on = m.empty() ? 0 : 1;
   b.floor_light_origin = glm::vec2(m.origin);
   b.floor_light_size = glm::vec2(m.size);

@@ -381,6 +381,28 @@ TEST(MatCapTier, MovingDropletsKeepTheBackground) {
   EXPECT_LE(worst, 1);
 }
 
+// The tier reads no floor light map (its backdrop has no traced shadows): a frame whose
+// droplets moved traces none, and its block says none; the full tier's next frame does.
+TEST(MatCapTier, TracesNoFloorLight) {
+  Gpu& g = gpu_instance();
+  SceneRequest req;
+  req.preset = "droplets-seed";
+  FrameState f = matcap_tier(make_frame(resolve_scene_objects(req)));
+  ASSERT_FALSE(f.droplets.empty());
+  for (int i = 1; i <= 3; ++i) {
+    for (DropletSphere& s : f.droplets.front().field.spheres) s.centre.y += 0.003;
+    g.renderer->draw(f, 32, 32);
+    EXPECT_FALSE(g.renderer->scene_textures().floor_light_computed()) << "frame " << i;
+    contract::FrameBlock b{};
+    b.floor_light_on = 1;
+    g.renderer->scene_textures().describe_floor_light(b);
+    EXPECT_EQ(b.floor_light_on, 0);
+  }
+  f.params.render.tier = int(RenderTier::Full);
+  g.renderer->draw(f, 32, 32);
+  EXPECT_TRUE(g.renderer->scene_textures().floor_light_computed()) << "the full tier's frame traces its floor's light";
+}
+
 // Every matcap.* number at its minimum and its maximum: a picture with no black hole (a NaN
 // shows as black). (matcap.tint black is a black glass body, rightly.)
 TEST(MatCapTier, ExtremeParametersDrawAPicture) {
