@@ -8,7 +8,9 @@
 //   10 % (lines along a wall near the silhouette are ill-conditioned in float);
 // - the picture: finite, the glass seen, the drink's colour in it; a still frame bakes and
 //   uploads its MatCap once; the MatCap follows the surroundings; droplets and a hot gob
-//   are drawn (lenses, the gob glowing), only where they are; so are beads and fog.
+//   are drawn (lenses, the gob glowing), only where they are; so are beads and fog;
+// - the background kept once per held view (smaller while the view moves), kept while
+//   droplets move; no floor light map traced for the tier.
 #include "core/scene/camera.hpp"
 #include "core/vessel/view_thickness.hpp"
 #include "gpu/matcap_texture.hpp"
@@ -204,67 +206,6 @@ TEST(MatCapTier, DrawsCondensation) {
   EXPECT_GT(differ, kS * kS / 10);
   EXPECT_EQ(beyond, 0);
   EXPECT_GT(rough_cold, 2.0 * rough_dry);
-}
-
-// The runs of the screen either tier runs its pass in (objects_on_screen; the rest is
-// the background alone) hold every pixel whose camera ray meets a glass by the reference
-// intersector; with the background's they cover the picture once; for a single pint they
-// are well short of the whole picture, and for the flight straight on the gaps between
-// the glasses are background.
-TEST(MatCapTier, ThePassRunsWhereTheObjectsAre) {
-  struct View {
-    const char* name;
-    FrameState f;
-    int w, h;
-  };
-  auto pixels = [](const std::vector<gpu::PixelRect>& rects) {
-    long n = 0;
-    for (const gpu::PixelRect& r : rects) n += long(r.w) * r.h;
-    return n;
-  };
-  for (const View& view : {View{"pint", pint_front(), 96, 96}, View{"pint from above", pint_above(), 80, 64},
-                           View{"flight at an angle", flight_angle(), 120, 90},
-                           View{"flight straight on", make_frame(flight_scene()), 160, 60}}) {
-    const contract::FrameBlock block = gpu::pack_frame_block(view.f, view.w, view.h, gpu::DebugView::None);
-    const gpu::ScreenParts parts = gpu::objects_on_screen(view.f, block, view.w, view.h);
-    std::vector<int> in_objects(size_t(view.w) * view.h, 0), in_any(size_t(view.w) * view.h, 0);
-    for (const auto* list : {&parts.objects, &parts.background})
-      for (const gpu::PixelRect& r : *list)
-        for (int y = r.y; y < r.y + r.h; ++y)
-          for (int x = r.x; x < r.x + r.w; ++x) {
-            ASSERT_TRUE(x >= 0 && x < view.w && y >= 0 && y < view.h) << view.name;
-            ++in_any[size_t(y) * view.w + x];
-            in_objects[size_t(y) * view.w + x] += list == &parts.objects;
-          }
-    long twice = 0, never = 0;
-    for (int k : in_any) twice += k > 1, never += k == 0;
-    EXPECT_EQ(twice, 0) << view.name;
-    EXPECT_EQ(never, 0) << view.name;
-    const SceneGeometry geo = scene_geometry(view.f);
-    const CameraBasis cam = camera_basis(view.f, view.w, view.h);
-    long hits = 0, outside = 0;
-    for (int y = 0; y < view.h; ++y)
-      for (int x = 0; x < view.w; ++x) {
-        const Hit h = first_hit(geo, camera_ray(cam, x + 0.5, y + 0.5, view.w, view.h));
-        if (h.object < 0) continue;
-        ++hits;
-        const int gy = view.h - 1 - y;  // GL's rows from the bottom
-        outside += in_objects[size_t(gy) * view.w + x] == 0;
-      }
-    std::printf("[%s] %ld pixels on glasses, %ld outside the pass's runs (%ld of %d pixels in %zu rects; background %zu "
-                "rects)\n",
-                view.name, hits, outside, pixels(parts.objects), view.w * view.h, parts.objects.size(),
-                parts.background.size());
-    EXPECT_GT(hits, 0) << view.name;
-    EXPECT_EQ(outside, 0) << view.name;
-  }
-  const FrameState pint = pint_front();
-  const gpu::ScreenParts part = gpu::objects_on_screen(pint, gpu::pack_frame_block(pint, 96, 96, gpu::DebugView::None), 96, 96);
-  EXPECT_LT(pixels(part.objects), 96 * 96 * 2 / 3);
-  const FrameState flight = make_frame(flight_scene());
-  const gpu::ScreenParts gaps =
-      gpu::objects_on_screen(flight, gpu::pack_frame_block(flight, 160, 60, gpu::DebugView::None), 160, 60);
-  EXPECT_GE(gaps.objects.size(), 4u) << "the flight's glasses in one run";
 }
 
 TEST(MatCapTier, AStillFrameBakesAndUploadsOnce) {
