@@ -257,10 +257,10 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
 #endif
     if (path.medium == MEDIUM_AIR) {
       vec3 out_w = vec3(1.0);
-      if (h.m == M_LIQUID_SURFACE) {
+      if (h.m == M_LIQUID_SURFACE && !transparent) {  // (a transparent picture looks up no surroundings)
         vec3 back;
         out_w = surface_reflection_out(v, g, pl, to_local_dir(v, r), back);
-        if (!transparent) path.radiance += path.thr * c.F * back * surround_mean();
+        path.radiance += path.thr * c.F * back * surround_mean();
       }
       if (!transparent && !into_wall) look = Look(p, r, path.thr * c.F * out_w, rough, true, true, h.obj);
     } else {
