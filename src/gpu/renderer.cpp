@@ -430,7 +430,7 @@ int Renderer::matcap_background(const FrameState& f, const contract::FrameBlock&
   std::vector<unsigned char> key(sizeof seen + sizeof(void*));
   std::memcpy(key.data(), &seen, sizeof seen);
   const void* image = f.environment.image.get();
-  std::memcpy(key.data() + sizeof block, &image, sizeof image);
+  std::memcpy(key.data() + sizeof seen, &image, sizeof image);
   for (const contract::ObjectRecord& r : records) {
     const float part[] = {r.bound_base.x, r.bound_base.y, r.bound_base.z, r.bound_axis.x, r.bound_axis.y, r.bound_axis.z,
                           r.bound_radius, r.bound_length, r.foot_radius, r.clip_world_normal.x, r.clip_world_normal.y,
