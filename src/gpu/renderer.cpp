@@ -175,8 +175,8 @@ void Renderer::draw_picture(const FrameState& f, int width, int height, DebugVie
   const bool same_frame = rects != nullptr;
   if (!same_frame) {
     if (matcap) matcap_->update(f);  // a bake or a read only when its inputs change
-    // Only rows that changed; the floor's light when its inputs did, and never for the
-    // MatCap tier, which does not read it.
+    // Only rows that changed; the floor's and the backdrop's light maps when their inputs
+    // did, and never for the MatCap tier, which reads neither.
     textures_->update(f, width, height, !matcap);
     has_decals_ = decals_->update(f);     // the images when they change, arc rows when a glass does
     // Beads and fog: a band when its glass's condensation changed.

@@ -377,7 +377,7 @@ void SceneTextures::allocate(int rows) {
   knots_.clear();
 }
 
-void SceneTextures::update(const FrameState& f, int width, int height, bool floor_light) {
+void SceneTextures::update(const FrameState& f, int width, int height, bool light_maps) {
   const int n = int(f.vessels.size());
   if (n > contract::kMaxSceneObjects)
     throw std::runtime_error("the scene has " + std::to_string(n) + " objects; the renderer draws at most " +
@@ -408,10 +408,13 @@ void SceneTextures::update(const FrameState& f, int width, int height, bool floo
       ++knot_uploads_;
     }
   }
-  floor_read_ = floor_light;
-  if (floor_light) update_floor_light(f);
-  else floor_computed_ = floor_uploaded_ = false;
-  update_backdrop_light(f, backdrop_light_texel(f, width, height));
+  maps_read_ = light_maps;
+  if (light_maps) {
+    update_floor_light(f);
+    update_backdrop_light(f, backdrop_light_texel(f, width, height));
+  } else {
+    floor_computed_ = floor_uploaded_ = backdrop_computed_ = false;
+  }
   update_environment(f);
 }
 
@@ -458,7 +461,8 @@ const BackdropLightMap& SceneTextures::backdrop_light() const {
 }
 
 void SceneTextures::describe_backdrop_light(contract::FrameBlock& b) const {
-  const BackdropLightMap& m = backdrop_light();
+  static const BackdropLightMap none;
+  const BackdropLightMap& m = maps_read_ ? backdrop_light() : none;
   b.backdrop_light_on = m.empty() ? 0 : 1;
   b.backdrop_light_origin = glm::vec2(m.origin);
   b.backdrop_light_size = glm::vec2(m.size);
@@ -601,7 +605,7 @@ const FloorLightMap& SceneTextures::floor_rect() const {
 
 void SceneTextures::describe_floor_light(contract::FrameBlock& b) const {
   static const FloorLightMap none;
-  const FloorLightMap& m = floor_read_ ? floor_rect() : none;
+  const FloorLightMap& m = maps_read_ ? floor_rect() : none;
   b.floor_light_on = m.empty() ? 0 : 1;
   b.floor_light_origin = glm::vec2(m.origin);
   b.floor_light_size = glm::vec2(m.size);

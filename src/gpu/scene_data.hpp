@@ -56,10 +56,12 @@ class SceneTextures {
   // Brings both textures up to the frame: rows that differ from what they hold are
   // uploaded, nothing else. Throws for more than contract::kMaxSceneObjects objects.
   // width x height: the picture's size, which sets the backdrop light map's texel.
-  // floor_light: whether the frame's pass reads the floor's light map (the MatCap tier's
-  // backdrop has no traced shadows): without, none is traced or uploaded, the block says
-  // none, and the maps kept wait for a frame that reads them.
-  void update(const FrameState&, int width, int height, bool floor_light = true);
+  // light_maps: whether the frame's pass reads the floor's and the backdrop's light maps
+  // (the MatCap tier's backdrop has no traced shadows and takes the rig's light per
+  // pixel): without, neither is computed or uploaded (the backdrop's took 0.2 s on two
+  // cores for a still after each change), the block says none, and the maps kept wait for
+  // a frame that reads them.
+  void update(const FrameState&, int width, int height, bool light_maps = true);
   // Binds the textures to their units (generated: kObjectSampler, kKnotsSampler,
   // kFloorLightSampler).
   void bind() const;
@@ -167,7 +169,7 @@ class SceneTextures {
   bool backdrop_drafts_ = false;
   std::vector<double> backdrop_last_inputs_;  // the picture's own map's inputs at the last update
   bool floor_on_ = true, floor_computed_ = false, floor_uploaded_ = false;
-  bool floor_read_ = true;  // the last update's frame reads the map (update's floor_light)
+  bool maps_read_ = true;  // the last update's frame reads the light maps (update's light_maps)
   int draft_photons_ = 0;
   int refine_batch_photons_ = 0;   // 0: the draft's
   double refine_ms_per_frame_ = 0;  // 0: one batch a frame

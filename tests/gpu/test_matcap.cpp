@@ -10,7 +10,7 @@
 //   uploads its MatCap once; the MatCap follows the surroundings; droplets and a hot gob
 //   are drawn (lenses, the gob glowing), only where they are; so are beads and fog;
 // - the background kept once per held view (smaller while the view moves), kept while
-//   droplets move; no floor light map traced for the tier.
+//   droplets move; no light map (the floor's, the backdrop's) computed for the tier.
 #include "core/scene/camera.hpp"
 #include "core/vessel/view_thickness.hpp"
 #include "gpu/matcap_texture.hpp"
@@ -322,26 +322,34 @@ TEST(MatCapTier, MovingDropletsKeepTheBackground) {
   EXPECT_LE(worst, 1);
 }
 
-// The tier reads no floor light map (its backdrop has no traced shadows): a frame whose
-// droplets moved traces none, and its block says none; the full tier's next frame does.
-TEST(MatCapTier, TracesNoFloorLight) {
+// The tier reads no light map (its backdrop has no traced shadows and takes the rig's
+// light per pixel): a frame whose droplets moved traces no floor light, one whose light
+// changed computes no backdrop light, and the block says there are none; the full tier's
+// next frame computes both.
+TEST(MatCapTier, ComputesNoLightMaps) {
   Gpu& g = gpu_instance();
   SceneRequest req;
   req.preset = "droplets-seed";
   FrameState f = matcap_tier(make_frame(resolve_scene_objects(req)));
   ASSERT_FALSE(f.droplets.empty());
+  ASSERT_FALSE(f.lights.lights.empty());
   for (int i = 1; i <= 3; ++i) {
     for (DropletSphere& s : f.droplets.front().field.spheres) s.centre.y += 0.003;
+    f.lights.lights.front().radiance *= 1.01;
     g.renderer->draw(f, 32, 32);
     EXPECT_FALSE(g.renderer->scene_textures().floor_light_computed()) << "frame " << i;
+    EXPECT_FALSE(g.renderer->scene_textures().backdrop_light_computed()) << "frame " << i;
     contract::FrameBlock b{};
-    b.floor_light_on = 1;
+    b.floor_light_on = b.backdrop_light_on = 1;
     g.renderer->scene_textures().describe_floor_light(b);
+    g.renderer->scene_textures().describe_backdrop_light(b);
     EXPECT_EQ(b.floor_light_on, 0);
+    EXPECT_EQ(b.backdrop_light_on, 0);
   }
   f.params.render.tier = int(RenderTier::Full);
   g.renderer->draw(f, 32, 32);
   EXPECT_TRUE(g.renderer->scene_textures().floor_light_computed()) << "the full tier's frame traces its floor's light";
+  EXPECT_TRUE(g.renderer->scene_textures().backdrop_light_computed()) << "the full tier's frame computes its backdrop's light";
 }
 
 // Every matcap.* number at its minimum and its maximum: a picture with no black hole (a NaN
