@@ -75,6 +75,7 @@ set(DRAUGHT_CORE_SOURCES
   src/core/io/temporaries.cpp
   src/core/io/process.cpp
   src/core/io/video_source.cpp
+  src/core/output/cutout.cpp
   src/core/output/refine.cpp
   src/core/output/resolve.cpp
   src/core/text/echo.cpp

@@ -10,6 +10,7 @@
 #include "output.hpp"
 
 #include "core/io/files.hpp"
+#include "core/output/cutout.hpp"
 #include "core/params/preset.hpp"
 #include "core/params/timeline.hpp"
 #include "core/sim/scene_simulation.hpp"
@@ -189,7 +190,9 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
       explain_size_error(e, req, base.params.render.supersample);
     }
     if (encoder) encoder->write(img);
-    else write_png(sequence->folder() / SequenceFolder::frame_name(i), img);
+    else
+      write_png(sequence->folder() / SequenceFolder::frame_name(i),
+                png_picture(img, play.sim().frame().params.render.transparent));
     if (progress)
       show_progress(i + 1, frames, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
                     i + 1 == frames);

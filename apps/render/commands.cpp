@@ -6,6 +6,7 @@
 
 #include "core/environment/environment_bake.hpp"
 #include "core/io/files.hpp"
+#include "core/output/cutout.hpp"
 #include "core/io/hdr_image.hpp"
 #include "core/params/json_input.hpp"
 #include "core/text/echo.hpp"
@@ -163,7 +164,7 @@ int render_still(const RenderRequest& req, const FrameState& frame, const std::f
       std::fprintf(stderr, "  of which %ld pixels (%.1f %%) drawn again at %d x %d samples: %.1f ms\n", r.pixels,
                    100.0 * double(r.pixels) / (double(req.width) * req.height), r.samples, r.samples, r.ms);
   }
-  write_still(dest, out, img);
+  write_still(dest, out, png_picture(img, frame.params.render.transparent));
   return 0;
 }
 

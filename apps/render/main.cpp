@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
   render->add_option("--debug", debug,
                      "Write a debug view instead: depth, normal, material, or cost (intersection tests per pixel)");
   render->add_option("--tonemap", tonemap, "Output transform: none or aces");
-  render->add_flag("--transparent", transparent, "Transparent background, premultiplied alpha");
+  render->add_flag("--transparent", transparent, "Transparent background: the objects cut out (PNG: straight alpha; the floor is left out)");
   render->add_option("--supersample", supersample, "Anti-aliasing: samples per axis (1-4)");
   render->add_option("--adaptive", adaptive,
                      "Adaptive anti-aliasing: samples per axis where a pixel's samples disagree, fine detail and "

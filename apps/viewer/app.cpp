@@ -10,6 +10,7 @@
 #include "window.hpp"
 
 #include "core/io/files.hpp"
+#include "core/output/cutout.hpp"
 #include "core/scene/frame.hpp"
 #include "core/io/image.hpp"
 #include "core/input/combined.hpp"
@@ -659,7 +660,7 @@ std::string Viewer::save_picture(const std::filesystem::path& out, int width, in
   interactive(true);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());  // as the CLI does
-  write_png(out, img);
+  write_png(out, png_picture(img, sim_->frame().params.render.transparent));
   char text[256];
   std::snprintf(text, sizeof text, "saved %s (%d x %d, %.1f s)", out.string().c_str(), img.width, img.height,
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());

@@ -4,6 +4,7 @@
 // text. The page holds a scene of objects (one glass for a drink preset, several for a
 // scene preset); input drives the selected one and the panel edits it.
 #include "core/io/files.hpp"
+#include "core/output/cutout.hpp"
 #include "core/io/image.hpp"
 #include "core/scene/frame.hpp"
 #include "core/scene/motion.hpp"
@@ -771,7 +772,7 @@ EMSCRIPTEN_KEEPALIVE const char* draught_save_picture(int width, int height) {
     }
     still(false);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    saved = encode_png(img);
+    saved = encode_png(png_picture(img, f.params.render.transparent));
     return answer_json(json{{"error", ""},
                             {"bytes", reinterpret_cast<std::uintptr_t>(saved.data())},
                             {"size", saved.size()},

@@ -345,7 +345,7 @@ void main() {
   if (frame.transparent != 0) {
     float m = min(thr.r, min(thr.g, thr.b));
     alpha = clamp(1.0 - m, 0.0, 1.0);
-    radiance += (thr - vec3(m)) * sky_light();
+    radiance += (thr - vec3(m)) * cutout_light();
   } else {
 #if defined(MATCAP_CACHED) && defined(MATCAP_CACHED_SMALL)
     // Drawn smaller while things move (MatCapBackground::kMovingScale), read between its texels.

@@ -477,7 +477,7 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
         if (transparent) {
           float m = min(path.thr.r, min(path.thr.g, path.thr.b));
           see_through = m;
-          path.radiance += (path.thr - vec3(m)) * sky_light();
+          path.radiance += (path.thr - vec3(m)) * cutout_light();
           look.w = vec3(0.0);
         } else if (!in_events && path.medium != MEDIUM_AIR) {
           // Out of events, a path in glass or a drink (held in a rim or a wall by total

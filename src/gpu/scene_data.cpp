@@ -4,6 +4,7 @@
 
 #include "core/foam/head_volume.hpp"
 #include "core/liquid/haze.hpp"
+#include "core/output/cutout.hpp"
 #include "core/scene/camera.hpp"
 #include "gpu/condensation_textures.hpp"
 #include "gpu/decal_textures.hpp"
@@ -56,7 +57,7 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
   b.sweep_z_curve = float(f.backdrop.z_curve);
   b.sweep_radius = float(f.backdrop.radius);
   b.sweep_albedo = glm::vec3(f.backdrop.sweep_albedo);
-  b.sky_light = glm::vec3(f.environment.sky.at({0, 1, 0}) / 3.14159265358979);
+  b.cutout_light = glm::vec3(cutout_light(f));
   for (int i = 0; i < 9; ++i) b.surround_sh[i] = {glm::vec3(f.environment.surround.coef[size_t(i)]), 0.0f};
   if (const PaperBounceMap* m = f.environment.paper_bounce.get(); m && !m->empty()) {
     b.paper_bounce_rect = glm::vec4(glm::vec2(m->origin), glm::vec2(m->size));

@@ -208,10 +208,17 @@ TEST_F(Render, TransparentBackgroundHasZeroAlpha) {
   // With it, the corners (no glass there) are fully transparent, the glass is not.
   for (auto [x, y] : {std::pair{0, 0}, std::pair{31, 0}, std::pair{0, 31}, std::pair{31, 31}}) {
     EXPECT_EQ(c.px(x, y)[3], 0) << "corner " << x << "," << y;
-    // Premultiplied: colour cannot exceed alpha.
     EXPECT_EQ(c.px(x, y)[0], 0) << "corner " << x << "," << y;
   }
   EXPECT_GT(c.px(16, 16)[3], 0) << "the glass in the middle is fully transparent";
+  // The lager in the file is gold, as in the opaque picture: straight alpha (what a PNG
+  // holds), its colour lit by the studio behind it. (It was nearly black: premultiplied
+  // samples lit by the studio's dark ceiling, shown by every viewer as straight.)
+  const std::uint8_t* lager = c.px(16, 18);
+  EXPECT_GT(lager[3], 200) << "the drink lets most light through unchanged";
+  EXPECT_GT(lager[0], 150) << "the lager is dark: " << int(lager[0]) << " " << int(lager[1]) << " " << int(lager[2]);
+  EXPECT_GT(lager[0], lager[2] + 80) << "the lager is not gold";
+  EXPECT_NEAR(lager[0], o.px(16, 18)[0], 30) << "the lager's red differs from the opaque picture's";
 }
 
 TEST_F(Render, VerboseSaysWhatWasUsed) {

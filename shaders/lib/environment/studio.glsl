@@ -105,8 +105,8 @@ vec3 surround_irradiance(vec3 n) { return sh_irradiance(g_surround_sh, n); }
 // Its mean radiance over the sphere (as sky_mean).
 vec3 surround_mean() { return g_surround_sh[0] * (0.282095 / PI); }
 
-// The diffuse radiance that gives a surface facing up the sky's irradiance (the heads'
-// and the haze's even light).
-vec3 sky_light() { return frame.sky_light; }
+// The even light behind a transparent picture's objects (core/output/cutout): what lights
+// the colour a path's throughput keeps beyond what alpha lets through.
+vec3 cutout_light() { return frame.cutout_light; }
 
 #endif  // LIB_ENVIRONMENT_STUDIO_GLSL

@@ -91,13 +91,6 @@ glm::dvec3 mean_radiance(const SkyIrradiance& s) {
 
 namespace {
 
-// The backdrop as it lights the scene: a transparent picture draws no floor, so none lights.
-BackdropSurface drawn_backdrop(const SceneParams& p, const BackdropSurface& backdrop) {
-  BackdropSurface drawn = backdrop;
-  drawn.present = backdrop.present && !p.render.transparent;
-  return drawn;
-}
-
 // A point's view differs from the centre's by the backdrop's share, taken on a coarser grid
 // than the surround's (16 x 32: the paper lit by the surround already converged, so one
 // pass) at both.
@@ -109,7 +102,7 @@ SkyIrradiance environment_seen_from(const EnvironmentFrame& f, const SceneParams
                                     const BackdropSurface& backdrop, const glm::dvec3& at, const LightPasses& passes) {
   SkyIrradiance there = f.media.surround;  // (without a backdrop both shares are zero)
   const SkyIrradiance moved =
-      backdrop_share(Studio(p), rig, drawn_backdrop(p, backdrop), *f.paper_bounce, at, kSeenFromRows, passes);
+      backdrop_share(Studio(p), rig, backdrop, *f.paper_bounce, at, kSeenFromRows, passes);
   for (size_t k = 0; k < there.coef.size(); ++k) there.coef[k] += moved.coef[k] - f.centre_share.coef[k];
   return there;
 }
@@ -120,11 +113,12 @@ EnvironmentFrame environment_frame(const SceneParams& p, const LightRig& rig, co
   EnvironmentFrame f;
   const Studio studio(p);
   f.sky = sky_irradiance(studio);
-  const BackdropSurface drawn = drawn_backdrop(p, backdrop);
-  f.paper_bounce = std::make_shared<const PaperBounceMap>(paper_bounce_map(rig, drawn, f.sky, rig.aim));
-  f.surround = surround_irradiance(studio, f.sky, rig, drawn, *f.paper_bounce, rig.aim);
+  // (A transparent picture's too: the studio lights its objects as it lights the opaque
+  // picture's, a cutout of the same photograph; it only draws no floor.)
+  f.paper_bounce = std::make_shared<const PaperBounceMap>(paper_bounce_map(rig, backdrop, f.sky, rig.aim));
+  f.surround = surround_irradiance(studio, f.sky, rig, backdrop, *f.paper_bounce, rig.aim);
   f.media = media_light(studio, rig, f.surround);
-  if (drawn.present) f.centre_share = backdrop_share(studio, rig, drawn, *f.paper_bounce, rig.aim, kSeenFromRows);
+  if (backdrop.present) f.centre_share = backdrop_share(studio, rig, backdrop, *f.paper_bounce, rig.aim, kSeenFromRows);
   for (const glm::dvec3& at : seen_from) f.media_seen_from.push_back(environment_seen_from(f, p, rig, backdrop, at, passes));
   f.image = studio.image;
   f.rotation_cos = float(studio.rotation_cos);

@@ -290,7 +290,7 @@ std::vector<ParamDesc> make_camera_and_render_rows() {
           "none: clamp then sRGB; aces: filmic tone map then sRGB", (std::vector<std::string>{"none", "aces"})),
       ROW(SceneParams, render, exposure, Float, 0.01f, 100.0f, "", "Linear exposure multiplier before tone mapping"),
       ROW(SceneParams, render, transparent, Bool, 0.0f, 1.0f, "",
-          "Transparent background, premultiplied alpha (the floor is left out)"),
+          "Transparent background: the objects cut out (PNG: straight alpha; the floor is left out)"),
       ROW(SceneParams, render, supersample, Int, 1.0f, 4.0f, "", "Supersampling factor per axis (anti-aliasing)"),
       ROW(SceneParams, render, adaptive_supersample, Int, 1.0f, 4.0f, "",
           "Samples per axis at pixels whose supersamples disagree (fine detail, edges); not above supersample: off"),

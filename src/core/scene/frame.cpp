@@ -236,13 +236,13 @@ EnvironmentFrame frame_environment(const FrameState& f, const glm::dvec3& aim, c
   const SceneParams& p = f.params;
   const std::vector<DrinkColumn> columns = heads.empty() ? std::vector<DrinkColumn>{} : drink_column_list(f.vessels);
   if (!cache) return environment_frame(p, f.lights, f.backdrop, heads, light_passes(columns));
-  // The scene's part is made of the studio's parameters, whether the picture is
-  // transparent, the environment image as read (a file changed on disk is read again, a new
-  // map) and where the rig and the sweep stand (aim, and the backlight's aim through the
-  // drinks, light_rig's and backdrop_surface's other inputs).
+  // The scene's part is made of the studio's parameters, the environment image as read (a
+  // file changed on disk is read again, a new map) and where the rig and the sweep stand
+  // (aim, and the backlight's aim through the drinks, light_rig's and backdrop_surface's
+  // other inputs). (Not whether the picture is transparent: the studio lights a cutout as
+  // it lights the opaque picture.)
   const Studio studio(p);
   std::string key = studio_params_key(p);
-  key += p.render.transparent ? "T;" : "F;";
   key += std::to_string(reinterpret_cast<std::uintptr_t>(studio.image.get())) + ";";
   put_numbers(key, {aim.x, aim.y, aim.z, backlit.x, backlit.y, backlit.z});
   if (key != cache->scene_key) {
