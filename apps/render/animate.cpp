@@ -147,11 +147,11 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
       anim.output.empty() ? (fs::path("out") / (timeline.name.empty() ? "animation" : timeline.name) / "").string()
                           : anim.output;
   const std::string ext = fs::path(shown).extension().string();
-  const bool video = ext == ".mp4" || ext == ".gif";
+  const bool video = ext == ".mp4" || ext == ".webm" || ext == ".gif";
   if (!video && !ext.empty())
     throw InputError("-o " + shorten(shown, kEchoPathBytes) +
-                     ": with --timeline, expected a folder for PNG frames (e.g. frames/), or a file ending in .mp4 "
-                     "or .gif");
+                     ": with --timeline, expected a folder for PNG frames (e.g. frames/), or a file ending in .mp4, "
+                     ".webm or .gif");
   // Links are followed: the file or folder they point to is what gets replaced.
   const fs::path dest = video ? write_destination(shown) : SequenceFolder::destination(shown);
   refuse_overwriting_inputs(dest, shown, t.inputs, !video);
@@ -172,7 +172,7 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
   if (video) sweep_legacy_part(dest);             // and this video's part from older versions
   std::optional<Encoder> encoder;
   std::optional<SequenceFolder> sequence;
-  if (video) encoder.emplace(dest, shown, req.width, req.height, fps);
+  if (video) encoder.emplace(dest, shown, req.width, req.height, fps, base.params.render.transparent);
   else sequence.emplace(dest, shown, anim.overwrite);
 
   auto ctx = gpu::HeadlessContext::create();

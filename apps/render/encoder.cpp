@@ -4,6 +4,7 @@
 #include "core/io/files.hpp"
 #include "core/io/process.hpp"
 #include "core/io/temporaries.hpp"
+#include "core/output/cutout.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -17,13 +18,15 @@ namespace draught::cli {
 
 namespace fs = std::filesystem;
 
-Encoder::Encoder(const fs::path& dest, const std::string& shown, int w, int h, double fps)
+Encoder::Encoder(const fs::path& dest, const std::string& shown, int w, int h, double fps, bool transparent)
     : dest_(dest), shown_(shown) {
   ffmpeg_ = find_ffmpeg("-o " + shown);
   if (ffmpeg_.empty())
     throw InputError("-o " + shown +
                      ": ffmpeg was not found on PATH (Debian: apt install ffmpeg); or write PNG frames with -o DIR/");
   gif_ = dest.extension() == ".gif";
+  const bool webm = dest.extension() == ".webm";
+  alpha_ = webm && transparent;
   part_ = temporary();
   char size[32], rate[32];
   std::snprintf(size, sizeof size, "%dx%d", w, h);
@@ -34,6 +37,9 @@ Encoder::Encoder(const fs::path& dest, const std::string& shown, int w, int h, d
     frames_ = temporary();
     palette_ = temporary();
     args.insert(args.end(), {"-c:v", "ffv1", "-f", "nut", frames_.string()});
+  } else if (webm) {  // VP9 at constant quality (-b:v 0), its alpha in the side plane
+    args.insert(args.end(), {"-c:v", "libvpx-vp9", "-pix_fmt", alpha_ ? "yuva420p" : "yuv420p", "-b:v", "0", "-crf",
+                             "30", "-deadline", "good", "-cpu-used", "4", "-row-mt", "1", "-f", "webm", part_.string()});
   } else {
     args.insert(args.end(), {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf",
                              "18", "-movflags", "+faststart", "-f", "mp4", part_.string()});
@@ -79,9 +85,11 @@ void Encoder::remove_temporaries() {
   temporaries_.clear();
 }
 
-void Encoder::write(const Image& img) {
-  const std::uint8_t* p = img.rgba.data();
-  size_t left = img.rgba.size();
+void Encoder::write(const Image& picture) {
+  const Image img = alpha_ ? straight_alpha(picture) : Image{};
+  const std::vector<std::uint8_t>& bytes = alpha_ ? img.rgba : picture.rgba;
+  const std::uint8_t* p = bytes.data();
+  size_t left = bytes.size();
   while (left > 0) {
     const ssize_t n = ::write(fd_, p, left);
     if (n < 0 && errno == EINTR) continue;

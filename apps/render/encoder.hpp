@@ -1,6 +1,9 @@
-// MP4 and GIF output through ffmpeg. Frames stream into ffmpeg on a pipe; memory stays
-// flat whatever the length:
+// MP4, WebM and GIF output through ffmpeg. Frames stream into ffmpeg on a pipe; memory
+// stays flat whatever the length:
 //   MP4: one ffmpeg, raw RGBA -> H.264 in a temporary -> renamed onto the output.
+//   WebM: the same, VP9; a transparent picture's with its alpha (yuva420p: the frames
+//        in straight alpha, as the browsers composite it), the cutout in motion.
+//   (MP4 and GIF drop alpha: a transparent picture's premultiplied frames over black.)
 //   GIF: one palette for the whole clip needs every frame before the first can be
 //        written, and ffmpeg's one-pass palettegen/paletteuse holds them all in memory.
 //        So: raw RGBA -> a lossless FFV1 temporary; then palettegen over that file ->
@@ -20,13 +23,15 @@ namespace draught::cli {
 
 class Encoder {
  public:
-  // `dest`: the file to write (links resolved); `shown`: the -o the user gave, for messages.
-  Encoder(const std::filesystem::path& dest, const std::string& shown, int width, int height, double fps);
+  // `dest`: the file to write (links resolved); `shown`: the -o the user gave, for messages;
+  // `transparent`: the frames are a transparent picture's (a WebM keeps their alpha).
+  Encoder(const std::filesystem::path& dest, const std::string& shown, int width, int height, double fps,
+          bool transparent = false);
   ~Encoder();
   Encoder(const Encoder&) = delete;
   Encoder& operator=(const Encoder&) = delete;
 
-  void write(const Image&);
+  void write(const Image&);  // the renderer's samples (premultiplied where transparent)
   // Ends the stream, runs the remaining passes and renames the result onto `dest`.
   void finish();
 
@@ -39,6 +44,7 @@ class Encoder {
   std::filesystem::path dest_;
   std::string shown_, ffmpeg_;
   bool gif_ = false;
+  bool alpha_ = false;  // a WebM of a transparent picture: its frames in straight alpha
   std::filesystem::path part_, frames_, palette_;  // output, GIF's lossless frames and palette
   std::vector<std::filesystem::path> temporaries_;
   pid_t pid_ = -1;

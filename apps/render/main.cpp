@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
   cli::AnimateRequest anim;
   render->add_option("-t,--timeline", anim.timeline,
                      "Animate: play this timeline (a name or a JSON file); -o is then a folder for PNG frames or a "
-                     ".mp4/.gif file");
+                     ".mp4/.webm/.gif file (a .webm keeps --transparent's alpha)");
   render->add_option("--fps", fps, "Frames per second of the animation, 1-120 (default: the timeline's, else 30)");
   render->add_option("--duration", duration, "Seconds to render, 0.01-600 (default: the timeline's)");
   render->add_option("--at", at,

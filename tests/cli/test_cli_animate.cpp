@@ -5,6 +5,7 @@
 
 #include "core/io/image.hpp"
 
+#include <cstdio>
 
 namespace draught_cli_test {
 namespace {
@@ -179,6 +180,51 @@ TEST_F(Animate, WritesMp4OfOddSize) {
   ASSERT_GT(b.size(), 100u);
   EXPECT_EQ(b.substr(4, 4), "ftyp");
   EXPECT_EQ(join(list_tree(out())), "odd.mp4");
+}
+
+// The first frame of a WebM decoded with its alpha (libvpx's decoder: ffmpeg's own VP9
+// decoder drops the alpha plane), RGBA rows; empty when ffmpeg cannot decode it.
+std::vector<std::uint8_t> first_webm_frame(const fs::path& webm) {
+  const std::string cmd = "ffmpeg -nostdin -v error -c:v libvpx-vp9 -i '" + webm.string() +
+                          "' -frames:v 1 -pix_fmt rgba -f rawvideo - 2>/dev/null";
+  std::vector<std::uint8_t> bytes;
+  if (FILE* f = popen(cmd.c_str(), "r")) {
+    std::uint8_t buf[4096];
+    for (size_t n; (n = fread(buf, 1, sizeof buf, f)) > 0;) bytes.insert(bytes.end(), buf, buf + n);
+    pclose(f);
+  }
+  return bytes;
+}
+
+TEST_F(Animate, WritesTransparentWebmWithItsAlpha) {
+  // The cutout in motion: VP9 with an alpha plane, the frames in straight alpha.
+  const fs::path webm = out() / "cutout.webm";
+  auto r = animate("gentle-tilt", {"--transparent", "-o", webm.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.describe();
+  EXPECT_TRUE(contains(r.out, "wrote " + webm.string())) << r.describe();
+  const std::string b = read_file(webm);
+  ASSERT_GT(b.size(), 100u) << "empty or tiny WebM";
+  EXPECT_EQ(b.substr(0, 4), "\x1A\x45\xDF\xA3") << "not a Matroska/WebM file (no EBML header)";
+  EXPECT_TRUE(contains(b, "webm")) << "the EBML header does not name the webm doc type";
+  EXPECT_EQ(join(list_tree(out())), "cutout.webm") << "leftover .part or other files";
+  const std::vector<std::uint8_t> px = first_webm_frame(webm);
+  ASSERT_EQ(px.size(), size_t(48 * 48 * 4)) << "ffmpeg could not decode the WebM's first frame";
+  auto at = [&](int x, int y) { return &px[(size_t(y) * 48 + size_t(x)) * 4]; };
+  EXPECT_LT(at(0, 0)[3], 8) << "a corner (nothing there) is not transparent";
+  const std::uint8_t* lager = at(24, 27);
+  EXPECT_GT(lager[3], 180) << "the drink is not covered";
+  EXPECT_GT(lager[0], 140) << "the lager is dark: " << int(lager[0]) << " " << int(lager[1]) << " " << int(lager[2]);
+  EXPECT_GT(lager[0], lager[2] + 60) << "the lager is not gold";
+}
+
+TEST_F(Animate, WritesOpaqueWebm) {
+  const fs::path webm = out() / "clip.webm";
+  auto r = animate("gentle-tilt", {"--size", "31x17", "--duration", "0.5", "-o", webm.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.describe();
+  EXPECT_EQ(read_file(webm).substr(0, 4), "\x1A\x45\xDF\xA3");
+  const std::vector<std::uint8_t> px = first_webm_frame(webm);
+  ASSERT_EQ(px.size(), size_t(31 * 17 * 4)) << "odd sizes are kept (VP9 takes them)";
+  EXPECT_EQ(px[3], 255) << "an opaque picture's WebM is opaque";
 }
 
 TEST_F(Animate, WritesGifThroughFfmpeg) {
