@@ -320,7 +320,11 @@ EMSCRIPTEN_KEEPALIVE const char* draught_start(const char* canvas, int preserve,
   emscripten_webgl_init_context_attributes(&a);
   a.majorVersion = 2;
   a.minorVersion = 0;
-  a.alpha = EM_FALSE;
+  // An alpha channel (premultiplied, the browser's default, as the renderer writes it): a
+  // transparent picture (render.transparent) shows the page behind the drink; an opaque
+  // one writes alpha 1 everywhere.
+  a.alpha = EM_TRUE;
+  a.premultipliedAlpha = EM_TRUE;
   a.depth = EM_FALSE;
   a.stencil = EM_FALSE;
   a.antialias = EM_FALSE;

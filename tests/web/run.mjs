@@ -245,6 +245,38 @@ test('save picture downloads a PNG of the picture at the canvas size; drawing go
   await waitFrames(page, 3);
 });
 
+test('a transparent picture lets the page show through the canvas: the lager cut out, its gold kept', async () => {
+  const page = await desktop();
+  await page.selectOption('#drink', 'lager');
+  await waitFrames(page, 3);
+  const opaque = await snapshot(page);
+  let uncovered = 0;
+  for (let i = 3; i < opaque.data.length; i += 4) uncovered += opaque.data[i] !== 255;
+  assert.equal(uncovered, 0, 'an opaque picture left pixels of the canvas uncovered');
+  assert.equal(await page.evaluate(() => window.draught.api.setParam('render.transparent', 'true')), '');
+  try {
+    await waitFrames(page, 3);
+    const cut = await snapshot(page);
+    const { width: w, height: h } = cut;
+    const px = (x, y) => cut.data.slice((y * w + x) * 4, (y * w + x) * 4 + 4);
+    for (const [x, y] of [[0, 0], [w - 1, 0], [0, h - 1], [w - 1, h - 1]]) assert.equal(px(x, y)[3], 0, `corner ${x},${y} is covered`);
+    let clear = 0, gold = 0;
+    for (let y = 0; y < h; ++y)
+      for (let x = 0; x < w; ++x) {
+        const [r, g, b, a] = px(x, y);
+        clear += a === 0;
+        gold += a > 200 && r > 140 && r > b + 60 && g > b + 30;
+      }
+    note(`transparent: ${clear} of ${w * h} pixels clear, ${gold} covered and gold`);
+    await page.screenshot({ path: path.join(artifacts, 'transparent-lager.png') });
+    assert.ok(clear > 0.3 * w * h, `only ${clear} clear pixels`);
+    assert.ok(gold > 0.03 * w * h, `only ${gold} pixels of gold lager`);
+  } finally {
+    assert.equal(await page.evaluate(() => window.draught.api.setParam('render.transparent', 'false')), '');
+    await waitFrames(page, 3);
+  }
+});
+
 test('a decal image from disk goes on the selected glass; a broken one changes nothing', async () => {
   const page = await desktop();
   await page.selectOption('#drink', 'lager');
