@@ -167,7 +167,7 @@ void go_on(inout Path path, Hit h, Crossing c, vec3 p) {
 // (the lacing on the wall is done before: lace_wall); the reflection's look at the
 // surroundings (absorbed on its way out when the path is inside) goes to `look`. v: the
 // records of h's object (inside a glass or drink that is also the path's).
-void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Look look) {
+void shade_interface(inout Path path, Hit h, Vessel v, out Look look) {
   look = no_look();
   vec3 p = path.o + h.t * path.d;
   ObjectGlass g = glass_of(v.row);
@@ -257,12 +257,12 @@ void shade_interface(inout Path path, Hit h, Vessel v, bool transparent, out Loo
 #endif
     if (path.medium == MEDIUM_AIR) {
       vec3 out_w = vec3(1.0);
-      if (h.m == M_LIQUID_SURFACE && !transparent) {  // (a transparent picture looks up no surroundings)
+      if (h.m == M_LIQUID_SURFACE) {
         vec3 back;
         out_w = surface_reflection_out(v, g, pl, to_local_dir(v, r), back);
         path.radiance += path.thr * c.F * back * surround_mean();
       }
-      if (!transparent && !into_wall) look = Look(p, r, path.thr * c.F * out_w, rough, true, true, h.obj);
+      if (!into_wall) look = Look(p, r, path.thr * c.F * out_w, rough, true, true, h.obj);
     } else {
       vec3 out_dir;
       float turned;  // what the way out turns back in sees the sky's mean
@@ -337,7 +337,7 @@ Crossing droplet_crossing(Path path, Hit h) {
 // part's look at the surroundings goes to `look` (from inside absorbed along one more
 // chord of the same length: the internal reflection is not followed); the refracted part
 // goes on, into the next object or the air.
-void shade_droplet(inout Path path, Hit h, bool transparent, out Look look) {
+void shade_droplet(inout Path path, Hit h, out Look look) {
   look = no_look();
   vec3 p = path.o + h.t * path.d;
   bool inside = path.medium == MEDIUM_DROPLET;
@@ -347,7 +347,7 @@ void shade_droplet(inout Path path, Hit h, bool transparent, out Look look) {
   float rough = frame.droplet_roughness;
   if (c.F < 1.0) {
     vec3 r = reflect(path.d, c.n);
-    if (inside || !transparent) look = Look(p, r, path.thr * c.F * (inside ? chord : vec3(1.0)), rough, true, true, -1);
+    look = Look(p, r, path.thr * c.F * (inside ? chord : vec3(1.0)), rough, true, true, -1);
     path.thr *= 1.0 - c.F;
   }
   go_on(path, h, c, p);
@@ -379,7 +379,7 @@ Crossing cloud_crossing(Path path, Hit h) {
 // gob glows deep and bright, its thin edges less, and little is seen through it; cooled,
 // it is clear glass. A point's colour tints the light that crosses the surface there
 // (coloured glass, a tinted drink).
-void shade_cloud(inout Path path, Hit h, bool transparent, out Look look) {
+void shade_cloud(inout Path path, Hit h, out Look look) {
   look = no_look();
   int k = -2 - h.obj;
   vec3 p = path.o + h.t * path.d;
@@ -396,7 +396,7 @@ void shade_cloud(inout Path path, Hit h, bool transparent, out Look look) {
   float rough = frame.cloud_hi[k].w;
   if (c.F < 1.0) {
     vec3 r = reflect(path.d, c.n);
-    if (inside || !transparent) look = Look(p, r, path.thr * c.F * (inside ? chord : vec3(1.0)), rough, true, true, -1);
+    look = Look(p, r, path.thr * c.F * (inside ? chord : vec3(1.0)), rough, true, true, -1);
     path.thr *= 1.0 - c.F;
     if (max3(g_cloud_attrs.yzw) > 0.0) path.thr *= g_cloud_attrs.yzw;
   }
@@ -475,6 +475,9 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
       if (leaves) {
         look = Look(path.o, path.d, path.thr, 0.0, path.medium == MEDIUM_AIR, false, -1);
         if (transparent) {
+          // The page behind a cutout (core/output/cutout): alpha lets its achromatic part
+          // through, the studio behind the objects lights the coloured rest. (Reflections
+          // off the objects mirror the studio as in the opaque picture.)
           float m = min(path.thr.r, min(path.thr.g, path.thr.b));
           see_through = m;
           path.radiance += (path.thr - vec3(m)) * cutout_light();
@@ -497,14 +500,14 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
         }
       } else {
 #if DROPLETS
-        if (h.m == M_DROPLET) shade_droplet(path, h, transparent, look);
+        if (h.m == M_DROPLET) shade_droplet(path, h, look);
         else
 #endif
 #if CLOUDS
-        if (h.m == M_CLOUD) shade_cloud(path, h, transparent, look);
+        if (h.m == M_CLOUD) shade_cloud(path, h, look);
         else
 #endif
-        shade_interface(path, h, v, transparent, look);
+        shade_interface(path, h, v, look);
       }
       look_out(look, path.radiance, lit);
       foam_done = lace_done = false;

@@ -73,7 +73,7 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
   b.env_mode = p.env.mode;
   b.strip_intensity = p.env.strip_intensity;
   b.backdrop_glow = p.env.backdrop_glow;
-  b.floor_on = p.env.floor && !p.render.transparent;
+  b.floor_on = p.env.floor;  // (a transparent picture's glass mirrors it too; no path of its own meets it)
   b.env_color = p.env.color;
   b.checker_size = p.env.checker_size;
   b.sky_top = p.env.sky_top;
