@@ -3,7 +3,8 @@
 //   MP4: one ffmpeg, raw RGBA -> H.264 in a temporary -> renamed onto the output.
 //   WebM: the same, VP9; a transparent picture's with its alpha (yuva420p: the frames
 //        in straight alpha, as the browsers composite it), the cutout in motion.
-//   (MP4 and GIF drop alpha: a transparent picture's premultiplied frames over black.)
+//   (An MP4 drops alpha: a transparent picture's premultiplied frames over black; a GIF
+//   keeps one bit of it, ffmpeg's palette making pixels under half coverage clear.)
 //   GIF: one palette for the whole clip needs every frame before the first can be
 //        written, and ffmpeg's one-pass palettegen/paletteuse holds them all in memory.
 //        So: raw RGBA -> a lossless FFV1 temporary; then palettegen over that file ->

@@ -32,8 +32,9 @@ glm::dvec3 cutout_light(const FrameState&);
 Image straight_alpha(const Image& premultiplied);
 
 // A rendered picture as a PNG file holds it (the CLI's stills and frames, the viewer's and
-// the page's saved pictures): straight_alpha where it is transparent, else as it is. A
-// video keeps the premultiplied samples: it drops alpha, which shows them over black.
+// the page's saved pictures): straight_alpha where it is transparent, else as it is. (A
+// WebM's frames take straight_alpha too; an MP4 or a GIF takes the premultiplied samples:
+// it drops alpha, a GIF keeping one bit, which shows them over black.)
 inline Image png_picture(const Image& picture, bool transparent) {
   return transparent ? straight_alpha(picture) : picture;
 }
