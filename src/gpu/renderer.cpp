@@ -287,12 +287,6 @@ std::optional<glm::dvec2> on_screen(const contract::FrameBlock& b, const glm::ve
 
 }  // namespace
 
-ScreenParts objects_on_screen(const FrameState& f, const contract::FrameBlock& b, int width, int height) {
-  std::vector<contract::ObjectRecord> vessels;
-  for (int i = 0; i < int(f.vessels.size()); ++i) vessels.push_back(pack_object(f, i));
-  return objects_on_screen(vessels, b, width, height);
-}
-
 ScreenParts objects_on_screen(const std::vector<contract::ObjectRecord>& vessels, const contract::FrameBlock& b,
                               int width, int height) {
   std::vector<PixelRect> boxes;  // each box's part of the picture

@@ -50,7 +50,6 @@ struct ScreenParts {
 // `vessels`: the glasses' records as u_objects holds them (SceneTextures::records).
 ScreenParts objects_on_screen(const std::vector<contract::ObjectRecord>& vessels, const contract::FrameBlock& b,
                               int width, int height);
-ScreenParts objects_on_screen(const FrameState&, const contract::FrameBlock& b, int width, int height);  // packs them
 
 // Debug views, declared in src/interface/constants.def (shared with the shaders).
 using contract::DebugView;

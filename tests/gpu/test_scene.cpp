@@ -386,6 +386,13 @@ TEST(Variants, TheBackgroundPassDrawsWhatTheObjectsPassDraws) {
   }, &gpu::Renderer::set_background_pass, "the background pass differs from the objects' pass");
 }
 
+// objects_on_screen of the frame's glasses, their records packed as u_objects holds them.
+gpu::ScreenParts screen_parts(const FrameState& f, const contract::FrameBlock& block, int width, int height) {
+  std::vector<contract::ObjectRecord> records;
+  for (int i = 0; i < int(f.vessels.size()); ++i) records.push_back(gpu::pack_object(f, i));
+  return gpu::objects_on_screen(records, block, width, height);
+}
+
 // The runs of the screen either tier runs its pass in (objects_on_screen; the rest is
 // the background alone) hold every pixel whose camera ray meets a glass by the reference
 // intersector; with the background's they cover the picture once; for a single pint they
@@ -408,7 +415,7 @@ TEST(ScreenParts, ThePassRunsWhereTheObjectsAre) {
                            View{"flight at an angle", make_frame(flight_scene(FlightView::AtAnAngle)), 120, 90},
                            View{"flight straight on", make_frame(flight_scene()), 160, 60}}) {
     const contract::FrameBlock block = gpu::pack_frame_block(view.f, view.w, view.h, gpu::DebugView::None);
-    const gpu::ScreenParts parts = gpu::objects_on_screen(view.f, block, view.w, view.h);
+    const gpu::ScreenParts parts = screen_parts(view.f, block, view.w, view.h);
     std::vector<int> in_objects(size_t(view.w) * view.h, 0), in_any(size_t(view.w) * view.h, 0);
     for (const auto* list : {&parts.objects, &parts.background})
       for (const gpu::PixelRect& r : *list)
@@ -440,11 +447,11 @@ TEST(ScreenParts, ThePassRunsWhereTheObjectsAre) {
     EXPECT_GT(hits, 0) << view.name;
     EXPECT_EQ(outside, 0) << view.name;
   }
-  const gpu::ScreenParts part = gpu::objects_on_screen(pint, gpu::pack_frame_block(pint, 96, 96, gpu::DebugView::None), 96, 96);
+  const gpu::ScreenParts part = screen_parts(pint, gpu::pack_frame_block(pint, 96, 96, gpu::DebugView::None), 96, 96);
   EXPECT_LT(pixels(part.objects), 96 * 96 * 2 / 3);
   const FrameState flight = make_frame(flight_scene());
   const gpu::ScreenParts gaps =
-      gpu::objects_on_screen(flight, gpu::pack_frame_block(flight, 160, 60, gpu::DebugView::None), 160, 60);
+      screen_parts(flight, gpu::pack_frame_block(flight, 160, 60, gpu::DebugView::None), 160, 60);
   EXPECT_GE(gaps.objects.size(), 4u) << "the flight's glasses in one run";
 }
 
