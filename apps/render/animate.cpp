@@ -183,16 +183,15 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
   const auto t0 = std::chrono::steady_clock::now();
   for (int i = 0; i < frames; ++i) {
     play.to(i / fps);
+    const FrameState frame = play.sim().frame();
     Image img;
     try {
-      img = renderer.render(play.sim().frame(), req.width, req.height);
+      img = renderer.render(frame, req.width, req.height);
     } catch (const std::runtime_error& e) {
       explain_size_error(e, req, base.params.render.supersample);
     }
     if (encoder) encoder->write(img);
-    else
-      write_png(sequence->folder() / SequenceFolder::frame_name(i),
-                png_picture(img, play.sim().frame().params.render.transparent));
+    else write_png(sequence->folder() / SequenceFolder::frame_name(i), png_picture(img, frame.params.render.transparent));
     if (progress)
       show_progress(i + 1, frames, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
                     i + 1 == frames);

@@ -86,8 +86,11 @@ void Encoder::remove_temporaries() {
 }
 
 void Encoder::write(const Image& picture) {
-  const Image img = alpha_ ? straight_alpha(picture) : Image{};
-  const std::vector<std::uint8_t>& bytes = alpha_ ? img.rgba : picture.rgba;
+  if (alpha_) return write_bytes(straight_alpha(picture).rgba);
+  write_bytes(picture.rgba);
+}
+
+void Encoder::write_bytes(const std::vector<std::uint8_t>& bytes) {
   const std::uint8_t* p = bytes.data();
   size_t left = bytes.size();
   while (left > 0) {

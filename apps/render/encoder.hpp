@@ -37,6 +37,7 @@ class Encoder {
   void finish();
 
  private:
+  void write_bytes(const std::vector<std::uint8_t>&);  // into ffmpeg's pipe, whole
   std::filesystem::path temporary();
   void run_to_end(std::vector<std::string> args);  // a pass that reads files, not the pipe
   void wait_for_child(const char* what);

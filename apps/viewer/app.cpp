@@ -650,9 +650,10 @@ void Viewer::interactive(bool on) {
 std::string Viewer::save_picture(const std::filesystem::path& out, int width, int height) {
   const auto t0 = std::chrono::steady_clock::now();
   interactive(false);
+  const FrameState frame = sim_->frame();
   Image img;
   try {
-    img = renderer_.render(sim_->frame(), std::max(width, 16), std::max(height, 16));
+    img = renderer_.render(frame, std::max(width, 16), std::max(height, 16));
   } catch (...) {
     interactive(true);
     throw;
@@ -660,7 +661,7 @@ std::string Viewer::save_picture(const std::filesystem::path& out, int width, in
   interactive(true);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());  // as the CLI does
-  write_png(out, png_picture(img, sim_->frame().params.render.transparent));
+  write_png(out, png_picture(img, frame.params.render.transparent));
   char text[256];
   std::snprintf(text, sizeof text, "saved %s (%d x %d, %.1f s)", out.string().c_str(), img.width, img.height,
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());

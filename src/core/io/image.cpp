@@ -13,10 +13,8 @@
 
 namespace draught {
 
-Image downsample(const Image& in, int f) {
-  if (f <= 1) return in;
-  // sRGB code -> linear light, once; the mean goes back through the inverse, rounded.
-  static const std::array<double, 256> to_linear = [] {
+double srgb8_to_linear(std::uint8_t code) {
+  static const std::array<double, 256> table = [] {
     std::array<double, 256> t{};
     for (int i = 0; i < 256; ++i) {
       const double c = i / 255.0;
@@ -24,11 +22,18 @@ Image downsample(const Image& in, int f) {
     }
     return t;
   }();
-  auto to_srgb8 = [](double c) {
-    c = std::clamp(c, 0.0, 1.0);
-    const double s = c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-    return std::uint8_t(std::lround(s * 255.0));
-  };
+  return table[code];
+}
+
+std::uint8_t linear_to_srgb8(double c) {
+  c = std::clamp(c, 0.0, 1.0);
+  const double s = c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+  return std::uint8_t(std::lround(s * 255.0));
+}
+
+Image downsample(const Image& in, int f) {
+  if (f <= 1) return in;
+  // sRGB codes -> linear light; the mean goes back through the inverse, rounded.
   Image out{in.width / f, in.height / f, {}};
   out.rgba.resize(size_t(out.width) * size_t(out.height) * 4);
   const double n = double(f * f);
@@ -38,11 +43,11 @@ Image downsample(const Image& in, int f) {
       for (int j = 0; j < f; ++j)
         for (int i = 0; i < f; ++i) {
           const std::uint8_t* p = in.px(x * f + i, y * f + j);
-          for (int c = 0; c < 3; ++c) sum[c] += to_linear[p[c]];
+          for (int c = 0; c < 3; ++c) sum[c] += srgb8_to_linear(p[c]);
           sum[3] += p[3];
         }
       std::uint8_t* o = out.px(x, y);
-      for (int c = 0; c < 3; ++c) o[c] = to_srgb8(sum[c] / n);
+      for (int c = 0; c < 3; ++c) o[c] = linear_to_srgb8(sum[c] / n);
       o[3] = std::uint8_t(std::lround(sum[3] / n));  // coverage is linear already
     }
   return out;

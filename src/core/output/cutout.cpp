@@ -1,9 +1,6 @@
 #include "core/output/cutout.hpp"
 
-#include "core/output/tonemap.hpp"
-
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -25,21 +22,16 @@ glm::dvec3 cutout_light(const FrameState& f) {
 }
 
 Image straight_alpha(const Image& in) {
-  static const std::array<double, 256> to_linear = [] {
-    std::array<double, 256> t{};
-    for (int i = 0; i < 256; ++i) t[size_t(i)] = srgb_to_linear(i / 255.0);
-    return t;
-  }();
   Image out = in;
   for (size_t i = 0; i + 3 < out.rgba.size(); i += 4) {
     std::uint8_t* px = &out.rgba[i];
-    const double c[3] = {to_linear[px[0]], to_linear[px[1]], to_linear[px[2]]};
+    const double c[3] = {srgb8_to_linear(px[0]), srgb8_to_linear(px[1]), srgb8_to_linear(px[2])};
     const double a = std::max({px[3] / 255.0, c[0], c[1], c[2]});
     if (a <= 0.0) {
       px[0] = px[1] = px[2] = px[3] = 0;
       continue;
     }
-    for (int k = 0; k < 3; ++k) px[k] = std::uint8_t(std::lround(linear_to_srgb(c[k] / a) * 255.0));
+    for (int k = 0; k < 3; ++k) px[k] = linear_to_srgb8(c[k] / a);
     px[3] = std::uint8_t(std::lround(a * 255.0));
   }
   return out;
