@@ -10,7 +10,6 @@
 #include "core/text/echo.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <cmath>
 #include <mutex>
@@ -21,16 +20,6 @@ namespace draught {
 namespace fs = std::filesystem;
 
 namespace {
-
-// sRGB byte -> linear, as the GPU decodes an SRGB8_ALPHA8 texel.
-const std::array<double, 256>& srgb_table() {
-  static const std::array<double, 256> table = [] {
-    std::array<double, 256> t{};
-    for (int i = 0; i < 256; ++i) t[size_t(i)] = srgb_to_linear(i / 255.0);
-    return t;
-  }();
-  return table;
-}
 
 // The card's rectangle: placed as a light of the rig is (place_light), facing the scene.
 void place_card(ScreenFrame& s, const ScreenParams& p, const glm::dvec3& aim, double aspect) {
@@ -83,7 +72,6 @@ bool ScreenFrame::intersect(const glm::dvec3& o, const glm::dvec3& d, double tmi
 
 glm::dvec3 ScreenFrame::texel(const glm::dvec2& uv) const {
   if (!picture || picture->width < 1 || picture->height < 1) return glm::dvec3(0.0);
-  const auto& lin = srgb_table();
   const int w = picture->width, h = picture->height;
   // Texel centres at (i + 0.5) / w; clamped to the edge texels.
   const double x = std::clamp(uv.x, 0.0, 1.0) * w - 0.5, y = std::clamp(uv.y, 0.0, 1.0) * h - 0.5;
@@ -91,7 +79,8 @@ glm::dvec3 ScreenFrame::texel(const glm::dvec2& uv) const {
   const double fx = x - x0, fy = y - y0;
   auto at = [&](int i, int j) {
     const std::uint8_t* px = picture->px(std::clamp(i, 0, w - 1), std::clamp(j, 0, h - 1));
-    return glm::dvec3(lin[px[0]], lin[px[1]], lin[px[2]]);
+    // (sRGB bytes to linear, as the GPU decodes an SRGB8_ALPHA8 texel)
+    return glm::dvec3(srgb8_to_linear(px[0]), srgb8_to_linear(px[1]), srgb8_to_linear(px[2]));
   };
   return glm::mix(glm::mix(at(x0, y0), at(x0 + 1, y0), fx), glm::mix(at(x0, y0 + 1), at(x0 + 1, y0 + 1), fx), fy);
 }

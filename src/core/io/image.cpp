@@ -1,6 +1,7 @@
 #include "core/io/image.hpp"
 
 #include "core/io/files.hpp"
+#include "core/math/srgb.hpp"
 #include "core/text/echo.hpp"
 
 #include <algorithm>
@@ -16,20 +17,13 @@ namespace draught {
 double srgb8_to_linear(std::uint8_t code) {
   static const std::array<double, 256> table = [] {
     std::array<double, 256> t{};
-    for (int i = 0; i < 256; ++i) {
-      const double c = i / 255.0;
-      t[size_t(i)] = c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-    }
+    for (int i = 0; i < 256; ++i) t[size_t(i)] = srgb_to_linear(i / 255.0);
     return t;
   }();
   return table[code];
 }
 
-std::uint8_t linear_to_srgb8(double c) {
-  c = std::clamp(c, 0.0, 1.0);
-  const double s = c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-  return std::uint8_t(std::lround(s * 255.0));
-}
+std::uint8_t linear_to_srgb8(double c) { return std::uint8_t(std::lround(linear_to_srgb(c) * 255.0)); }
 
 Image downsample(const Image& in, int f) {
   if (f <= 1) return in;

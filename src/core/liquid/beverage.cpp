@@ -1,5 +1,7 @@
 #include "core/liquid/beverage.hpp"
 
+#include "core/math/srgb.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <array>
@@ -116,10 +118,8 @@ namespace {
 constexpr int kFitLengths = 15;
 double fit_length(int j) { return 0.001 * std::pow(2.0, 0.5 * j); }
 
-double encode(double linear) {  // sRGB's transfer function: the error as the eye weighs it
-  linear = std::clamp(linear, 0.0, 1.0);
-  return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
-}
+// sRGB's transfer function: the error as the eye weighs it.
+double encode(double linear) { return linear_to_srgb(linear); }
 
 struct Band {
   double share, rate;

@@ -4,6 +4,7 @@
 // GPU's single samples.
 #pragma once
 
+#include "core/math/srgb.hpp"
 #include "core/params/params.hpp"
 
 #include <glm/glm.hpp>
@@ -26,13 +27,6 @@ inline double aces_filmic_inverse(double y) {
   y = std::clamp(y, 0.0, 1.0);
   const double a = 2.43 * y - 2.51, b = 0.59 * y - 0.03, c = 0.14 * y;
   return std::max(0.0, (-b - std::sqrt(std::max(b * b - 4 * a * c, 0.0))) / (2 * a));
-}
-
-inline double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
-
-inline double linear_to_srgb(double c) {
-  c = std::clamp(c, 0.0, 1.0);
-  return c < 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
 }
 
 // One channel of linear light already times the exposure to its 8-bit display code: the

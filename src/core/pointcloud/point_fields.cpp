@@ -139,8 +139,6 @@ int PointCloudBuilder::add(const std::array<double, kPointFieldCount>& v) {
   return -1;
 }
 
-double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
-
 std::string quote_token(std::string_view s) { return make_valid_utf8(quote_input(s)); }
 
 bool parse_number(std::string_view t, double& v) {

@@ -4,6 +4,7 @@
 // docs/POINT_CLOUDS.md.
 #pragma once
 
+#include "core/math/srgb.hpp"
 #include "core/pointcloud/cloud.hpp"
 
 #include <array>
@@ -64,9 +65,6 @@ class PointCloudBuilder {
   PointFieldColumns fields_;
   PointCloud cloud_;
 };
-
-// An sRGB-encoded channel (0..1) decoded to linear.
-double srgb_to_linear(double c);
 
 // A whole token as a number: decimal, with an optional sign (a leading '+' too) and
 // exponent; "nan" and "inf" read, for the value checks to refuse by name. Nothing else

@@ -4,7 +4,6 @@
 #include "core/vessel/decal_files.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -84,28 +83,11 @@ std::optional<glm::dvec2> decal_uv(const Vessel& v, const WallArcLengths& arcs, 
 }
 
 namespace {
-double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
-const std::array<double, 256>& linear_table() {
-  static const std::array<double, 256> t = [] {
-    std::array<double, 256> out{};
-    for (int i = 0; i < 256; ++i) out[size_t(i)] = srgb_to_linear(i / 255.0);
-    return out;
-  }();
-  return t;
-}
-
 // Texel (x, y) premultiplied, in linear light.
 glm::dvec4 premultiplied(const Image& img, int x, int y) {
   const std::uint8_t* p = img.px(x, y);
-  const auto& lin = linear_table();
   const double a = p[3] / 255.0;
-  return {lin[p[0]] * a, lin[p[1]] * a, lin[p[2]] * a, a};
-}
-
-std::uint8_t to_srgb8(double c) {
-  c = std::clamp(c, 0.0, 1.0);
-  const double s = c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-  return std::uint8_t(std::lround(s * 255.0));
+  return {srgb8_to_linear(p[0]) * a, srgb8_to_linear(p[1]) * a, srgb8_to_linear(p[2]) * a, a};
 }
 }  // namespace
 
@@ -204,7 +186,7 @@ std::vector<std::uint8_t> decal_layer_texels(const Image& img, int size) {
         sum += wt[k] * rows[size_t(sy) * size_t(size) + size_t(x)];
       }
       std::uint8_t* o = &out[(size_t(y) * size_t(size) + size_t(x)) * 4];
-      for (int c = 0; c < 3; ++c) o[c] = to_srgb8(sum[c]);
+      for (int c = 0; c < 3; ++c) o[c] = linear_to_srgb8(sum[c]);
       o[3] = std::uint8_t(std::lround(std::clamp(sum.a, 0.0, 1.0) * 255.0));
     }
   }
