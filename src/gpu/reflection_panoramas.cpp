@@ -33,7 +33,7 @@ ReflectionPanoramas::~ReflectionPanoramas() {
 }
 
 int ReflectionPanoramas::layers_for(const FrameState& f) const {
-  if (!f.params.env.reflections || f.params.render.transparent || !usable_) return 0;
+  if (!f.params.env.reflections || !usable_) return 0;
   return std::min(int(f.vessels.size()), contract::kMaxReflectionPanoramas);
 }
 

@@ -27,8 +27,8 @@ class ReflectionPanoramas {
   ReflectionPanoramas(const ReflectionPanoramas&) = delete;
   ReflectionPanoramas& operator=(const ReflectionPanoramas&) = delete;
 
-  // How many glasses of this frame get a panorama (0: env.reflections off, a transparent
-  // picture, which mirrors nothing, or no half-float targets on this GL).
+  // How many glasses of this frame get a panorama (0: env.reflections off or no
+  // half-float targets on this GL). A transparent picture's are the opaque one's.
   int layers_for(const FrameState&) const;
   // Whether this frame's panoramas must be drawn: none drawn yet, another size or
   // number of glasses, or a new slot of env.reflections_rate (every frame at 0).

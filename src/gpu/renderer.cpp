@@ -380,6 +380,9 @@ bool Renderer::draw_reflections(const FrameState& f, contract::FrameBlock& block
     pano.viewport_size = {reflections_->width(), reflections_->height()};
     pano.viewport_inv = {1.0f / reflections_->width(), 1.0f / reflections_->height()};
     pano.reflections_count = 0;
+    // A cutout's glasses mirror the studio and each other as the opaque picture's do: its
+    // panoramas are the opaque world's (what escapes there is the studio, not the page).
+    pano.transparent = 0;
     const int v = (variant & ~kDebug) | kPanorama;
     auto& program = programs_[v];
     if (!program) program = build_program(v);

@@ -188,6 +188,59 @@ TEST(ReflectionPanoramas, OnlyTheGlassesChangeAndTheyMirrorEachOther) {
   EXPECT_GT(glass_changed, glass / 50);
 }
 
+TEST(ReflectionPanoramas, ACutoutsGlassesMirrorEachOtherAsTheOpaquePicturesDo) {
+  // --transparent: the panoramas are the opaque world's (the studio and the neighbours, not
+  // the page's clear), and the glasses' outsides show them. Only the floor differs: a
+  // transparent picture traces no floor light map (its shadows and caustics), so the floor
+  // mirrored there is lit by the rig alone.
+  Gpu& g = gpu_instance();
+  const gpu::ReflectionPanoramas& p = g.renderer->reflection_panoramas();
+  g.renderer->render(make_frame(flight_scene(FlightView::StraightOn, {"env.reflections=true"})), 64, 48);
+  ASSERT_EQ(p.layers(), 4);
+  const std::vector<float> opaque = p.read(0);
+  const auto cutout = [](bool reflections) {
+    return make_frame(flight_scene(FlightView::StraightOn,
+                                   with_reflections({"render.transparent=true", "render.adaptive_supersample=1"}, reflections)));
+  };
+  const int drawn = p.draws();
+  const Image with = g.renderer->render(cutout(true), 64, 48);
+  ASSERT_EQ(p.draws(), drawn + 4);  // (drawn for the cutout, not left from the opaque picture)
+  const std::vector<float> transparent = p.read(0);
+  ASSERT_EQ(transparent.size(), opaque.size());
+  // Above the neighbours (the studio's upper half) the same light; above the horizon, the
+  // neighbours included (the floor seen through them is the one difference), the same on
+  // the whole; below, the lit floor.
+  double worst_above = 0, sum_t = 0, sum_o = 0, darkest_floor = INFINITY;
+  for (int y = 0; y < p.height(); ++y) {
+    const double up = gpu::panorama_dir({0.5, (y + 0.5) / p.height()}).y;
+    for (int x = 0; x < p.width(); ++x)
+      for (int c = 0; c < 3; ++c) {
+        const size_t i = (size_t(y) * size_t(p.width()) + size_t(x)) * 4 + size_t(c);
+        if (up > 0.7)
+          worst_above = std::max(worst_above, std::fabs(double(transparent[i]) - double(opaque[i])) / (double(opaque[i]) + 0.01));
+        if (up > 0.0) sum_t += transparent[i], sum_o += opaque[i];
+        if (up < -0.9) darkest_floor = std::min(darkest_floor, double(transparent[i]));
+      }
+  }
+  std::printf("cutout's panorama against the opaque picture's: above the neighbours worst %.2e relative, above the "
+              "horizon %.4f of its light; the floor below at least %.3f\n", worst_above, sum_t / sum_o, darkest_floor);
+  EXPECT_LT(worst_above, 0.01);
+  EXPECT_NEAR(sum_t / sum_o, 1.0, 0.02);
+  EXPECT_GT(darkest_floor, 0.3);  // the studio's lit floor, not the page's clear
+  const glm::vec3 ale = panorama_at(p, transparent, glm::dvec3(1, -0.05, 0));
+  EXPECT_GT(ale.r, 1.3f * ale.b);  // the amber ale beside the pilsner, as in the opaque picture's
+  const Image without = g.renderer->render(cutout(false), 64, 48);
+  int changed = 0, clear = 0;
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 64; ++x) {
+      clear += with.px(x, y)[3] == 0 && without.px(x, y)[3] == 0;
+      for (int c = 0; c < 4; ++c) changed += std::abs(int(with.px(x, y)[c]) - int(without.px(x, y)[c])) > 8;
+    }
+  std::printf("cutout with reflections: %d samples changed by more than 8 levels, %d pixels clear in both\n", changed, clear);
+  EXPECT_GT(changed, 0);
+  EXPECT_GT(clear, 64 * 48 / 3);  // (the page still shows round the glasses)
+}
+
 TEST(ReflectionPanoramas, TheRateDecidesWhenTheyAreDrawnAgain) {
   Gpu& g = gpu_instance();
   Scene s = flight_scene(FlightView::StraightOn, {"env.reflections=true", "env.reflections_rate=2"});
