@@ -54,6 +54,28 @@ constexpr Tier kTiers[] = {{"low", 0.5f, 6}, {"medium", 0.75f, 9}, {"high", 1.0f
 // Q steps down: high -> medium -> low -> MatCap -> high.
 constexpr int kNextTier[] = {3, 0, 1, 2};
 
+// A transparent picture's premultiplied colour, drawn over what is below it.
+void premultiplied_over(const ImDrawList*, const ImDrawCmd*) {
+  glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+}
+
+// The window behind the UI: squares of 12 px in two greys (the web page's, apps/web/style.css:
+// the upper right one of each 24 px tile dark), then the picture in `texture` (a render
+// target's: GL's rows bottom-up) over them.
+void over_checkerboard(unsigned texture) {
+  constexpr float kSquare = 12.0f;
+  ImDrawList* list = ImGui::GetBackgroundDrawList();
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  list->AddRectFilled(ImVec2(0, 0), size, IM_COL32(0xa8, 0xa8, 0xa8, 0xff));
+  for (int j = 0; float(j) * kSquare < size.y; ++j)
+    for (int i = (j + 1) % 2; float(i) * kSquare < size.x; i += 2)
+      list->AddRectFilled(ImVec2(float(i) * kSquare, float(j) * kSquare), ImVec2(float(i + 1) * kSquare, float(j + 1) * kSquare),
+                          IM_COL32(0x8c, 0x8c, 0x8c, 0xff));
+  list->AddCallback(premultiplied_over, nullptr);
+  list->AddImage(reinterpret_cast<ImTextureID>(std::intptr_t(texture)), ImVec2(0, 0), size, ImVec2(0, 1), ImVec2(1, 0));
+  list->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
+}
+
 // Screenshot mode steps the clock by a fixed 1/30 s per frame, so the picture is the same
 // on a fast GPU and on llvmpipe.
 constexpr double kScreenshotFps = 30;
@@ -179,6 +201,8 @@ class Viewer {
   void advance();
   void draw_panel();
   void draw_scene(int width, int height);
+  // The scene's own target at sw x sh (made again only when that size changes), bound.
+  gpu::RenderTarget& scene_target(int sw, int sh);
   void draw_overlay(int width, int height);
   void lay_out();
   FrameState framed() const;  // the simulation's frame, framed in the free part of the window
@@ -196,7 +220,7 @@ class Viewer {
   Editor editor_;
   Window window_;
   gpu::Renderer renderer_;  // after window_: needs its context
-  std::unique_ptr<gpu::RenderTarget> tier_target_;  // low tiers draw here, then scale up
+  std::unique_ptr<gpu::RenderTarget> scene_target_;  // low tiers and cutouts draw here, then show it
   InputRig rig_;
   std::unique_ptr<SdlGamepadInput> gamepad_;
   std::unique_ptr<SceneSimulation> sim_;
@@ -545,16 +569,18 @@ void Viewer::draw_scene(int width, int height) {
   glClearColor(0, 0, 0, 1);
   glClear(GL_COLOR_BUFFER_BIT);
   const DebugView view = kViews[view_];
+  const int sw = std::max(1, int(width * tier.scale)), sh = std::max(1, int(height * tier.scale));
+  if (view == DebugView::None && f.params.render.transparent) {
+    // A cutout is shown over a checkerboard, as image editors and the web page show one
+    // (the window has no alpha of its own: over black a clear glass looked dark).
+    const gpu::RenderTarget& target = scene_target(sw, sh);
+    renderer_.draw(f, sw, sh);
+    over_checkerboard(target.texture());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return;
+  }
   if (view == DebugView::None && tier.scale < 1.0f) {
-    const int sw = std::max(1, int(width * tier.scale)), sh = std::max(1, int(height * tier.scale));
-    // One target kept across frames, made again only when the window or the tier resizes it.
-    if (!tier_target_ || tier_target_->width() != sw || tier_target_->height() != sh) {
-      tier_target_.reset();
-      // (bound for drawing and reading)
-      tier_target_ = std::make_unique<gpu::RenderTarget>(sw, sh, gpu::RenderTarget::Format::Rgba8);
-    } else {
-      tier_target_->bind();
-    }
+    scene_target(sw, sh);
     renderer_.draw(f, sw, sh);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glBlitFramebuffer(0, 0, sw, sh, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
@@ -590,6 +616,22 @@ void Viewer::draw_scene(int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     renderer_.draw(f, width, height);
   }
+}
+
+gpu::RenderTarget& Viewer::scene_target(int sw, int sh) {
+  // One target kept across frames, made again only when the window or the tier resizes it.
+  if (!scene_target_ || scene_target_->width() != sw || scene_target_->height() != sh) {
+    scene_target_.reset();
+    scene_target_ = std::make_unique<gpu::RenderTarget>(sw, sh, gpu::RenderTarget::Format::Rgba8);  // (bound)
+    glBindTexture(GL_TEXTURE_2D, scene_target_->texture());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  } else {
+    scene_target_->bind();
+  }
+  return *scene_target_;
 }
 
 void Viewer::draw_overlay(int width, int height) {

@@ -79,6 +79,7 @@ class RenderTarget {
   void bind() const;
   int width() const { return width_; }
   int height() const { return height_; }
+  unsigned texture() const { return tex_; }  // its colour (GL's rows: bottom-up)
 
  private:
   void release();

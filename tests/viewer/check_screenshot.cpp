@@ -184,7 +184,7 @@ int check_scene(const Image& img, const std::string& preset, draught::PictureRec
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 5) return fail("usage: check_screenshot FILE WIDTH HEIGHT glass|panel|scene|uncovered [ARGS]");
+  if (argc < 5) return fail("usage: check_screenshot FILE WIDTH HEIGHT glass|panel|scene|uncovered|checkerboard [ARGS]");
   Image img;
   try {
     img = draught::read_png(argv[1]);
@@ -290,8 +290,29 @@ int main(int argc, char** argv) {
         for (int k = 0; k < 3; ++k) diff += std::abs(int(img.px(x, y)[k]) - int(other.px(x, y)[k]));
     std::printf("panel region differs from the panel-less shot by %.1f per pixel\n", diff / n);
     if (diff / n < 20) return fail("no panel drawn over the top left of the window");
+  } else if (mode == "checkerboard") {
+    // A transparent picture: the window's bottom corners show the checkerboard behind it
+    // (12 px squares of 0x8c and 0xa8 grey, the dark ones at the upper right of each 24 px
+    // tile from the top left), the drink in the middle covers it.
+    int wrong = 0, n = 0;
+    for (int y = img.height - 24; y < img.height; ++y)
+      for (int x : {3, 7, 15, 19, img.width - 20, img.width - 16, img.width - 8, img.width - 4}) {
+        if (x % 12 < 2 || x % 12 > 9 || y % 12 < 2 || y % 12 > 9) continue;  // (off the squares' edges)
+        const int expected = (x / 12 + y / 12) % 2 ? 0x8c : 0xa8;
+        const std::uint8_t* p = img.px(x, y);
+        ++n;
+        for (int k = 0; k < 3; ++k) wrong += std::abs(int(p[k]) - expected) > 6;
+      }
+    const Region centre = fraction(img, 0.4, 0.45, 0.6, 0.75);
+    int beer = 0, m = 0;
+    for (int y = centre.y0; y < centre.y1; ++y)
+      for (int x = centre.x0; x < centre.x1; ++x, ++m) beer += beer_coloured(img.px(x, y));
+    std::printf("checkerboard: %d of %d corner samples off their square's grey; beer-coloured %.0f %% of the centre\n",
+                wrong, 3 * n, 100.0 * beer / m);
+    if (n == 0 || wrong > 0) return fail("no checkerboard behind the transparent picture in the bottom corners");
+    if (beer < m / 2) return fail("less than half of the centre is beer-coloured: the drink does not cover the checkerboard");
   } else {
-    return fail("unknown mode '" + mode + "': expected glass, panel, scene or uncovered");
+    return fail("unknown mode '" + mode + "': expected glass, panel, scene, uncovered or checkerboard");
   }
   std::printf("ok\n");
   return 0;

@@ -2,7 +2,7 @@
 # The viewer in a virtual X server (Xvfb, Mesa's software GLES 3): one screenshot without the
 # panel (the glass must show), one at the low quality tier (still the glass, from half the
 # resolution), one with the panel (the panel must draw), the picture F12 saves (the scene
-# alone, with the panel shown), and scenes checked object by object
+# alone, with the panel shown), a transparent picture over a checkerboard, and scenes checked object by object
 # against the reference intersector: the single glass, then with the panel and the overlay
 # (the glass framed clear of them), then the flight of four glasses beside the panel
 # (presets/scenes/flight.json).
@@ -35,6 +35,17 @@ run --preset lager --size 320x240 --frames 30 --screenshot "$out/viewer-panel.pn
 "$checker" "$out/viewer-panel.png" 320 240 panel "$out/viewer-glass.png"
 # The scene check on one glass (the same code path as the flight's).
 "$checker" "$out/viewer-glass.png" 320 240 scene lager
+# A transparent picture is shown over a checkerboard (the window has no alpha), at full and
+# at half resolution.
+cat >"$out/viewer-cutout.json" <<'JSON'
+{ "draught_preset": 1, "kind": "scene", "name": "lager-cutout", "description": "the pint of lager, transparent",
+  "params": { "render": { "transparent": true } },
+  "objects": [ { "name": "lager", "glass": "pint", "drink": "lager", "position": [0, 0, 0] } ] }
+JSON
+run --preset "$out/viewer-cutout.json" --size 320x240 --frames 10 --hide-panel --screenshot "$out/viewer-cutout.png"
+"$checker" "$out/viewer-cutout.png" 320 240 checkerboard
+run --preset "$out/viewer-cutout.json" --size 320x240 --frames 10 --hide-panel --quality 0 --screenshot "$out/viewer-cutout-low.png"
+"$checker" "$out/viewer-cutout-low.png" 320 240 checkerboard
 # The picture as F12 saves it (--picture: the same code after the frames), with the panel
 # shown: the scene alone, framed in the whole picture, drawn as the CLI draws a still.
 if "$viewer" --picture "$out/viewer-picture.jpg" 2>"$out/viewer-picture.err"; then
@@ -61,4 +72,4 @@ fi
 run --preset flight --size 960x540 --frames 6 --screenshot "$out/viewer-flight.png" >"$out/viewer-flight.txt"
 cat "$out/viewer-flight.txt"
 "$checker" "$out/viewer-flight.png" 960 540 uncovered flight "$out/viewer-flight.txt"
-echo "viewer screenshots: $out/viewer-glass.png $out/viewer-low.png $out/viewer-panel.png $out/viewer-picture.png $out/viewer-uncovered.png $out/viewer-flight.png"
+echo "viewer screenshots: $out/viewer-glass.png $out/viewer-low.png $out/viewer-panel.png $out/viewer-cutout.png $out/viewer-picture.png $out/viewer-uncovered.png $out/viewer-flight.png"
