@@ -418,12 +418,7 @@ int Renderer::matcap_background(const FrameState& f, const contract::FrameBlock&
   // a floor light map in this tier): droplets following a pointer keep the background whole.
   contract::FrameBlock seen;
   std::memcpy(&seen, &block, sizeof block);  // (the padding too: the key is the bytes)
-  seen.droplet_count = 0;
-  seen.droplet_kernel = 0;
-  seen.droplet_blend = seen.droplet_noise_amplitude = seen.droplet_noise_frequency = seen.droplet_lipschitz = 0.0f;
-  seen.droplet_margin = seen.droplet_ior = seen.droplet_roughness = 0.0f;
-  seen.droplet_absorption = seen.droplet_bound_lo = seen.droplet_bound_hi = glm::vec3(0.0f);
-  for (glm::vec4& s : seen.droplet_spheres) s = glm::vec4(0.0f);
+  pack_droplets({}, seen);  // (the block of the same frame without droplets)
   std::vector<unsigned char> key(sizeof seen + sizeof(void*));
   std::memcpy(key.data(), &seen, sizeof seen);
   const void* image = f.environment.image.get();

@@ -102,26 +102,35 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
     b.env_max_lod = float(m->levels.size() - 1);
     b.env_texels_per_radian = float(m->width() / (2 * 3.14159265358979));
   }
-  if (!f.droplets.empty()) {  // at most one droplets object (core/params/preset.cpp)
-    const DropletsFrame& d = f.droplets.front();
-    const DropletField& field = d.field;
-    const DropletBounds box = droplet_bounds(field);
-    b.droplet_count = box.empty ? 0 : int(std::min(field.spheres.size(), size_t(kMaxDroplets)));
-    b.droplet_kernel = int(field.kernel);
-    b.droplet_blend = float(field.blend);
-    b.droplet_noise_amplitude = float(field.noise_amplitude);
-    b.droplet_noise_frequency = float(field.noise_frequency);
-    b.droplet_lipschitz = float(droplet_lipschitz(field));
-    b.droplet_margin = float(droplet_margin(field));
-    b.droplet_ior = d.params.ior;
-    b.droplet_roughness = d.params.roughness;
-    b.droplet_absorption = d.params.absorption;
-    b.droplet_bound_lo = glm::vec3(box.lo - 2.0 * kDropletSkim);
-    b.droplet_bound_hi = glm::vec3(box.hi + 2.0 * kDropletSkim);
-    for (int i = 0; i < b.droplet_count; ++i)
-      b.droplet_spheres[i] = glm::vec4(glm::vec3(field.spheres[size_t(i)].centre), float(field.spheres[size_t(i)].radius));
-  }
+  pack_droplets(f.droplets, b);
   return b;
+}
+
+void pack_droplets(const std::vector<DropletsFrame>& droplets, contract::FrameBlock& b) {
+  // Every droplet member first (what the MatCap background's key clears, gpu/renderer).
+  b.droplet_count = b.droplet_kernel = 0;
+  b.droplet_blend = b.droplet_noise_amplitude = b.droplet_noise_frequency = b.droplet_lipschitz = 0.0f;
+  b.droplet_margin = b.droplet_ior = b.droplet_roughness = 0.0f;
+  b.droplet_absorption = b.droplet_bound_lo = b.droplet_bound_hi = glm::vec3(0.0f);
+  for (glm::vec4& s : b.droplet_spheres) s = glm::vec4(0.0f);
+  if (droplets.empty()) return;  // (at most one droplets object: core/params/preset.cpp)
+  const DropletsFrame& d = droplets.front();
+  const DropletField& field = d.field;
+  const DropletBounds box = droplet_bounds(field);
+  b.droplet_count = box.empty ? 0 : int(std::min(field.spheres.size(), size_t(kMaxDroplets)));
+  b.droplet_kernel = int(field.kernel);
+  b.droplet_blend = float(field.blend);
+  b.droplet_noise_amplitude = float(field.noise_amplitude);
+  b.droplet_noise_frequency = float(field.noise_frequency);
+  b.droplet_lipschitz = float(droplet_lipschitz(field));
+  b.droplet_margin = float(droplet_margin(field));
+  b.droplet_ior = d.params.ior;
+  b.droplet_roughness = d.params.roughness;
+  b.droplet_absorption = d.params.absorption;
+  b.droplet_bound_lo = glm::vec3(box.lo - 2.0 * kDropletSkim);
+  b.droplet_bound_hi = glm::vec3(box.hi + 2.0 * kDropletSkim);
+  for (int i = 0; i < b.droplet_count; ++i)
+    b.droplet_spheres[i] = glm::vec4(glm::vec3(field.spheres[size_t(i)].centre), float(field.spheres[size_t(i)].radius));
 }
 
 void pack_clouds(const FrameState& f, const CloudScene& clouds, contract::FrameBlock& b) {

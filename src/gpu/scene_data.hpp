@@ -28,6 +28,9 @@ using contract::DebugView;
 // The uniform block for a width x height target. debug_event: the event the PathEvent
 // view reports.
 contract::FrameBlock pack_frame_block(const FrameState&, int width, int height, DebugView, int debug_event = 0);
+// The droplets' members of the block (droplet_*): the first droplets object's field, or
+// zeros for none.
+void pack_droplets(const std::vector<DropletsFrame>&, contract::FrameBlock&);
 // The point clouds' members of the block (cloud_*, blackbody): each cloud's place in the
 // texel arrays of `clouds` (brought up to the frame's clouds) and its material.
 void pack_clouds(const FrameState&, const CloudScene& clouds, contract::FrameBlock&);

@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <set>
 
 namespace draught::test {
@@ -79,6 +80,23 @@ TEST(Contract, UniformBlockMismatchNamesTheMember) {
 // an event grazes an edge, so an event is compared only where every earlier event
 // agrees, and materials may differ on a small share of those pixels (1 %, the pixels
 // whose path grazes an edge somewhere). Distances agree to max(0.1 mm, 1e-3 t).
+TEST(Contract, ClearedDropletMembersAreTheBlockOfTheFrameWithout) {
+  // The MatCap background's key (gpu/renderer) is the block with pack_droplets({}): it
+  // must be, byte for byte, the block of the same frame with no droplets.
+  SceneRequest req;
+  req.preset = "droplets";
+  const FrameState with = make_frame(resolve_scene_objects(req));
+  ASSERT_FALSE(with.droplets.empty());
+  FrameState without = with;
+  without.droplets.clear();
+  contract::FrameBlock cleared = gpu::pack_frame_block(with, 64, 48, gpu::DebugView::None);
+  const contract::FrameBlock none = gpu::pack_frame_block(without, 64, 48, gpu::DebugView::None);
+  EXPECT_GT(cleared.droplet_count, 0);
+  EXPECT_NE(std::memcmp(&cleared, &none, sizeof cleared), 0);
+  gpu::pack_droplets({}, cleared);
+  EXPECT_EQ(std::memcmp(&cleared, &none, sizeof cleared), 0);
+}
+
 TEST(Flight, RefractedPathsThroughTwoGlassesMatchTheCpuTrace) {
   Gpu& g = gpu_instance();
   const FrameState f = on_checker_floor(make_frame(flight_scene(FlightView::AlongTheRow)));
