@@ -471,11 +471,11 @@ const BackdropLightMap& SceneTextures::backdrop_light() const {
 }
 
 void SceneTextures::describe_backdrop_light(contract::FrameBlock& b) const {
-  static const BackdropLightMap none;
-  const BackdropLightMap& m = maps_read_ ? backdrop_light() : none;
-  b.backdrop_light_on = m.empty() ? 0 : 1;
-  b.backdrop_light_origin = glm::vec2(m.origin);
-  b.backdrop_light_size = glm::vec2(m.size);
+  const BackdropLightMap& m = backdrop_light();
+  const bool on = maps_read_ && !m.empty();
+  b.backdrop_light_on = on ? 1 : 0;
+  b.backdrop_light_origin = on ? glm::vec2(m.origin) : glm::vec2(0.0f);
+  b.backdrop_light_size = on ? glm::vec2(m.size) : glm::vec2(0.0f);
 }
 
 void SceneTextures::set_floor_light(const FloorLightSettings& s, bool on, int draft_photons) {
@@ -614,11 +614,11 @@ const FloorLightMap& SceneTextures::floor_rect() const {
 }
 
 void SceneTextures::describe_floor_light(contract::FrameBlock& b) const {
-  static const FloorLightMap none;
-  const FloorLightMap& m = maps_read_ ? floor_rect() : none;
-  b.floor_light_on = m.empty() ? 0 : 1;
-  b.floor_light_origin = glm::vec2(m.origin);
-  b.floor_light_size = glm::vec2(m.size);
+  const FloorLightMap& m = floor_rect();
+  const bool on = maps_read_ && !m.empty();
+  b.floor_light_on = on ? 1 : 0;
+  b.floor_light_origin = on ? glm::vec2(m.origin) : glm::vec2(0.0f);
+  b.floor_light_size = on ? glm::vec2(m.size) : glm::vec2(0.0f);
 }
 
 void SceneTextures::bind() const {
