@@ -20,6 +20,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -172,7 +173,14 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
   if (video) sweep_legacy_part(dest);             // and this video's part from older versions
   std::optional<Encoder> encoder;
   std::optional<SequenceFolder> sequence;
-  if (video) encoder.emplace(dest, shown, req.width, req.height, fps, base.params.render.transparent);
+  // A WebM keeps alpha when any of its frames is transparent: from the start, or from a
+  // set action that makes the picture transparent (the opaque frames then have alpha 1).
+  const bool transparent =
+      base.params.render.transparent || std::any_of(timeline.actions.begin(), timeline.actions.end(), [](const TimelineAction& a) {
+        const bool* on = a.param && a.param->path == "render.transparent" ? std::get_if<bool>(&a.value) : nullptr;
+        return a.kind == TimelineAction::Kind::Set && on && *on;
+      });
+  if (video) encoder.emplace(dest, shown, req.width, req.height, fps, transparent);
   else sequence.emplace(dest, shown, anim.overwrite);
 
   auto ctx = gpu::HeadlessContext::create();

@@ -184,9 +184,12 @@ TEST_F(Animate, WritesMp4OfOddSize) {
 
 // The first frame of a WebM decoded with its alpha (libvpx's decoder: ffmpeg's own VP9
 // decoder drops the alpha plane), RGBA rows; empty when ffmpeg cannot decode it.
-std::vector<std::uint8_t> first_webm_frame(const fs::path& webm) {
-  const std::string cmd = "ffmpeg -nostdin -v error -c:v libvpx-vp9 -i '" + webm.string() +
-                          "' -frames:v 1 -pix_fmt rgba -f rawvideo - 2>/dev/null";
+// A WebM's frames as RGBA bytes, one after another (all, or the first `frames`), decoded by
+// libvpx (ffmpeg's own VP9 decoder drops the alpha plane).
+std::vector<std::uint8_t> webm_frames(const fs::path& webm, int frames = 0) {
+  const std::string cmd = "ffmpeg -nostdin -v error -c:v libvpx-vp9 -i '" + webm.string() + "'" +
+                          (frames > 0 ? " -frames:v " + std::to_string(frames) : std::string()) +
+                          " -pix_fmt rgba -f rawvideo - 2>/dev/null";
   std::vector<std::uint8_t> bytes;
   if (FILE* f = popen(cmd.c_str(), "r")) {
     std::uint8_t buf[4096];
@@ -207,7 +210,7 @@ TEST_F(Animate, WritesTransparentWebmWithItsAlpha) {
   EXPECT_EQ(b.substr(0, 4), "\x1A\x45\xDF\xA3") << "not a Matroska/WebM file (no EBML header)";
   EXPECT_TRUE(contains(b, "webm")) << "the EBML header does not name the webm doc type";
   EXPECT_EQ(join(list_tree(out())), "cutout.webm") << "leftover .part or other files";
-  const std::vector<std::uint8_t> px = first_webm_frame(webm);
+  const std::vector<std::uint8_t> px = webm_frames(webm, 1);
   ASSERT_EQ(px.size(), size_t(48 * 48 * 4)) << "ffmpeg could not decode the WebM's first frame";
   auto at = [&](int x, int y) { return &px[(size_t(y) * 48 + size_t(x)) * 4]; };
   EXPECT_LT(at(0, 0)[3], 8) << "a corner (nothing there) is not transparent";
@@ -217,12 +220,31 @@ TEST_F(Animate, WritesTransparentWebmWithItsAlpha) {
   EXPECT_GT(lager[0], lager[2] + 60) << "the lager is not gold";
 }
 
+TEST_F(Animate, AWebmKeepsAlphaWhenATimelineMakesThePictureTransparent) {
+  // Opaque at the start, transparent from a set action on: the WebM has its alpha plane.
+  write_file(in() / "cut.json",
+             R"({"draught_timeline": 1, "name": "cut", "preset": "lager", "duration": 1, "actions": [
+                 {"at": 0.5, "action": "set", "param": "render.transparent", "value": true}]})");
+  const fs::path webm = out() / "cut.webm";
+  auto r = animate((in() / "cut.json").string(), {"-o", webm.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.describe();
+  const std::vector<std::uint8_t> px = webm_frames(webm);
+  const size_t frame = 48 * 48 * 4;
+  ASSERT_EQ(px.size(), 4 * frame) << "ffmpeg could not decode the WebM's four frames";
+  EXPECT_EQ(px[3], 255) << "the first frame (opaque) is not";
+  const std::uint8_t* last = &px[3 * frame];
+  EXPECT_LT(last[3], 8) << "the last frame's corner (nothing there) is not transparent";
+  const std::uint8_t* lager = &last[(27 * 48 + 24) * 4];
+  EXPECT_GT(lager[3], 180) << "the drink is not covered";
+  EXPECT_GT(lager[0], lager[2] + 60) << "the lager is not gold";
+}
+
 TEST_F(Animate, WritesOpaqueWebm) {
   const fs::path webm = out() / "clip.webm";
   auto r = animate("gentle-tilt", {"--size", "31x17", "--duration", "0.5", "-o", webm.string()});
   ASSERT_EQ(r.exit_code, 0) << r.describe();
   EXPECT_EQ(read_file(webm).substr(0, 4), "\x1A\x45\xDF\xA3");
-  const std::vector<std::uint8_t> px = first_webm_frame(webm);
+  const std::vector<std::uint8_t> px = webm_frames(webm, 1);
   ASSERT_EQ(px.size(), size_t(31 * 17 * 4)) << "odd sizes are kept (VP9 takes them)";
   EXPECT_EQ(px[3], 255) << "an opaque picture's WebM is opaque";
 }
