@@ -119,6 +119,16 @@ class Playback {
   std::vector<TimelineDriver> drivers_;
 };
 
+// Whether a frame of the timeline is transparent: from the start, or from a set action
+// that makes the picture transparent (a WebM then keeps alpha; its opaque frames have 1).
+bool any_frame_transparent(const Timeline& timeline, const Scene& base) {
+  return base.params.render.transparent ||
+         std::any_of(timeline.actions.begin(), timeline.actions.end(), [](const TimelineAction& a) {
+           const bool* on = a.param && a.param->path == "render.transparent" ? std::get_if<bool>(&a.value) : nullptr;
+           return a.kind == TimelineAction::Kind::Set && on && *on;
+         });
+}
+
 }  // namespace
 
 int render_timeline_still(const RenderRequest& req, const AnimateRequest& anim, double at) {
@@ -173,14 +183,7 @@ int animate(const RenderRequest& req, const AnimateRequest& anim) {
   if (video) sweep_legacy_part(dest);             // and this video's part from older versions
   std::optional<Encoder> encoder;
   std::optional<SequenceFolder> sequence;
-  // A WebM keeps alpha when any of its frames is transparent: from the start, or from a
-  // set action that makes the picture transparent (the opaque frames then have alpha 1).
-  const bool transparent =
-      base.params.render.transparent || std::any_of(timeline.actions.begin(), timeline.actions.end(), [](const TimelineAction& a) {
-        const bool* on = a.param && a.param->path == "render.transparent" ? std::get_if<bool>(&a.value) : nullptr;
-        return a.kind == TimelineAction::Kind::Set && on && *on;
-      });
-  if (video) encoder.emplace(dest, shown, req.width, req.height, fps, transparent);
+  if (video) encoder.emplace(dest, shown, req.width, req.height, fps, any_frame_transparent(timeline, base));
   else sequence.emplace(dest, shown, anim.overwrite);
 
   auto ctx = gpu::HeadlessContext::create();
