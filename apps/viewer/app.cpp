@@ -69,8 +69,8 @@ void over_checkerboard(unsigned texture) {
   list->AddRectFilled(ImVec2(0, 0), size, IM_COL32(0xa8, 0xa8, 0xa8, 0xff));
   for (int j = 0; float(j) * kSquare < size.y; ++j)
     for (int i = (j + 1) % 2; float(i) * kSquare < size.x; i += 2)
-      list->AddRectFilled(ImVec2(float(i) * kSquare, float(j) * kSquare), ImVec2(float(i + 1) * kSquare, float(j + 1) * kSquare),
-                          IM_COL32(0x8c, 0x8c, 0x8c, 0xff));
+      list->AddRectFilled(ImVec2(float(i) * kSquare, float(j) * kSquare),
+                          ImVec2(float(i + 1) * kSquare, float(j + 1) * kSquare), IM_COL32(0x8c, 0x8c, 0x8c, 0xff));
   list->AddCallback(premultiplied_over, nullptr);
   list->AddImage(reinterpret_cast<ImTextureID>(std::intptr_t(texture)), ImVec2(0, 0), size, ImVec2(0, 1), ImVec2(1, 0));
   list->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
