@@ -1,7 +1,6 @@
 #include "core/io/image.hpp"
 
 #include "core/io/files.hpp"
-#include "core/math/srgb.hpp"
 #include "core/text/echo.hpp"
 
 #include <algorithm>
@@ -13,17 +12,6 @@
 #include <stb_image_write.h>
 
 namespace draught {
-
-double srgb8_to_linear(std::uint8_t code) {
-  static const std::array<double, 256> table = [] {
-    std::array<double, 256> t{};
-    for (int i = 0; i < 256; ++i) t[size_t(i)] = srgb_to_linear(i / 255.0);
-    return t;
-  }();
-  return table[code];
-}
-
-std::uint8_t linear_to_srgb8(double c) { return std::uint8_t(std::lround(linear_to_srgb(c) * 255.0)); }
 
 Image downsample(const Image& in, int f) {
   if (f <= 1) return in;

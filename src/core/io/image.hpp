@@ -1,6 +1,8 @@
 // 8-bit RGBA images, rows top-down; PNG in and out through stb.
 #pragma once
 
+#include "core/math/srgb.hpp"  // (the 8-bit codes of its pictures)
+
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -15,11 +17,6 @@ struct Image {
   std::uint8_t* px(int x, int y) { return &rgba[(size_t(y) * size_t(width) + size_t(x)) * 4]; }
   const std::uint8_t* px(int x, int y) const { return &rgba[(size_t(y) * size_t(width) + size_t(x)) * 4]; }
 };
-
-// An 8-bit sRGB code as linear light (0-1; a table of the 256), and linear light (clamped
-// to 0-1) as the nearest 8-bit sRGB code.
-double srgb8_to_linear(std::uint8_t code);
-std::uint8_t linear_to_srgb8(double c);
 
 // Box filter over factor x factor blocks of display values (a transparent picture's
 // supersamples, each already tone mapped; opaque ones are resolved before the tone map:

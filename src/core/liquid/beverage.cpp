@@ -118,8 +118,6 @@ namespace {
 constexpr int kFitLengths = 15;
 double fit_length(int j) { return 0.001 * std::pow(2.0, 0.5 * j); }
 
-// sRGB's transfer function: the error as the eye weighs it.
-double encode(double linear) { return linear_to_srgb(linear); }
 
 struct Band {
   double share, rate;
@@ -198,7 +196,9 @@ DrinkAbsorption spectrum_to_bands(const std::function<double(double)>& absorbanc
       double e = 0;
       for (int j = 0; j < kFitLengths; ++j) {
         const double L = fit_length(j);
-        const double d = encode(f.share * std::exp(-f.rate * L) + s.share * std::exp(-s.rate * L)) - encode(whole[size_t(j)]);
+        // (the error in sRGB codes: as the eye weighs it)
+        const double two_bands = f.share * std::exp(-f.rate * L) + s.share * std::exp(-s.rate * L);
+        const double d = linear_to_srgb(two_bands) - linear_to_srgb(whole[size_t(j)]);
         e += d * d;
       }
       if (e >= best) continue;
@@ -214,7 +214,7 @@ DrinkAbsorption spectrum_to_bands(const std::function<double(double)>& absorbanc
       for (int j = 0; j < kFitLengths; ++j) {
         const double L = fit_length(j);
         const double t = x[2] * std::exp(-std::exp(x[0]) * L) + (1 - x[2]) * std::exp(-std::exp(x[1]) * L);
-        const double d = encode(t) - encode(whole[size_t(j)]);
+        const double d = linear_to_srgb(t) - linear_to_srgb(whole[size_t(j)]);
         e += d * d;
       }
       return e;

@@ -34,7 +34,7 @@ inline double aces_filmic_inverse(double y) {
 inline std::uint8_t display_code(double c, int tonemap) {
   if (!(c > 0.0)) c = 0.0;  // (and NaN)
   if (tonemap == int(Tonemap::Aces)) c = aces_filmic(std::min(c, 1e30));
-  return std::uint8_t(std::lround(linear_to_srgb(c) * 255.0));
+  return linear_to_srgb8(c);
 }
 
 // One linear radiance to its 8-bit display value under the render settings.
