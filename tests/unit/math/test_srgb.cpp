@@ -1,7 +1,6 @@
 // core/math/srgb.hpp: sRGB's transfer function against the standard's figures, each way
-// the inverse of the other, continuous where its two pieces meet; the 8-bit tables of
-// core/io/image built from it.
-#include "core/io/image.hpp"
+// the inverse of the other, continuous where its two pieces meet; its 8-bit codes built
+// from it.
 #include "core/math/srgb.hpp"
 
 #include <gtest/gtest.h>
