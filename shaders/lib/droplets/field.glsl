@@ -12,9 +12,9 @@
 
 const float DROPLET_SKIM = 4.0 * DROPLET_HIT_EPS;  // core: kDropletSkim
 const float DROPLET_RELAX = 1.6;                   // core: kDropletRelax
-const int DROPLET_BISECTIONS = 6;                  // core: kDropletBisections
-// Samples of one march at most: the start, two a step, the bisections.
-const int DROPLET_MAX_SAMPLES = 2 * DROPLET_MAX_STEPS + DROPLET_BISECTIONS + 1;
+const int DROPLET_REFINEMENTS = 3;                 // core: kDropletRefinements
+// Samples of one march at most: the start, two a step, the refinements.
+const int DROPLET_MAX_SAMPLES = 2 * DROPLET_MAX_STEPS + DROPLET_REFINEMENTS + 1;
 
 // Twin of droplet_smin: the quadratic smooth minimum and the weight of a in its gradient.
 float droplet_smin(float a, float b, float k, out float wa) {
@@ -130,12 +130,12 @@ bool droplet_sphere_span(vec3 o, vec3 d, inout float t0, inout float t1) {
 // Twin of march_droplets: the first crossing along o + t d in [tmin, tmax], from outside
 // (inside false) or from within a droplet; the same samples as the reference, in the
 // same order. One field sample per iteration of a single loop (the start, a relaxed step,
-// its fallback, a skim, each bisection): llvmpipe and SwiftShader run a loop's body under
+// its fallback, a skim, each refinement of a crossing, by the Illinois method): llvmpipe and SwiftShader run a loop's body under
 // a mask for every pixel of a SIMD group while any of them needs it, and code behind an
 // untaken branch too, so a march whose step sampled twice and held its sixteen
 // bisections in a loop of their own cost a SIMD group about eighteen samples for every
 // step any of its pixels took (docs/PERFORMANCE.md, "Droplets").
-const int DROPLET_MODE_START = 0, DROPLET_MODE_RELAXED = 1, DROPLET_MODE_STEP = 2, DROPLET_MODE_BISECT = 3;
+const int DROPLET_MODE_START = 0, DROPLET_MODE_RELAXED = 1, DROPLET_MODE_STEP = 2, DROPLET_MODE_REFINE = 3;
 bool march_droplets(vec3 o, vec3 d, float tmin, float tmax, bool inside, out float t_hit, out vec3 n) {
   t_hit = INF;
   n = vec3(0.0);
@@ -146,35 +146,43 @@ bool march_droplets(vec3 o, vec3 d, float tmin, float tmax, bool inside, out flo
   bool spans = t0 <= t1 && droplet_sphere_span(o, d, t0, t1);
   float L = frame.droplet_lipschitz, A = frame.droplet_noise_amplitude, sgn = inside ? -1.0 : 1.0;
   // t: the march's point (value >= 0 there, gradient gt), r: the radius free of the
-  // surface around it; x: the next sample; e: the far end of a bracket being bisected.
-  float t = t0, r = 0.0, x = t0, e = t0, vt = 0.0, ve = 0.0;
+  // surface around it; x: the next sample; e: the far end of a bracket being refined, wt
+  // and we the values its line uses (halved at an end kept twice in a row), kept the end
+  // kept last (+1 t, -1 e).
+  float t = t0, r = 0.0, x = t0, e = t0, vt = 0.0, ve = 0.0, wt = 0.0, we = 0.0;
   vec3 gt = vec3(0.0), ge = vec3(0.0);
-  int mode = DROPLET_MODE_START, count = 0;
+  int mode = DROPLET_MODE_START, count = 0, kept = 0;
   bool going = spans, hit = false;
   for (int i = 0; i < DROPLET_MAX_SAMPLES; ++i) {
     if (!going) break;
     float blend;
     vec4 f = droplet_field_parts(o + x * d, blend);
     float v = sgn * f.x, rx = max(v / L, sgn * blend - A);
-    if (mode == DROPLET_MODE_BISECT) {
+    if (mode == DROPLET_MODE_REFINE) {
       ++count;
       if (v < 0.0) {
         e = x;
         ve = v;
+        we = v;
         ge = f.yzw;
+        if (kept > 0) wt *= 0.5;
+        kept = 1;
       } else {
         t = x;
         vt = v;
+        wt = v;
         gt = f.yzw;
+        if (kept < 0) we *= 0.5;
+        kept = -1;
       }
-      if (count == DROPLET_BISECTIONS) {
+      if (count == DROPLET_REFINEMENTS) {
         hit = true;
         going = false;
         float w = vt / (vt - ve);
         t_hit = t + (e - t) * w;
         n = mix(gt, ge, w);
       } else {
-        x = 0.5 * (t + e);
+        x = t + (e - t) * (wt / (wt - we));
       }
     } else {
       bool crossed = v < 0.0;
@@ -193,9 +201,12 @@ bool march_droplets(vec3 o, vec3 d, float tmin, float tmax, bool inside, out flo
       } else if (crossed) {
         e = x;
         ve = v;
+        we = v;
+        wt = vt;
+        kept = 0;
         ge = f.yzw;
-        x = 0.5 * (t + e);
-        mode = DROPLET_MODE_BISECT;
+        x = t + (e - t) * (wt / (wt - we));
+        mode = DROPLET_MODE_REFINE;
         count = 0;
       } else if (count == DROPLET_MAX_STEPS) {
         going = false;

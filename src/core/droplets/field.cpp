@@ -187,21 +187,32 @@ std::optional<DropletHit> march_droplets(const DropletField& f, glm::dvec3 o, gl
     h.steps = steps;
     return h;
   };
-  // The crossing between a (value va >= 0, gradient ga) and b (value vb < 0, gradient gb):
-  // bisected, then placed by the line through the bracket's ends, the normal the
-  // gradients' mix at the same share (the bracket is a few hundredths of a millimetre).
+  // The crossing between a (value va >= 0, gradient ga) and b (value vb < 0, gradient gb),
+  // a bracket no longer than a skim: narrowed by the Illinois method (each sample where the
+  // line through the ends' values crosses zero; an end kept twice in a row has the value
+  // the line uses halved, so the other end moves too), then placed by the line through the
+  // ends' own values, the normal the gradients' mix at the same share. Three steps leave
+  // the hit as close to the surface as six bisections did (0.1 nm on the droplet scenes'
+  // rays; on rays grazing it, tests/unit/droplets, as close to the first crossing); two
+  // leave grazing rays' hits micrometres past it, where a dip's curve is steep in the bracket.
   auto refine = [&](double a, double va, glm::dvec3 ga, double b, double vb, glm::dvec3 gb, int steps) {
-    for (int i = 0; i < kDropletBisections; ++i) {
-      const double m = 0.5 * (a + b);
+    double wa = va, wb = vb;
+    int kept = 0;  // +1: a was kept last, -1: b
+    for (int i = 0; i < kDropletRefinements; ++i) {
+      const double m = a + (b - a) * (wa / (wa - wb));
       const Sample s = sample(m);
       if (s.v < 0) {
         b = m;
-        vb = s.v;
+        vb = wb = s.v;
         gb = s.grad;
+        if (kept > 0) wa *= 0.5;
+        kept = 1;
       } else {
         a = m;
-        va = s.v;
+        va = wa = s.v;
         ga = s.grad;
+        if (kept < 0) wb *= 0.5;
+        kept = -1;
       }
     }
     const double w = va / (va - vb);

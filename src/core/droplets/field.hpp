@@ -97,16 +97,18 @@ struct DropletHit {
 // a fraction of it. A step is that radius (it never passes the surface), over-relaxed by
 // kDropletRelax where the free spheres at both ends overlap, and where the value is below
 // kDropletHitEps a skim step of kDropletSkim; every step's end is sampled, and a sign
-// change there is refined by kDropletBisections bisections and placed by the line through
-// the bracket's ends (the hit lies on the surface to within tens of nanometres, not within
-// eps of it; its normal is the bracket ends' gradients mixed at the same share). What
+// change there (a bracket no longer than a skim) is narrowed by kDropletRefinements
+// steps of the Illinois method (regula falsi, the value at an end kept twice in a row
+// halved) and the hit placed by the line through the bracket's ends (it lies on the
+// surface to within a nanometre, not within eps of it; its normal is the bracket ends'
+// gradients mixed at the same share). What
 // a skim step can miss: a dip through the surface shorter than the skim, i.e. less than
 // skim^2 kappa / 8 deep for curvature kappa (under a micrometre for droplets of
 // millimetres; tests/unit/droplets). At most kDropletMaxSteps steps.
 // Twin: march_droplets in lib/droplets/field.glsl (float, the same samples in the same
 // order, one per iteration of a single loop).
 inline constexpr double kDropletSkim = 4.0 * kDropletHitEps;
-inline constexpr int kDropletBisections = 6;
+inline constexpr int kDropletRefinements = 3;
 inline constexpr double kDropletRelax = 1.6;
 std::optional<DropletHit> march_droplets(const DropletField&, glm::dvec3 o, glm::dvec3 d, double tmin,
                                          double tmax, bool inside);
