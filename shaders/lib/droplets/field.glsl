@@ -130,11 +130,11 @@ bool droplet_sphere_span(vec3 o, vec3 d, inout float t0, inout float t1) {
 // Twin of march_droplets: the first crossing along o + t d in [tmin, tmax], from outside
 // (inside false) or from within a droplet; the same samples as the reference, in the
 // same order. One field sample per iteration of a single loop (the start, a relaxed step,
-// its fallback, a skim, each refinement of a crossing, by the Illinois method): llvmpipe and SwiftShader run a loop's body under
-// a mask for every pixel of a SIMD group while any of them needs it, and code behind an
-// untaken branch too, so a march whose step sampled twice and held its sixteen
-// bisections in a loop of their own cost a SIMD group about eighteen samples for every
-// step any of its pixels took (docs/PERFORMANCE.md, "Droplets").
+// its fallback, a skim, each Illinois step narrowing a crossing): llvmpipe and SwiftShader
+// run a loop's body under a mask for every pixel of a SIMD group while any of them needs
+// it, and code behind an untaken branch too, so a march whose step sampled twice and held
+// its sixteen bisections in a loop of their own cost a SIMD group about eighteen samples
+// for every step any of its pixels took (docs/PERFORMANCE.md, "Droplets").
 const int DROPLET_MODE_START = 0, DROPLET_MODE_RELAXED = 1, DROPLET_MODE_STEP = 2, DROPLET_MODE_REFINE = 3;
 bool march_droplets(vec3 o, vec3 d, float tmin, float tmax, bool inside, out float t_hit, out vec3 n) {
   t_hit = INF;
