@@ -152,7 +152,7 @@ bool march_droplets(vec3 o, vec3 d, float tmin, float tmax, bool inside, out flo
   float t = t0, r = 0.0, x = t0, e = t0, vt = 0.0, ve = 0.0, wt = 0.0, we = 0.0;
   vec3 gt = vec3(0.0), ge = vec3(0.0);
   int mode = DROPLET_MODE_START, count = 0, kept = 0;
-  bool going = spans, hit = false;
+  bool going = spans, hit = false, plain = false;
   for (int i = 0; i < DROPLET_MAX_SAMPLES; ++i) {
     if (!going) break;
     float blend;
@@ -191,6 +191,7 @@ bool march_droplets(vec3 o, vec3 d, float tmin, float tmax, bool inside, out flo
       if (mode == DROPLET_MODE_RELAXED && (crossed || r + rx < x - t)) {
         x = t + r;
         mode = DROPLET_MODE_STEP;
+        plain = true;  // and the step after it a safe one without a try
       } else if (mode == DROPLET_MODE_START && crossed) {
         hit = true;  // starts on the surface (within rounding)
         going = false;
@@ -212,14 +213,15 @@ bool march_droplets(vec3 o, vec3 d, float tmin, float tmax, bool inside, out flo
         going = false;
       } else {
         // Advance to x and plan the next step: a skim where the value is below eps, else
-        // the relaxed step.
+        // the relaxed step (the safe one after a failed try).
         t = x;
         vt = v;
         gt = f.yzw;
         r = rx;
-        bool skim = v < DROPLET_HIT_EPS;
-        x = skim ? t + DROPLET_SKIM : t + DROPLET_RELAX * r;
-        mode = skim ? DROPLET_MODE_STEP : DROPLET_MODE_RELAXED;
+        bool skim = v < DROPLET_HIT_EPS, relaxed = !skim && !plain;
+        x = skim ? t + DROPLET_SKIM : t + (relaxed ? DROPLET_RELAX : 1.0) * r;
+        mode = relaxed ? DROPLET_MODE_RELAXED : DROPLET_MODE_STEP;
+        plain = false;
         ++count;
       }
     }

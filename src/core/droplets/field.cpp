@@ -221,17 +221,22 @@ std::optional<DropletHit> march_droplets(const DropletField& f, glm::dvec3 o, gl
   double t = t0;
   Sample at = sample(t);
   if (at.v < 0) return hit_at(t, at, 0);  // starts on the surface (within rounding)
+  bool plain = false;  // the step after a failed relaxed one
   for (int step = 1; step <= kDropletMaxSteps; ++step) {
     // Over-relaxed (Keinert et al. 2014): try kDropletRelax x the safe step; it is kept
     // only if the spheres free of the surface at both ends overlap (no gap where the
-    // surface could hide) and it did not land inside; else the safe step is taken. Near
-    // the surface a skim step instead, whose sign change is a crossing.
-    const bool skim = at.v < kDropletHitEps;
-    double next = skim ? t + kDropletSkim : t + kDropletRelax * at.r;
+    // surface could hide) and it did not land inside; else the safe step is taken, and
+    // the next step is a safe one without a try (near the surface, where the free radius
+    // is close to the distance, most tries fail: each costs a sample). Near the surface a
+    // skim step instead, whose sign change is a crossing.
+    const bool skim = at.v < kDropletHitEps, relaxed = !skim && !plain;
+    double next = skim ? t + kDropletSkim : t + (relaxed ? kDropletRelax : 1.0) * at.r;
     Sample s = sample(next);
-    if (!skim && (s.v < 0 || at.r + s.r < next - t)) {
+    plain = false;
+    if (relaxed && (s.v < 0 || at.r + s.r < next - t)) {
       next = t + at.r;
       s = sample(next);
+      plain = true;
     }
     if (next > t1) return std::nullopt;
     if (s.v < 0) return refine(t, at.v, at.grad, next, s.v, s.grad, step);

@@ -95,7 +95,8 @@ struct DropletHit {
 // b (before the noise, 1-Lipschitz) exceeds the noise amplitude A, b - A if larger (the
 // surface needs b <= A), so far from the droplets the steps are the blend's distance, not
 // a fraction of it. A step is that radius (it never passes the surface), over-relaxed by
-// kDropletRelax where the free spheres at both ends overlap, and where the value is below
+// kDropletRelax where the free spheres at both ends overlap (after a try that fails, the
+// safe step and then one more without a try), and where the value is below
 // kDropletHitEps a skim step of kDropletSkim; every step's end is sampled, and a sign
 // change there (a bracket no longer than a skim) is narrowed by kDropletRefinements
 // steps of the Illinois method (regula falsi, the value at an end kept twice in a row
