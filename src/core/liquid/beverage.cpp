@@ -118,7 +118,6 @@ namespace {
 constexpr int kFitLengths = 15;
 double fit_length(int j) { return 0.001 * std::pow(2.0, 0.5 * j); }
 
-
 struct Band {
   double share, rate;
 };
