@@ -78,6 +78,7 @@ if(DRAUGHT_TESTS)
       COMMAND bash -c "echo 'viewer_screenshot: xvfb-run not found: install the Debian packages xvfb and xauth (scripts/deps.sh does), then re-run cmake' >&2; exit 1")
   endif()
   set_tests_properties(viewer_screenshot PROPERTIES
-    ENVIRONMENT "LIBGL_ALWAYS_SOFTWARE=1;SDL_VIDEODRIVER=x11"
+    # (GALLIVM_PERF: llvmpipe's JIT without LLVM's passes, as the GPU tests; see tests/CMakeLists.txt.)
+    ENVIRONMENT "LIBGL_ALWAYS_SOFTWARE=1;SDL_VIDEODRIVER=x11;GALLIVM_PERF=nopt"
     TIMEOUT 180)
 endif()

@@ -26,5 +26,6 @@ if [ $# -gt 0 ]; then
   done
 fi
 cmake --build build -j"$(nproc)" --target gpu_tests
-DRAUGHT_DEVICE=software ./build/tests/gpu_tests --gtest_filter="$filter" --bless
+# (The environment CTest gives the GPU tests, tests/CMakeLists.txt.)
+DRAUGHT_DEVICE=software GALLIVM_PERF=nopt ./build/tests/gpu_tests --gtest_filter="$filter" --bless
 echo "$done_message"
