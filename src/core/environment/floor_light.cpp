@@ -97,10 +97,19 @@ struct Lane {
   FloorLightStats stats;
 };
 
+// The world the floor's light is traced in: the studio's, a transparent picture's too (the
+// floor its glasses mirror and its reflection panoramas draw is the opaque world's;
+// scene_geometry leaves a cutout's backdrop out for the paths that would meet it).
+SceneGeometry lit_geometry(const FrameState& f, bool with_decals = false) {
+  SceneGeometry g = scene_geometry(f, with_decals);
+  g.backdrop.present = f.backdrop.present;
+  return g;
+}
+
 class PhotonTracer {
  public:
   PhotonTracer(const FrameState& f, const FloorLightMap& map)
-      : geo_(scene_geometry(f, true)), bodies_(f, true), map_(map) {  // (with the walls' decals: they cast shadows)
+      : geo_(lit_geometry(f, true)), bodies_(f, true), map_(map) {  // (with the walls' decals: they cast shadows)
     // The heads without their big bubbles (ignored, as the rising bubbles).
     frames_.reserve(f.vessels.size());
     for (const VesselFrame& vf : f.vessels) {
@@ -686,7 +695,7 @@ FloorLightTrace::FloorLightTrace(const FrameState& f, const FloorLightSettings& 
   st.settings = s;
   const ImagePatches patches = floor_emitter_patches(f);  // (an image's: its light for both parts)
   st.emitters = emitters_of(f, patches);
-  if (!scene_geometry(f).backdrop.present || st.emitters.lights.empty()) return;
+  if (!lit_geometry(f).backdrop.present || st.emitters.lights.empty()) return;
   st.tracer = std::make_unique<PhotonTracer>(st.frame, st.map);
   std::vector<Caster> casters;
   for (const VesselFrame& v : f.vessels) {
@@ -901,7 +910,7 @@ std::vector<double> floor_light_inputs(const FrameState& f) {
   // head settling, stop changing the map once nothing the map shows moves any more.
   auto put = [&k](auto... xs) { (k.push_back(std::round(double(xs) * 1e5)), ...); };
   auto put3 = [&put](const auto& v) { put(v.x, v.y, v.z); };
-  const SceneGeometry geo = scene_geometry(f);
+  const SceneGeometry geo = lit_geometry(f);
   const BackdropSurface& b = geo.backdrop;
   const LightRig emitters = floor_emitters(f);
   put(b.present ? 1 : 0, int(b.kind), b.plane ? 1 : 0, b.z_curve, b.radius, emitters.lights.size(), f.vessels.size());
