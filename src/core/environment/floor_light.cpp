@@ -695,7 +695,7 @@ FloorLightTrace::FloorLightTrace(const FrameState& f, const FloorLightSettings& 
   st.settings = s;
   const ImagePatches patches = floor_emitter_patches(f);  // (an image's: its light for both parts)
   st.emitters = emitters_of(f, patches);
-  if (!lit_geometry(f).backdrop.present || st.emitters.lights.empty()) return;
+  if (!f.backdrop.present || st.emitters.lights.empty()) return;  // (the studio's: lit_geometry)
   st.tracer = std::make_unique<PhotonTracer>(st.frame, st.map);
   std::vector<Caster> casters;
   for (const VesselFrame& v : f.vessels) {
