@@ -3,6 +3,7 @@
 #include "generated/constants.hpp"
 #include "generated/frame.hpp"
 #include "gpu/framebuffer.hpp"
+#include "core/math/constants.hpp"
 
 #include <GLES3/gl3.h>
 
@@ -13,7 +14,6 @@
 namespace draught::gpu {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 }
 
 glm::dvec2 panorama_st(const glm::dvec3& d) {

@@ -96,6 +96,8 @@ inline Scene flight_scene(FlightView view = FlightView::StraightOn, std::vector<
   }
   return s;
 }
+inline FrameState flight_front() { return make_frame(flight_scene(FlightView::StraightOn)); }
+inline FrameState flight_angle() { return make_frame(flight_scene(FlightView::AtAnAngle)); }
 
 // Set by gpu_tests --bless: golden tests write their renders as the new goldens, and
 // reference comparisons path-trace and store their references (stored_reference.hpp).

@@ -22,7 +22,7 @@
 namespace draught::test {
 namespace {
 
-constexpr int kW = 96, kH = 72;
+constexpr int kBackdropW = 96, kBackdropH = 72;
 
 // The default packshot studio around a pint (or `sets` on it), seen through `camera`, the
 // glass moved far out of sight after the studio was placed around it.
@@ -46,11 +46,11 @@ TEST(BackdropLightTwins, CoordsAndLightAgreeWithCore) {
   for (int checker = 0; checker < 2; ++checker)
     for (const auto& camera : kViews) {
       const FrameState f = sweep_frame(checker ? std::vector<std::string>{"env.backdrop=checker"} : std::vector<std::string>{}, camera);
-      const gpu::DebugImage d = g.renderer->render_debug(f, kW, kH, gpu::DebugView::BackdropLight);
-      const CameraBasis cam = camera_basis(f, kW, kH);
-      for (int y = 0; y < kH; ++y)
-        for (int x = 0; x < kW; ++x) {
-          const Ray r = camera_ray(cam, x + 0.5, y + 0.5, kW, kH);
+      const gpu::DebugImage d = g.renderer->render_debug(f, kBackdropW, kBackdropH, gpu::DebugView::BackdropLight);
+      const CameraBasis cam = camera_basis(f, kBackdropW, kBackdropH);
+      for (int y = 0; y < kBackdropH; ++y)
+        for (int x = 0; x < kBackdropW; ++x) {
+          const Ray r = camera_ray(cam, x + 0.5, y + 0.5, kBackdropW, kBackdropH);
           double t;
           glm::dvec3 n;
           if (!f.backdrop.intersect(r.o, r.d, 0.0, t, n) || d.px(x, y)[3] < 0.5) continue;
@@ -81,21 +81,21 @@ TEST(BackdropLightPicture, TheSweepIsWithinOneStepOfTheExactShading) {
   double worst = 0;
   for (const auto& camera : kViews) {
     const FrameState f = sweep_frame({"env.sky_top=0,0,0", "env.sky_horizon=0,0,0", "env.ground=0,0,0"}, camera);
-    const Image img = g.renderer->render(f, kW, kH);
-    const CameraBasis cam = camera_basis(f, kW, kH);
+    const Image img = g.renderer->render(f, kBackdropW, kBackdropH);
+    const CameraBasis cam = camera_basis(f, kBackdropW, kBackdropH);
     const RenderParams& rp = f.params.render;
-    for (int y = 1; y + 1 < kH; ++y)
-      for (int x = 1; x + 1 < kW; ++x) {
+    for (int y = 1; y + 1 < kBackdropH; ++y)
+      for (int x = 1; x + 1 < kBackdropW; ++x) {
         bool clear = true;  // no light in the pixel or beside it
         for (int dy = -1; dy <= 1; ++dy)
           for (int dx = -1; dx <= 1; ++dx) {
-            const Ray r = camera_ray(cam, x + dx + 0.5, y + dy + 0.5, kW, kH);
+            const Ray r = camera_ray(cam, x + dx + 0.5, y + dy + 0.5, kBackdropW, kBackdropH);
             for (const AreaLight& l : f.lights.lights) {
               double t;
               clear = clear && !l.intersect(r.o, r.d, 0.0, t);
             }
           }
-        const Ray r = camera_ray(cam, x + 0.5, y + 0.5, kW, kH);
+        const Ray r = camera_ray(cam, x + 0.5, y + 0.5, kBackdropW, kBackdropH);
         double t;
         glm::dvec3 n;
         if (!clear || !f.backdrop.intersect(r.o, r.d, 0.0, t, n)) continue;
@@ -120,18 +120,18 @@ TEST(BackdropLightPicture, TheSweepIsWithinOneStepOfTheExactShading) {
 TEST(BackdropLightPicture, TheMapIsComputedOnlyWhenTheLightsOrTheBackdropChange) {
   Gpu& g = gpu_instance();
   const FrameState f = sweep_frame({"light.power=5.5"}, kViews[0]);
-  g.renderer->render(f, kW, kH);
+  g.renderer->render(f, kBackdropW, kBackdropH);
   EXPECT_TRUE(g.renderer->scene_textures().backdrop_light_computed());
   ASSERT_FALSE(g.renderer->scene_textures().backdrop_light().empty());
-  g.renderer->render(f, kW, kH);
+  g.renderer->render(f, kBackdropW, kBackdropH);
   EXPECT_FALSE(g.renderer->scene_textures().backdrop_light_computed()) << "an unchanged frame computed the map again";
   FrameState tipped = f;
   tipped.vessels[0].pose.orientation = glm::angleAxis(0.2, glm::dvec3(1, 0, 0));
-  g.renderer->render(tipped, kW, kH);
+  g.renderer->render(tipped, kBackdropW, kBackdropH);
   EXPECT_FALSE(g.renderer->scene_textures().backdrop_light_computed()) << "a tipped glass moves no light";
-  g.renderer->render(sweep_frame({"light.power=5.4"}, kViews[0]), kW, kH);
+  g.renderer->render(sweep_frame({"light.power=5.4"}, kViews[0]), kBackdropW, kBackdropH);
   EXPECT_TRUE(g.renderer->scene_textures().backdrop_light_computed()) << "a dimmer key kept the old map";
-  g.renderer->render(sweep_frame({"light.power=5.4", "env.sweep_radius=0.25"}, kViews[0]), kW, kH);
+  g.renderer->render(sweep_frame({"light.power=5.4", "env.sweep_radius=0.25"}, kViews[0]), kBackdropW, kBackdropH);
   EXPECT_TRUE(g.renderer->scene_textures().backdrop_light_computed()) << "another sweep kept the old map";
 }
 

@@ -24,7 +24,7 @@
 namespace draught::test {
 namespace {
 
-constexpr int kW = 64, kH = 48;
+constexpr int kMarchW = 64, kMarchH = 48;
 
 const char* kProbeMain = R"(
 uniform vec3 u_eye, u_fwd, u_right, u_up;
@@ -55,7 +55,7 @@ gpu::Program probe_program() {
 struct Camera {
   glm::vec3 eye, fwd, right, up;
   glm::vec3 dir(int x, int y) const {
-    const glm::vec2 uv = glm::vec2((float(x) + 0.5f) / float(kW), (float(y) + 0.5f) / float(kH)) * 2.0f - 1.0f;
+    const glm::vec2 uv = glm::vec2((float(x) + 0.5f) / float(kMarchW), (float(y) + 0.5f) / float(kMarchH)) * 2.0f - 1.0f;
     return glm::normalize(fwd + uv.x * right + uv.y * up);
   }
 };
@@ -64,12 +64,12 @@ std::vector<float> draw(gpu::Program& prog, const Camera& cam, const CloudRef& c
   GLuint tex = 0, fbo = 0;
   glGenTextures(1, &tex);
   glBindTexture(GL_TEXTURE_2D, tex);
-  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, kW, kH);
+  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, kMarchW, kMarchH);
   glGenFramebuffers(1, &fbo);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
   EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
-  glViewport(0, 0, kW, kH);
+  glViewport(0, 0, kMarchW, kMarchH);
   glUseProgram(prog.id());
   const GLuint p = prog.id();
   glUniform3fv(glGetUniformLocation(p, "u_eye"), 1, &cam.eye.x);
@@ -86,8 +86,8 @@ std::vector<float> draw(gpu::Program& prog, const Camera& cam, const CloudRef& c
        {contract::kCloudPointsSampler, contract::kCloudAttrsSampler, contract::kCloudNodesSampler})
     glUniform1i(glGetUniformLocation(p, s.name), s.unit);
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  std::vector<float> out(std::size_t(kW) * kH * 4);
-  glReadPixels(0, 0, kW, kH, GL_RGBA, GL_FLOAT, out.data());
+  std::vector<float> out(std::size_t(kMarchW) * kMarchH * 4);
+  glReadPixels(0, 0, kMarchW, kMarchH, GL_RGBA, GL_FLOAT, out.data());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glDeleteFramebuffers(1, &fbo);
   glDeleteTextures(1, &tex);
@@ -121,9 +121,9 @@ TEST(CloudMarch, GlslTwinMatchesCpp) {
     const std::vector<float> img = draw(prog, *cs.cam, ref, cs.mode);
     int hits = 0, disagree = 0, far = 0, bent = 0, off_attr = 0;
     double worst_dt = 0, worst_deg = 0;
-    for (int y = 0; y < kH; ++y)
-      for (int x = 0; x < kW; ++x) {
-        const float* px = &img[(std::size_t(y) * kW + std::size_t(x)) * 4];
+    for (int y = 0; y < kMarchH; ++y)
+      for (int x = 0; x < kMarchW; ++x) {
+        const float* px = &img[(std::size_t(y) * kMarchW + std::size_t(x)) * 4];
         const auto m = march_cloud(tx, ref, cs.cam->eye, cs.cam->dir(x, y), 0.0f, 10.0f, cs.mode == 2);
         const bool gpu_hit = px[0] != -1.0f || px[1] != -1.0f;
         if (bool(m) != gpu_hit) {
@@ -148,8 +148,8 @@ TEST(CloudMarch, GlslTwinMatchesCpp) {
     std::printf("[%s] %d hits, %d disagree, |dt| > 10 um %d (worst %.3g m), normal > 0.5 deg %d (worst %.3g), "
                 "attributes off %d\n",
                 cs.name, hits, disagree, far, worst_dt, bent, worst_deg, off_attr);
-    EXPECT_GT(hits, kW * kH / 4) << cs.name;
-    EXPECT_LE(disagree, kW * kH / 200) << cs.name;
+    EXPECT_GT(hits, kMarchW * kMarchH / 4) << cs.name;
+    EXPECT_LE(disagree, kMarchW * kMarchH / 200) << cs.name;
     EXPECT_LE(far, hits / 100) << cs.name;
     EXPECT_LE(bent, hits / 100) << cs.name;
     EXPECT_LE(off_attr, hits / 100) << cs.name;
@@ -175,9 +175,9 @@ TEST(CloudMarch, GlslTwinStridesAsTheCppDoesInsideADenseCloud) {
   int hits = 0, disagree = 0, far = 0, strided = 0;
   double worst_dt = 0;
   const float h = kCloudStepFraction * ref.min_support;
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) {
-      const float* px = &img[(std::size_t(y) * kW + std::size_t(x)) * 4];
+  for (int y = 0; y < kMarchH; ++y)
+    for (int x = 0; x < kMarchW; ++x) {
+      const float* px = &img[(std::size_t(y) * kMarchW + std::size_t(x)) * 4];
       const auto m = march_cloud(tx, ref, inside.eye, inside.dir(x, y), 0.0f, 10.0f, true);
       if (bool(m) != (px[0] != -1.0f || px[1] != -1.0f)) {
         ++disagree;
@@ -192,9 +192,9 @@ TEST(CloudMarch, GlslTwinStridesAsTheCppDoesInsideADenseCloud) {
     }
   std::printf("[dense, inside] %d hits, %d strided, %d disagree, |dt| > 10 um %d (worst %.3g m)\n", hits, strided,
               disagree, far, worst_dt);
-  EXPECT_EQ(hits, kW * kH);
+  EXPECT_EQ(hits, kMarchW * kMarchH);
   EXPECT_GT(strided, hits / 2);
-  EXPECT_LE(disagree, kW * kH / 200);
+  EXPECT_LE(disagree, kMarchW * kMarchH / 200);
   EXPECT_LE(far, hits / 100);
 }
 
@@ -234,7 +234,7 @@ TEST(CloudMarch, ASpanUploadDrawsAsAWholeOne) {
     const std::vector<float> b = draw(prog, cam, ref, 0);
     int hits = 0;
     for (std::size_t i = 0; i < a.size(); i += 4) hits += a[i] != -1.0f;
-    EXPECT_GT(hits, kW * kH / 20) << "cloud " << k;
+    EXPECT_GT(hits, kMarchW * kMarchH / 20) << "cloud " << k;
     EXPECT_EQ(a, b) << "cloud " << k;
   }
 }

@@ -18,7 +18,7 @@
 namespace draught::test {
 namespace {
 
-constexpr int kW = 64, kH = 96;
+constexpr int kCutoutW = 64, kCutoutH = 96;
 
 struct Drink {
   const char* preset;
@@ -37,15 +37,15 @@ TEST(Cutout, OverTheStudioTheDrinkLooksAsInTheOpaquePicture) {
       const FrameState opaque = scene_frame({d.preset, d.glass, sets, {}});
       sets.push_back("render.transparent=true");
       const FrameState cut = scene_frame({d.preset, d.glass, sets, {}});
-      const Image o = g.renderer->render(opaque, kW, kH), t = g.renderer->render(cut, kW, kH);
+      const Image o = g.renderer->render(opaque, kCutoutW, kCutoutH), t = g.renderer->render(cut, kCutoutW, kCutoutH);
       const glm::dvec3 behind = cutout_light(cut) * double(cut.params.render.exposure);
       // Over the studio's light behind, the cutout's pixels of `kind` against the opaque
       // picture's: the mean of each channel, in sRGB codes.
       auto compare = [&](const char* kind, auto wanted, double tolerance, int min_pixels) -> glm::dvec3 {
         glm::dvec3 want(0.0), got(0.0), white(0.0);
         int n = 0;
-        for (int y = 0; y < kH; ++y)
-          for (int x = kW / 3; x < 2 * kW / 3; ++x) {
+        for (int y = 0; y < kCutoutH; ++y)
+          for (int x = kCutoutW / 3; x < 2 * kCutoutW / 3; ++x) {
             const std::uint8_t *pt = t.px(x, y), *po = o.px(x, y);
             const double a = pt[3] / 255.0;
             if (!wanted(a, po)) continue;

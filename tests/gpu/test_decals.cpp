@@ -49,7 +49,7 @@ struct DecalProbeCase {
   int size;
 };
 
-FrameState pint_front() {
+FrameState decal_pint_front_frame() {
   return with_decals(scene_frame({"lager", "pint", {}, {}}), layer("wordmark", 0, 0.075f, 0.07f));
 }
 FrameState tulip_crest() {
@@ -138,7 +138,7 @@ TEST_P(DecalProbe, UvMatchesTheReference) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, DecalProbe,
-                         ::testing::Values(DecalProbeCase{"pint_front", pint_front, 96},
+                         ::testing::Values(DecalProbeCase{"pint_front", decal_pint_front_frame, 96},
                                            DecalProbeCase{"tulip_crest", tulip_crest, 96},
                                            DecalProbeCase{"wine_band", wine_band, 96},
                                            DecalProbeCase{"empty_tulip_inner", empty_tulip_inner, 96},
@@ -149,7 +149,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, DecalProbe,
 
 // ---- light ----
 
-constexpr glm::vec3 kEnv{0.5f, 0.4f, 0.3f};
+constexpr glm::vec3 kDecalEnv{0.5f, 0.4f, 0.3f};
 
 // The empty pint in a uniform environment with no floor and no lights, nothing absorbing
 // (tests/gpu/test_furnace.cpp), a band of the shipped gold-band decal (white, its middle
@@ -173,7 +173,7 @@ TEST(DecalLight, AWhiteDecalOfAnyKindIsInvisibleInAFurnace) {
     double worst = 0;
     for (int y = 0; y < img.height; ++y)
       for (int x = 0; x < img.width; ++x)
-        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(srgb8_to_linear(img.px(x, y)[c]) / kEnv[c] - 1.0));
+        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(srgb8_to_linear(img.px(x, y)[c]) / kDecalEnv[c] - 1.0));
     EXPECT_LT(worst, 0.02) << "kind " << int(kind);
   }
 }
@@ -190,7 +190,7 @@ TEST(DecalLight, AColouredDecalShowsItsColourUnderTheGlassGloss) {
     f.params.render.supersample = 1;
     const Image img = gpu_instance().renderer->render(f, 8, 8);
     for (int c = 0; c < 3; ++c)
-      EXPECT_NEAR(srgb8_to_linear(img.px(4, 4)[c]) / kEnv[c], F + (1 - F) * colour[c], 0.02) << int(kind) << " channel " << c;
+      EXPECT_NEAR(srgb8_to_linear(img.px(4, 4)[c]) / kDecalEnv[c], F + (1 - F) * colour[c], 0.02) << int(kind) << " channel " << c;
   }
 }
 

@@ -19,7 +19,7 @@
 namespace draught::test {
 namespace {
 
-constexpr int kW = 96, kH = 72;
+constexpr int kEnvW = 96, kEnvH = 72;
 
 // An image with features everywhere (smooth, so a float ray's tiny error stays tiny in
 // value): stripes across, bands down, a different pattern per channel, within [0.05, 0.9].
@@ -62,27 +62,27 @@ TEST(EnvironmentImageTwin, ThePictureSeesWhatCoreSees) {
     const FrameState f = environment_frame_of(patterned_image(), c.sets);
     const Studio studio(f.params);
     ASSERT_TRUE(studio.image);
-    const Image img = g.renderer->render(f, kW, kH);
-    const CameraBasis cam = camera_basis(f, kW, kH);
+    const Image img = g.renderer->render(f, kEnvW, kEnvH);
+    const CameraBasis cam = camera_basis(f, kEnvW, kEnvH);
     double worst = 0, sum = 0;
-    for (int y = 0; y < kH; ++y)
-      for (int x = 0; x < kW; ++x) {
-        const glm::dvec3 want = studio.sky(camera_ray(cam, x + 0.5, y + 0.5, kW, kH).d);
+    for (int y = 0; y < kEnvH; ++y)
+      for (int x = 0; x < kEnvW; ++x) {
+        const glm::dvec3 want = studio.sky(camera_ray(cam, x + 0.5, y + 0.5, kEnvW, kEnvH).d);
         for (int k = 0; k < 3; ++k) {
           const double e = std::abs(srgb8_to_linear(img.px(x, y)[k]) - want[k]);
           worst = std::max(worst, e);
           sum += e;
         }
       }
-    std::printf("environment image twin, %s: worst %.4f, mean %.5f (linear)\n", c.name, worst, sum / (3.0 * kW * kH));
+    std::printf("environment image twin, %s: worst %.4f, mean %.5f (linear)\n", c.name, worst, sum / (3.0 * kEnvW * kEnvH));
     // One 8-bit step at 0.9 is 0.0035 in linear light; half floats round at 5e-4.
     EXPECT_LT(worst, 0.01) << c.name;
-    EXPECT_LT(sum / (3.0 * kW * kH), 0.002) << c.name;
+    EXPECT_LT(sum / (3.0 * kEnvW * kEnvH), 0.002) << c.name;
   }
   // The test can fail: the image turned the other way is another picture.
   const FrameState a = environment_frame_of(patterned_image(), {"env.rotation=30"});
   const FrameState b = environment_frame_of(patterned_image(), {"env.rotation=-30"});
-  const Image ia = g.renderer->render(a, kW, kH), ib = g.renderer->render(b, kW, kH);
+  const Image ia = g.renderer->render(a, kEnvW, kEnvH), ib = g.renderer->render(b, kEnvW, kEnvH);
   int differ = 0;
   for (size_t i = 0; i < ia.rgba.size(); ++i) differ += std::abs(int(ia.rgba[i]) - int(ib.rgba[i])) > 8;
   EXPECT_GT(differ, int(ia.rgba.size() / 4));

@@ -30,12 +30,10 @@ struct GoldenCase {
   FrameState (*scene)() = nullptr;  // a scene of several objects (request and timeline unused)
 };
 
-FrameState flight_front() { return make_frame(flight_scene(FlightView::StraightOn)); }
 // The flight from the angle with env.reflections: the glasses mirror each other.
 FrameState flight_reflections() {
   return make_frame(flight_scene(FlightView::AtAnAngle, {"env.reflections=true"}));
 }
-FrameState flight_angle() { return make_frame(flight_scene(FlightView::AtAnAngle)); }
 // The droplets' trail stretched over the pint behind it (presets/timelines/droplets-trail.json
 // in its scene of objects: a lager and a droplets object).
 FrameState droplets_trail() {

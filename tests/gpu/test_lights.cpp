@@ -20,7 +20,7 @@
 namespace draught::test {
 namespace {
 
-constexpr int kW = 96, kH = 72;
+constexpr int kLightsW = 96, kLightsH = 72;
 
 // The default packshot studio around a pint (or `sets` on it), seen through `camera`;
 // the glass moved far out of sight after the studio was placed around it, so every
@@ -75,12 +75,12 @@ TEST(StudioTwins, IntersectAndAlbedoAgreeWithCore) {
   double worst_t = 0, worst_n = 0, worst_albedo = 0;
   for (const View& v : views()) {
     const FrameState f = studio_frame(v.sets, v.camera);
-    const gpu::DebugImage hit = g.renderer->render_debug(f, kW, kH, gpu::DebugView::LightHit);
-    const gpu::DebugImage back = g.renderer->render_debug(f, kW, kH, gpu::DebugView::Backdrop);
-    const CameraBasis cam = camera_basis(f, kW, kH);
-    for (int y = 0; y < kH; ++y)
-      for (int x = 0; x < kW; ++x) {
-        const Ray r = camera_ray(cam, x + 0.5, y + 0.5, kW, kH);
+    const gpu::DebugImage hit = g.renderer->render_debug(f, kLightsW, kLightsH, gpu::DebugView::LightHit);
+    const gpu::DebugImage back = g.renderer->render_debug(f, kLightsW, kLightsH, gpu::DebugView::Backdrop);
+    const CameraBasis cam = camera_basis(f, kLightsW, kLightsH);
+    for (int y = 0; y < kLightsH; ++y)
+      for (int x = 0; x < kLightsW; ++x) {
+        const Ray r = camera_ray(cam, x + 0.5, y + 0.5, kLightsW, kLightsH);
         const CpuHit c = cpu_studio(f, r);
         const float* ph = hit.px(x, y);
         const float* pb = back.px(x, y);
@@ -129,11 +129,11 @@ TEST(StudioTwins, IrradianceFactorAgreesWithCore) {
   double worst = 0, worst_abs = 0;
   for (const View& v : views()) {
     const FrameState f = studio_frame(v.sets, v.camera);
-    const gpu::DebugImage irr = g.renderer->render_debug(f, kW, kH, gpu::DebugView::LightIrradiance);
-    const CameraBasis cam = camera_basis(f, kW, kH);
-    for (int y = 0; y < kH; ++y)
-      for (int x = 0; x < kW; ++x) {
-        const Ray r = camera_ray(cam, x + 0.5, y + 0.5, kW, kH);
+    const gpu::DebugImage irr = g.renderer->render_debug(f, kLightsW, kLightsH, gpu::DebugView::LightIrradiance);
+    const CameraBasis cam = camera_basis(f, kLightsW, kLightsH);
+    for (int y = 0; y < kLightsH; ++y)
+      for (int x = 0; x < kLightsW; ++x) {
+        const Ray r = camera_ray(cam, x + 0.5, y + 0.5, kLightsW, kLightsH);
         double t;
         glm::dvec3 n;
         if (!f.backdrop.intersect(r.o, r.d, 0.0, t, n)) continue;
@@ -167,14 +167,14 @@ TEST(StudioPicture, ABackdropLitByOneLightShowsItsExactIrradiance) {
                                     {"eye=0.1,0.35,0.45", "target=0,0.1,-0.4", "vfov=90"});
   ASSERT_EQ(f.lights.lights.size(), 1u);
   const AreaLight& key = f.lights.lights[0];
-  const Image img = g.renderer->render(f, kW, kH);
-  const CameraBasis cam = camera_basis(f, kW, kH);
+  const Image img = g.renderer->render(f, kLightsW, kLightsH);
+  const CameraBasis cam = camera_basis(f, kLightsW, kLightsH);
   const double exposure = f.params.render.exposure;
   int compared = 0;
   double worst = 0;
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) {
-      const Ray r = camera_ray(cam, x + 0.5, y + 0.5, kW, kH);
+  for (int y = 0; y < kLightsH; ++y)
+    for (int x = 0; x < kLightsW; ++x) {
+      const Ray r = camera_ray(cam, x + 0.5, y + 0.5, kLightsW, kLightsH);
       double t;
       glm::dvec3 n;
       if (!f.backdrop.intersect(r.o, r.d, 0.0, t, n)) continue;
@@ -207,19 +207,19 @@ TEST(StudioPicture, ALightSeenDirectlyShowsItsRadiance) {
                    {"eye=0.1,0.1,-0.1", "target=-0.6,0.7,0.6", "vfov=60"});
   ASSERT_EQ(f.lights.lights.size(), 1u);
   const AreaLight& key = f.lights.lights[0];
-  const Image img = g.renderer->render(f, kW, kH);
-  const CameraBasis cam = camera_basis(f, kW, kH);
+  const Image img = g.renderer->render(f, kLightsW, kLightsH);
+  const CameraBasis cam = camera_basis(f, kLightsW, kLightsH);
   const glm::dvec3 expected = double(f.params.render.exposure) * key.radiance;
   ASSERT_LT(expected.r, 0.95);
   int compared = 0;
   double worst = 0;
-  for (int y = 1; y + 1 < kH; ++y)
-    for (int x = 1; x + 1 < kW; ++x) {
+  for (int y = 1; y + 1 < kLightsH; ++y)
+    for (int x = 1; x + 1 < kLightsW; ++x) {
       bool inside = true;  // the pixel and its neighbours all see the light
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
           double t;
-          const Ray r = camera_ray(cam, x + dx + 0.5, y + dy + 0.5, kW, kH);
+          const Ray r = camera_ray(cam, x + dx + 0.5, y + dy + 0.5, kLightsW, kLightsH);
           inside = inside && key.intersect(r.o, r.d, 0.0, t);
         }
       if (!inside) continue;

@@ -34,7 +34,6 @@ struct ThicknessCase {
 FrameState pint_front() { return scene_frame({"lager", "pint", {}, {}}); }
 FrameState wine() { return scene_frame({"red-wine", "wine", {}, {}}); }
 FrameState pint_above() { return scene_frame({"lager", "pint", {}, {"eye=0.08,0.32,0.2", "target=0,0.07,0"}}); }
-FrameState flight_angle() { return make_frame(flight_scene(FlightView::AtAnAngle)); }
 
 void PrintTo(const ThicknessCase& c, std::ostream* os) { *os << c.name; }
 

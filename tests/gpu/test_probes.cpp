@@ -29,8 +29,6 @@ struct ProbeCase {
   FrameState (*scene)() = nullptr;  // a scene of several objects (request and timeline unused)
 };
 
-FrameState flight_front() { return make_frame(flight_scene(FlightView::StraightOn)); }
-FrameState flight_angle() { return make_frame(flight_scene(FlightView::AtAnAngle)); }
 FrameState flight_along() { return make_frame(flight_scene(FlightView::AlongTheRow)); }
 // The viewer's framing beside its panel: the lens shifted to the right part of the picture.
 FrameState pint_beside_a_panel() {

@@ -65,7 +65,7 @@ std::vector<std::string> screen_only(std::vector<std::string> sets) {
 }
 const std::vector<std::string> kCamera = {"eye=0,0.08,0.45", "target=0,0.075,0", "vfov=28"};
 
-constexpr int kW = 96, kH = 96;
+constexpr int kScreenW = 96, kScreenH = 96;
 
 double linear(const Image& img, int x, int y, int c) { return srgb8_to_linear(img.px(x, y)[c]); }
 
@@ -76,13 +76,13 @@ TEST(ScreenTwin, TheCardSeenDirectlyIsWhatCoreSees) {
                               kCamera});
   for (VesselFrame& v : f.vessels) v.pose.position.x += 50.0;  // the glass out of the view
   ASSERT_TRUE(f.screen.picture);
-  const Image img = gpu_instance().renderer->render(f, kW, kH);
-  const CameraBasis cam = camera_basis(f, kW, kH);
+  const Image img = gpu_instance().renderer->render(f, kScreenW, kScreenH);
+  const CameraBasis cam = camera_basis(f, kScreenW, kScreenH);
   double worst = 0, sum = 0;
   int seen = 0, outside = 0;
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) {
-      const Ray r = camera_ray(cam, x + 0.5, y + 0.5, kW, kH);
+  for (int y = 0; y < kScreenH; ++y)
+    for (int x = 0; x < kScreenW; ++x) {
+      const Ray r = camera_ray(cam, x + 0.5, y + 0.5, kScreenW, kScreenH);
       double t;
       glm::dvec2 uv;
       if (!f.screen.intersect(r.o, r.d, 0.0, t, uv)) {
@@ -99,8 +99,8 @@ TEST(ScreenTwin, TheCardSeenDirectlyIsWhatCoreSees) {
       ++seen;
     }
   std::printf("screen card twin: %d pixels, worst %.4f, mean %.5f (linear)\n", seen, worst, sum / (3.0 * seen));
-  EXPECT_GT(seen, kW * kH / 4);
-  EXPECT_GT(outside, kW * kH / 10);  // and black beside it
+  EXPECT_GT(seen, kScreenW * kScreenH / 4);
+  EXPECT_GT(outside, kScreenW * kScreenH / 10);  // and black beside it
   EXPECT_LT(worst, 0.015);
   EXPECT_LT(sum / (3.0 * seen), 0.003);
 }
@@ -201,16 +201,16 @@ TEST(ScreenThroughTheGlass, APngSequenceShowsTheExpectedFrameAtEachTime) {
   for (const Moment m : {Moment{0.25, 0}, Moment{0.6, 1}, Moment{1.2, 2}, Moment{2.1, 4}, Moment{3.5, 5}}) {
     const FrameState f = draught::timeline_frame(tl, scene, m.t);
     ASSERT_EQ(f.screen.index, m.frame) << "at " << m.t;
-    const Image img = gpu_instance().renderer->render(f, kW, kH);
-    const CameraBasis cam = camera_basis(f, kW, kH);
+    const Image img = gpu_instance().renderer->render(f, kScreenW, kScreenH);
+    const CameraBasis cam = camera_basis(f, kScreenW, kScreenH);
     const SceneGeometry geo = scene_geometry(f);
-    std::vector<std::string> sig(size_t(kW) * kH);
-    std::vector<glm::dvec3> want(size_t(kW) * kH, glm::dvec3(-1.0)), other(size_t(kW) * kH);
-    std::vector<char> liquid(size_t(kW) * kH, 0);
-    for (int y = 0; y < kH; ++y)
-      for (int x = 0; x < kW; ++x) {
-        const size_t i = size_t(y) * kW + size_t(x);
-        const Ray r = camera_ray(cam, x + 0.5, y + 0.5, kW, kH);
+    std::vector<std::string> sig(size_t(kScreenW) * kScreenH);
+    std::vector<glm::dvec3> want(size_t(kScreenW) * kScreenH, glm::dvec3(-1.0)), other(size_t(kScreenW) * kScreenH);
+    std::vector<char> liquid(size_t(kScreenW) * kScreenH, 0);
+    for (int y = 0; y < kScreenH; ++y)
+      for (int x = 0; x < kScreenW; ++x) {
+        const size_t i = size_t(y) * kScreenW + size_t(x);
+        const Ray r = camera_ray(cam, x + 0.5, y + 0.5, kScreenW, kScreenH);
         bool in_liquid = false;
         if (!through_the_glass(f, geo, r, m.frame, want[i], sig[i], in_liquid)) want[i] = glm::dvec3(-1.0);
         liquid[i] = in_liquid;
@@ -219,12 +219,12 @@ TEST(ScreenThroughTheGlass, APngSequenceShowsTheExpectedFrameAtEachTime) {
       }
     int probed = 0, close = 0;
     double err = 0, err_other = 0;
-    for (int y = 1; y + 1 < kH; ++y)
-      for (int x = 1; x + 1 < kW; ++x) {
-        const size_t i = size_t(y) * kW + size_t(x);
+    for (int y = 1; y + 1 < kScreenH; ++y)
+      for (int x = 1; x + 1 < kScreenW; ++x) {
+        const size_t i = size_t(y) * kScreenW + size_t(x);
         if (want[i].r < 0 || !liquid[i]) continue;  // through the drink only
         bool steady = true;
-        for (const size_t j : {i - 1, i + 1, i - size_t(kW), i + size_t(kW)}) steady = steady && sig[j] == sig[i] && want[j].r >= 0;
+        for (const size_t j : {i - 1, i + 1, i - size_t(kScreenW), i + size_t(kScreenW)}) steady = steady && sig[j] == sig[i] && want[j].r >= 0;
         if (!steady) continue;
         ++probed;
         double worst = 0;

@@ -16,7 +16,7 @@
 namespace draught::test {
 namespace {
 
-constexpr int kW = 128, kH = 96;
+constexpr int kShadowW = 128, kShadowH = 96;
 
 // A lager in a pint on the checker floor (presets/scenes/checker-studio.json) seen from
 // above and in front by a fixed camera, with these extra settings (the cross-section).
@@ -43,11 +43,11 @@ struct Darkening {
 };
 Darkening floor_darkening(const FrameState& f, const Image& bare) {
   Gpu& g = gpu_instance();
-  const Image img = g.renderer->render(f, kW, kH);
-  const gpu::DebugImage first = g.renderer->render_debug(f, kW, kH, gpu::DebugView::Depth);
+  const Image img = g.renderer->render(f, kShadowW, kShadowH);
+  const gpu::DebugImage first = g.renderer->render_debug(f, kShadowW, kShadowH, gpu::DebugView::Depth);
   Darkening d;
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) {
+  for (int y = 0; y < kShadowH; ++y)
+    for (int x = 0; x < kShadowW; ++x) {
       if (int(first.px(x, y)[1]) != int(Material::Floor)) continue;
       double dark = 0;
       for (int c = 0; c < 3; ++c) dark += (double(bare.px(x, y)[c]) - double(img.px(x, y)[c])) / 3;
@@ -60,7 +60,7 @@ Darkening floor_darkening(const FrameState& f, const Image& bare) {
 TEST(Shadows, AGlassCutAwayEntirelyCastsNoShadow) {
   Gpu& g = gpu_instance();
   // The same floor without the glass: the glass stands far out of sight.
-  const Image bare = g.renderer->render(glass_on_floor({}, true), kW, kH);
+  const Image bare = g.renderer->render(glass_on_floor({}, true), kShadowW, kShadowH);
   const Darkening whole = floor_darkening(glass_on_floor(), bare);
   // The cut's normal points up and it lies below the floor: everything is cut away.
   const Darkening cut = floor_darkening(glass_on_floor({"clip.enabled=true", "clip.normal=0,1,0", "clip.offset=-0.05"}), bare);
@@ -74,17 +74,17 @@ TEST(Shadows, AGlassCutAwayEntirelyCastsNoShadow) {
   EXPECT_GT(half.sum, 0.1 * whole.sum) << "half the glass casts (almost) no shadow";
 }
 
-// Calls visit(x, y, p) for each pixel of a kW x kH picture of f whose first surface is the
+// Calls visit(x, y, p) for each pixel of a kShadowW x kShadowH picture of f whose first surface is the
 // floor at p inside map's rect, short of the texels where it blends into the light outside.
 template <class Visit>
 void for_each_floor_pixel_in(Gpu& g, const FrameState& f, const FloorLightMap& map, const Visit& visit) {
-  const gpu::DebugImage first = g.renderer->render_debug(f, kW, kH, gpu::DebugView::Depth);
-  const CameraBasis cam = camera_basis(f, kW, kH);
+  const gpu::DebugImage first = g.renderer->render_debug(f, kShadowW, kShadowH, gpu::DebugView::Depth);
+  const CameraBasis cam = camera_basis(f, kShadowW, kShadowH);
   const glm::dvec2 margin = 4.0 * map.size / glm::dvec2(map.width, map.height);
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) {
+  for (int y = 0; y < kShadowH; ++y)
+    for (int x = 0; x < kShadowW; ++x) {
       if (int(first.px(x, y)[1]) != int(Material::Floor)) continue;
-      const glm::dvec3 p = camera_ray(cam, x + 0.5, y + 0.5, kW, kH).at(first.px(x, y)[0]);
+      const glm::dvec3 p = camera_ray(cam, x + 0.5, y + 0.5, kShadowW, kShadowH).at(first.px(x, y)[0]);
       const glm::dvec2 uv(p.x, p.z);
       if (glm::any(glm::lessThan(uv, map.origin + margin)) || glm::any(glm::greaterThan(uv, map.origin + map.size - margin)))
         continue;
@@ -106,12 +106,12 @@ TEST(Shadows, TheFloorUnderTheGlassShowsTheMap) {
   FloorLightSettings lights_only = test_floor_light();
   lights_only.gather_rays = 0;
   g.renderer->set_floor_light(lights_only);
-  const Image on = g.renderer->render(f, kW, kH);
+  const Image on = g.renderer->render(f, kShadowW, kShadowH);
   const FloorLightMap map = g.renderer->scene_textures().floor_light();
   ASSERT_FALSE(map.empty());
-  const Image no_key = g.renderer->render(dark, kW, kH);
+  const Image no_key = g.renderer->render(dark, kShadowW, kShadowH);
   g.renderer->set_floor_light(test_floor_light(), false);
-  const Image off = g.renderer->render(f, kW, kH);
+  const Image off = g.renderer->render(f, kShadowW, kShadowH);
   g.renderer->set_floor_light(test_floor_light());
   auto linear = [](std::uint8_t v) {
     const double c = v / 255.0;
@@ -150,13 +150,13 @@ TEST(Shadows, TheFloorRoundTheFootShowsTheSurroundingsShadow) {
                                   "render.supersample=1", "camera.auto_frame=false"},
                                  {"eye=0,0.32,0.3", "target=0,0.03,0", "vfov=40"}});
   const FrameState f = make_frame(p);
-  const Image on = g.renderer->render(f, kW, kH);
+  const Image on = g.renderer->render(f, kShadowW, kShadowH);
   const FloorLightMap map = g.renderer->scene_textures().floor_light();
   ASSERT_FALSE(map.empty());
   FloorLightSettings lights_only = test_floor_light();
   lights_only.gather_rays = 0;
   g.renderer->set_floor_light(lights_only);
-  const Image without = g.renderer->render(f, kW, kH);
+  const Image without = g.renderer->render(f, kShadowW, kShadowH);
   g.renderer->set_floor_light(test_floor_light());
   double worst = 0, darkest = 1, bias = 0, spread = 0;
   int probed = 0, shaded = 0;

@@ -1,6 +1,7 @@
 #include "core/bubbles/bubbles.hpp"
 
 #include "core/math/hash.hpp"
+#include "core/math/vectors.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +17,7 @@ constexpr double kSiteRate = 15.0;    // bubbles/s of the busiest site at carbon
 constexpr double kMaxThreshold = 0.5; // carbonation a site needs before it emits, at most
 constexpr double kEtchedRate = 3.0;   // an etched site emits this many times faster
 constexpr double kEtchedRing = 0.003; // m: radius of the etched ring
-constexpr double kGrowth = 10.0;      // 1/m: relative growth per metre risen at carbonation 1 (x2 over 10 cm)
+constexpr double kBubbleGrowth = 10.0;  // 1/m: relative growth per metre risen at carbonation 1 (x2 over 10 cm)
 constexpr double kMaxRadius = 1.5e-3; // m
 // Rise speed. Small bubbles follow Stokes' law for a rigid sphere (surfactants make
 // drink bubbles behave so): v = 2 g r^2 / (9 nu), nu ~ 1e-6 m^2/s for water-like drinks,
@@ -32,7 +33,6 @@ double speed(double r) {
   return std::clamp(1.0 / (1.0 / stokes + 1.0 / kSpeedCap), kMinSpeed, kMaxSpeed);
 }
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 }  // namespace
 
 BubbleField::BubbleField(const BubbleSettings& s, const Vessel& v) : settings_(s), vessel_(v) {
@@ -44,7 +44,7 @@ BubbleField::BubbleField(const BubbleSettings& s, const Vessel& v) : settings_(s
   settings_.sites = std::clamp(s.sites, 0, 10000);
   settings_.max_bubbles = std::clamp(s.max_bubbles, 0, 100000);
   const double c = settings_.carbonation;
-  growth_ = kGrowth * (0.25 + 0.75 * c);  // more dissolved CO2 feeds the bubbles faster
+  growth_ = kBubbleGrowth * (0.25 + 0.75 * c);  // more dissolved CO2 feeds the bubbles faster
   valid_ = vessel_.r_inner.size() >= 2 && vessel_.dy > 0 && vessel_.height > vessel_.base &&
            std::isfinite(vessel_.height) && std::isfinite(vessel_.base);
   if (!valid_) return;
@@ -99,7 +99,7 @@ void BubbleField::clear() {
 double BubbleField::radius(const Track& t) const { return std::min(t.r0 * (1.0 + growth_ * t.risen), kMaxRadius); }
 
 bool BubbleField::confine(glm::dvec3& p, double r) const {
-  if (!valid_ || !finite(p)) return false;
+  if (!valid_ || !all_finite(p)) return false;
   p.y = std::max(p.y, vessel_.base + r + kSkin);
   if (p.y + r + kSkin > vessel_.height) return false;  // out over the rim
   // The narrowest radius over the sphere's height span: conservative on sloped walls.
@@ -140,7 +140,7 @@ void BubbleField::step(double dt, const LiquidPlane& surface, const glm::dvec3& 
   dt = std::min(dt, kMaxStep);
   // Any finite non-zero direction will do (scaled first: huge or tiny ones normalise too).
   const double m = std::max({std::abs(up_local.x), std::abs(up_local.y), std::abs(up_local.z)});
-  if (finite(up_local) && m > 0) {
+  if (all_finite(up_local) && m > 0) {
     up_ = glm::normalize(up_local / m);
     const glm::dvec3 a = std::abs(up_.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 0, 1);
     e1_ = glm::normalize(glm::cross(up_, a));

@@ -2,6 +2,8 @@
 
 #include "core/math/noise.hpp"
 #include "core/math/random.hpp"
+#include "core/math/constants.hpp"
+#include "core/math/smoothstep.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +14,6 @@ namespace draught {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kBelowFloor = 0.012;   // m: the band starts this far below the cavity's floor (the glass's base is cold too)
 constexpr double kLowest = 0.002;       // m: and no lower than this above the foot (the coaster's wet ring is not drawn)
 constexpr double kFogFadeTop = 0.006;   // m: the fog thins out over this below the band's top
@@ -25,11 +26,6 @@ constexpr int kSeedBeads = 1, kSeedSize = 2, kSeedStep = 3, kSeedNew = 4;  // th
 
 // Into [-pi, pi).
 double wrap(double a) { return a - 2 * kPi * std::floor((a + kPi) / (2 * kPi)); }
-
-double smoothstep(double e0, double e1, double x) {
-  const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-  return t * t * (3 - 2 * t);
-}
 
 // A standard normal deviate (Box-Muller) from two uniforms.
 double normal(Rng& rng) {

@@ -1,6 +1,7 @@
 #include "core/condensation/wall_grid.hpp"
 
 #include "generated/constants.hpp"
+#include "core/math/smoothstep.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,15 +15,10 @@ constexpr int kAngles = contract::kCondensationAngles, kRows = contract::kConden
               kSlots = contract::kCondensationSlots;
 constexpr int kFogAngles = contract::kCondensationFogAngles, kFogRows = contract::kCondensationFogRows;
 static_assert(kFogAngles == Condensation::kFogAngles && kFogRows == Condensation::kFogRows);
-constexpr float kPi = std::numbers::pi_v<float>;
+constexpr float kPiF = std::numbers::pi_v<float>;
 // A bead is listed in the cells within this many of its radii: the mist it drank around
 // itself (BeadSample::clear) reaches that far.
 constexpr float kHalo = 1.35f;
-
-float smoothstep(float e0, float e1, float x) {
-  const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
-  return t * t * (3.0f - 2.0f * t);
-}
 
 }  // namespace
 
@@ -71,7 +67,7 @@ BeadSample bead_at(const std::vector<glm::vec4>& grid, const CondensationBand& b
   const float fy = float((p.y - band.y0) / (band.y1 - band.y0));
   if (band.empty() || !(fy >= 0.0f && fy < 1.0f)) return s;
   const float a = std::atan2(p.x, p.z);
-  const int ia = std::clamp(int(std::floor((a + kPi) / (2.0f * kPi) * float(kAngles))), 0, kAngles - 1);
+  const int ia = std::clamp(int(std::floor((a + kPiF) / (2.0f * kPiF) * float(kAngles))), 0, kAngles - 1);
   const int iy = std::clamp(int(fy * float(kRows)), 0, kRows - 1);
   const float rw = std::sqrt(p.x * p.x + p.z * p.z);
   const glm::vec3 across = glm::vec3(p.z, 0.0f, -p.x) / rw;  // round the axis
@@ -82,7 +78,7 @@ BeadSample bead_at(const std::vector<glm::vec4>& grid, const CondensationBand& b
     const glm::vec4 b = grid[(size_t(iy) * kAngles + size_t(ia)) * kSlots + size_t(k)];
     if (b.z <= 0.0f) continue;
     float da = a - b.x;
-    da -= 2.0f * kPi * std::floor(da / (2.0f * kPi) + 0.5f);
+    da -= 2.0f * kPiF * std::floor(da / (2.0f * kPiF) + 0.5f);
     const glm::vec3 rho = (rw * da) * across + ((p.y - b.y) / up_y) * up;
     const float q = glm::length(rho) / b.z;
     s.clear = std::min(s.clear, smoothstep(1.0f, kHalo, q));
@@ -98,7 +94,7 @@ BeadSample bead_at(const std::vector<glm::vec4>& grid, const CondensationBand& b
 float fog_at(const std::vector<std::uint8_t>& fog, const CondensationBand& band, glm::vec3 p) {
   const float fy = float((p.y - band.y0) / (band.y1 - band.y0));
   if (band.empty() || !(fy >= 0.0f && fy < 1.0f)) return 0.0f;
-  const float u = (std::atan2(p.x, p.z) + kPi) / (2.0f * kPi) * float(kFogAngles) - 0.5f;
+  const float u = (std::atan2(p.x, p.z) + kPiF) / (2.0f * kPiF) * float(kFogAngles) - 0.5f;
   const float v = std::clamp(fy * float(kFogRows), 0.5f, float(kFogRows) - 0.5f) - 0.5f;
   const float cu = std::floor(u), cv = std::floor(v), fu = u - cu, fv = v - cv;
   const int c0 = (int(cu) % kFogAngles + kFogAngles) % kFogAngles, c1 = (c0 + 1) % kFogAngles;

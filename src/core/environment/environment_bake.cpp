@@ -7,6 +7,7 @@
 #include "core/environment/studio.hpp"
 #include "core/io/files.hpp"
 #include "core/text/echo.hpp"
+#include "core/math/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +18,6 @@ namespace draught {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 double smooth(double e0, double e1, double x) {
   const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);

@@ -1,4 +1,5 @@
 #include "core/environment/environment_sampling.hpp"
+#include "core/math/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +8,6 @@
 namespace draught {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 constexpr double kUniformShare = 0.1;  // of the probability, spread evenly over the sphere
 }  // namespace
 

@@ -13,6 +13,8 @@
 #include "core/reference/media.hpp"
 #include "core/reference/free_flight.hpp"
 #include "core/reference/optics.hpp"
+#include "core/math/constants.hpp"
+#include "core/math/vectors.hpp"
 
 #include <algorithm>
 #include <array>
@@ -29,15 +31,11 @@ namespace draught {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kEps = 1e-7;  // where a photon starts again past the surface it left
 constexpr int kLanes = 4;      // fixed accumulation buffers: the sum does not depend on the thread count
 constexpr int kMaxEvents = 64;
 constexpr int kGatherStep = 4;  // texels between the surroundings' gathered nodes (1 cm)
 constexpr double kKernelScale = 2.0;  // texels per unit of the cubic B-spline (radius 2 units: 4 texels, 1 cm)
 
-double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 
 // The cubic B-spline (support [-2, 2], a partition of unity over integer shifts).
 double bspline3(double t) {
@@ -133,7 +131,7 @@ class PhotonTracer {
   template <class Around>  // glm::dvec3 around(direction)
   glm::dvec3 arriving(Ray ray, const Around& around, Rng& rng) const {
     glm::dvec4 attrs(0.0);
-    const Hit h = bodies_.nearest(geo_, ray, kEps, MediumKind::Air, -1, attrs);
+    const Hit h = bodies_.nearest(geo_, ray, kRestartEps, MediumKind::Air, -1, attrs);
     if (!h.valid() || h.m == Material::Floor) return around(ray.d);
     glm::dvec3 power(1.0);
     const Walk w = follow(ray, power, h, attrs, rng, nullptr);
@@ -143,14 +141,14 @@ class PhotonTracer {
   // One photon of power `power` leaving x along d (unit).
   void trace(Ray ray, glm::dvec3 power, Rng& rng, Lane& lane) const {
     glm::dvec4 attrs(0.0);  // a cloud's surface: its temperature and colour there
-    Hit h = bodies_.nearest(geo_, ray, kEps, MediumKind::Air, -1, attrs);
+    Hit h = bodies_.nearest(geo_, ray, kRestartEps, MediumKind::Air, -1, attrs);
     if (!h.valid() || h.m == Material::Floor) return;  // its light is the unoccluded one
     lane.stats.hit += power;
     // Where its straight line would have met the backdrop: on the floor, the map's; on the
     // sweep's curve or wall, beyond it (the map holds the floor only).
     double t_open;
     glm::dvec3 n_open;
-    if (geo_.backdrop.intersect(ray.o, ray.d, kEps, t_open, n_open) && n_open.y > 0.999) {
+    if (geo_.backdrop.intersect(ray.o, ray.d, kRestartEps, t_open, n_open) && n_open.y > 0.999) {
       splat(ray.at(t_open), -power, lane);
       lane.stats.removed += power;
     } else {
@@ -184,7 +182,7 @@ class PhotonTracer {
     int obj = -1, drink_obj = -1;
     glm::dvec3 drink_left(0.5);  // as the path tracer: the shares of the drink's colour bands
     for (int events = 0;; ++events) {
-      if (events > 0) h = bodies_.nearest(geo_, ray, kEps, medium, obj, attrs);
+      if (events > 0) h = bodies_.nearest(geo_, ray, kRestartEps, medium, obj, attrs);
       const double t_end = h.valid() ? h.t : (medium == MediumKind::Air ? kInf : 0.0);
       const glm::dvec3 before = power;
       if (medium == MediumKind::Droplet || medium == MediumKind::Cloud) {
@@ -214,7 +212,7 @@ class PhotonTracer {
         power *= head_transmittance(ray, t_end, rng);
       }
       if (medium != MediumKind::Liquid) absorb(before - power);
-      if (max3(power) <= 0) return {End::Lost};
+      if (max_component(power) <= 0) return {End::Lost};
       if (!h.valid()) return {End::Escaped};
       const glm::dvec3 p = ray.at(h.t);
       // The floor, or the floor under a foot the photon leaves through; the backdrop's

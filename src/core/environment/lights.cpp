@@ -2,6 +2,7 @@
 
 #include "core/math/atan2.hpp"
 #include "core/math/basis.hpp"
+#include "core/math/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,6 @@ namespace draught {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // 1 - cos of the half-angle a sphere of radius r subtends from distance^2 d2 (> r^2),
 // without the cancellation of 1 - sqrt(1 - r^2/d2) for small, far lights.

@@ -1,6 +1,7 @@
 #include "core/environment/studio.hpp"
 
 #include "core/environment/environment_files.hpp"
+#include "core/math/smoothstep.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +10,6 @@
 namespace draught {
 
 namespace {
-double smoothstep(double e0, double e1, double x) {
-  const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-  return t * t * (3 - 2 * t);
-}
 glm::dvec3 mix(const glm::dvec3& a, const glm::dvec3& b, double t) { return a + (b - a) * t; }
 }  // namespace
 

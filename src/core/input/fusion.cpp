@@ -1,4 +1,5 @@
 #include "core/input/fusion.hpp"
+#include "core/math/vectors.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +7,6 @@
 namespace draught {
 
 namespace {
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // The shortest rotation taking unit vector `from` to unit vector `to`.
 glm::dquat from_to(const glm::dvec3& from, const glm::dvec3& to) {
@@ -18,7 +18,7 @@ glm::dquat from_to(const glm::dvec3& from, const glm::dvec3& to) {
 }  // namespace
 
 bool OrientationFilter::update(double dt, const glm::dvec3& gyro, const glm::dvec3& accel) {
-  if (!finite(gyro) || !finite(accel) || !std::isfinite(dt)) return false;
+  if (!all_finite(gyro) || !all_finite(accel) || !std::isfinite(dt)) return false;
   dt = std::clamp(dt, 0.0, cfg_.max_dt);
   const double g = glm::length(accel);
   const bool gravity_only = std::abs(g - cfg_.gravity) < cfg_.accel_tolerance * cfg_.gravity;

@@ -1,4 +1,5 @@
 #include "core/input/gesture.hpp"
+#include "core/math/vectors.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,10 +14,6 @@ bool usable(double t, double x, double y, Viewport vp) {
   return std::isfinite(t) && std::isfinite(x) && std::isfinite(y) && std::isfinite(vp.height) && vp.height > 0;
 }
 
-glm::dvec2 clamp_length(glm::dvec2 v, double max_len) {
-  const double len = glm::length(v);
-  return len > max_len ? v * (max_len / len) : v;
-}
 
 glm::dquat orientation(double lean_x, double lean_z, double spin) {
   return tilt_orientation(std::hypot(lean_x, lean_z), std::atan2(lean_z, lean_x), spin);

@@ -2,6 +2,7 @@
 
 #include "core/io/files.hpp"
 #include "core/text/echo.hpp"
+#include "core/io/bytes.hpp"
 
 #include <algorithm>
 #include <array>
@@ -72,11 +73,6 @@ std::uint32_t crc32(std::string_view bytes) {
   std::uint32_t c = 0xFFFFFFFFu;
   for (unsigned char b : bytes) c = table[(c ^ b) & 0xFF] ^ (c >> 8);
   return c ^ 0xFFFFFFFFu;
-}
-
-std::uint32_t be32(std::string_view b, size_t at) {
-  return std::uint32_t(static_cast<unsigned char>(b[at])) << 24 | std::uint32_t(static_cast<unsigned char>(b[at + 1])) << 16 |
-         std::uint32_t(static_cast<unsigned char>(b[at + 2])) << 8 | std::uint32_t(static_cast<unsigned char>(b[at + 3]));
 }
 
 // What a file that is not a PNG is, by its first bytes.

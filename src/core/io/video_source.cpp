@@ -4,6 +4,7 @@
 #include "core/io/image.hpp"
 #include "core/io/process.hpp"
 #include "core/text/echo.hpp"
+#include "core/io/bytes.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -429,11 +430,6 @@ std::unique_ptr<VideoSource> open_video(const fs::path& file) {
 }
 
 #endif
-
-std::uint32_t be32(std::string_view b, size_t at) {
-  return std::uint32_t(static_cast<unsigned char>(b[at])) << 24 | std::uint32_t(static_cast<unsigned char>(b[at + 1])) << 16 |
-         std::uint32_t(static_cast<unsigned char>(b[at + 2])) << 8 | std::uint32_t(static_cast<unsigned char>(b[at + 3]));
-}
 
 // What a file that is no PNG is, by its first bytes (for the message).
 std::string other_kind(std::string_view b) {

@@ -1,6 +1,7 @@
 #include "core/liquid/beverage.hpp"
 
 #include "core/math/srgb.hpp"
+#include "core/math/cie1931.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -23,17 +24,6 @@ constexpr std::array<double, 36> kD65 = {
     100.000, 96.3342, 95.788,  88.6856, 90.0062, 89.5991, 87.6987, 83.2886, 83.6992,
     80.0268, 80.2146, 82.2778, 78.2842, 69.7213, 71.6091, 74.349,  61.604,  69.8856};
 
-// Wyman, Sloan and Shirley (JCGT 2013): piecewise Gaussian lobes.
-double lobe(double nm, double mu, double below, double above) {
-  const double t = (nm - mu) / (nm < mu ? below : above);
-  return std::exp(-0.5 * t * t);
-}
-glm::dvec3 cie1931_xyz(double nm) {
-  return {1.056 * lobe(nm, 599.8, 37.9, 31.0) + 0.362 * lobe(nm, 442.0, 16.0, 26.7) -
-              0.065 * lobe(nm, 501.1, 20.4, 26.2),
-          0.821 * lobe(nm, 568.8, 46.9, 40.5) + 0.286 * lobe(nm, 530.9, 16.3, 31.1),
-          1.217 * lobe(nm, 437.0, 11.8, 36.0) + 0.681 * lobe(nm, 459.0, 26.0, 13.8)};
-}
 // XYZ -> linear sRGB (IEC 61966-2-1).
 glm::dvec3 xyz_to_linear_srgb(const glm::dvec3& c) {
   return {3.2406 * c.x - 1.5372 * c.y - 0.4986 * c.z, -0.9689 * c.x + 1.8758 * c.y + 0.0415 * c.z,
@@ -45,7 +35,7 @@ glm::dvec3 xyz_to_linear_srgb(const glm::dvec3& c) {
 // below zero; without them a channel's transmittance is a weighted mean of T(l)).
 glm::dvec3 channel_weight(std::size_t i) {
   const double nm = kFirstNm + kStepNm * double(i);
-  return kD65[i] * glm::max(xyz_to_linear_srgb(cie1931_xyz(nm)), glm::dvec3(0.0));
+  return kD65[i] * glm::max(xyz_to_linear_srgb(cie1931_cmf(nm)), glm::dvec3(0.0));
 }
 
 }  // namespace

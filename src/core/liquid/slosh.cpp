@@ -1,4 +1,6 @@
 #include "core/liquid/slosh.hpp"
+#include "core/math/vectors.hpp"
+#include "core/math/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,20 +8,15 @@
 namespace draught {
 
 namespace {
-constexpr double kG = 9.80665;
 constexpr double kRingRoot = 3.8317;   // first root of J1: the axisymmetric mode
 constexpr double kCrossRoot = 3.0542;  // first root of J2': the m = 2 modes
 
-glm::dvec2 clamp_length(glm::dvec2 v, double max_len) {
-  const double len = glm::length(v);
-  return len > max_len ? v * (max_len / len) : v;
-}
 }  // namespace
 
 double slosh_frequency(double radius, double depth, double root) {
   radius = std::max(radius, 1e-3);
   depth = std::max(depth, 1e-4);
-  return std::sqrt(kG * root / radius * std::tanh(root * depth / radius));
+  return std::sqrt(kGravity * root / radius * std::tanh(root * depth / radius));
 }
 
 void step_slosh(SloshState& s, const LiquidParams& p, const SloshEnvironment& e, double dt) {

@@ -330,7 +330,9 @@ std::string fmt(float v) {
   return buf;
 }
 
-std::string_view trim(std::string_view s) {
+// Spaces and tabs off a value typed or pasted on one line (core/text/trim.hpp takes a
+// file's line endings too).
+std::string_view trim_blanks(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
   while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
   return s;
@@ -341,7 +343,7 @@ std::vector<std::string_view> split(std::string_view s, char sep) {
   size_t start = 0;
   for (;;) {
     size_t p = s.find(sep, start);
-    out.push_back(trim(s.substr(start, p == std::string_view::npos ? std::string_view::npos : p - start)));
+    out.push_back(trim_blanks(s.substr(start, p == std::string_view::npos ? std::string_view::npos : p - start)));
     if (p == std::string_view::npos) break;
     start = p + 1;
   }
@@ -349,7 +351,7 @@ std::vector<std::string_view> split(std::string_view s, char sep) {
 }
 
 bool parse_float(std::string_view s, float& out) {
-  std::string str(trim(s));
+  std::string str(trim_blanks(s));
   if (str.empty()) return false;
   char* end = nullptr;
   double v = std::strtod(str.c_str(), &end);
@@ -560,7 +562,7 @@ ParamValue parse_param_text(const ParamDesc& d, std::string_view text) {
       break;
     }
     case ParamType::Bool: {
-      auto t = trim(text);
+      auto t = trim_blanks(text);
       if (t == "true" || t == "1" || t == "on") v = true;
       else if (t == "false" || t == "0" || t == "off") v = false;
       else return fail();
@@ -576,7 +578,7 @@ ParamValue parse_param_text(const ParamDesc& d, std::string_view text) {
       v = c;
       break;
     }
-    case ParamType::Enum: v = std::string(trim(text)); break;
+    case ParamType::Enum: v = std::string(trim_blanks(text)); break;
     case ParamType::Curve: {
       Curve c;
       for (auto pt : split(text, ';')) {
@@ -588,7 +590,7 @@ ParamValue parse_param_text(const ParamDesc& d, std::string_view text) {
       v = c;
       break;
     }
-    case ParamType::File: v = std::string(trim(text)); break;
+    case ParamType::File: v = std::string(trim_blanks(text)); break;
   }
   try {
     validate_value(d, v);

@@ -7,6 +7,7 @@
 #include "core/sim/scene_simulation.hpp"
 #include "core/text/echo.hpp"
 #include "core/sim/simulation.hpp"
+#include "core/math/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,7 +22,6 @@ using nlohmann::json;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr const char* kActionKinds = "tilt, rotate, shake, sip, orbit, set, pour, play, seek, stop, pointer";
 double rad(double deg) { return deg * kPi / 180.0; }
 

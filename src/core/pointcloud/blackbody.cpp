@@ -13,12 +13,6 @@ constexpr double kPlanck = 6.62607015e-34;     // J s
 constexpr double kLight = 299792458.0;         // m / s
 constexpr double kBoltzmann = 1.380649e-23;    // J / K
 
-// A Gaussian with a different width either side of its mean (the fit's lobe).
-double lobe(double x, double mean, double sigma_below, double sigma_above) {
-  const double t = (x - mean) / (x < mean ? sigma_below : sigma_above);
-  return std::exp(-0.5 * t * t);
-}
-
 // Composite Simpson over [a, b] with an even count of intervals near `step` wide.
 template <class F>
 double simpson(F f, double a, double b, double step) {
@@ -44,16 +38,6 @@ double blackbody_band_radiance(double kelvin, double min_nm, double max_nm, doub
   // Integrated in nm, the radiance per nm is per metre times 1e-9.
   return simpson([&](double nm) { return planck_radiance(nm * 1e-9, kelvin) * 1e-9; }, min_nm,
                  max_nm, step_nm);
-}
-
-glm::dvec3 cie1931_cmf(double nm) {
-  // Wyman, Sloan and Shirley, "Simple Analytic Approximations to the CIE XYZ Color
-  // Matching Functions", JCGT 2(2), 2013: the multi-lobe (piecewise Gaussian) fit.
-  const double x = 1.056 * lobe(nm, 599.8, 37.9, 31.0) + 0.362 * lobe(nm, 442.0, 16.0, 26.7) -
-                   0.065 * lobe(nm, 501.1, 20.4, 26.2);
-  const double y = 0.821 * lobe(nm, 568.8, 46.9, 40.5) + 0.286 * lobe(nm, 530.9, 16.3, 31.1);
-  const double z = 1.217 * lobe(nm, 437.0, 11.8, 36.0) + 0.681 * lobe(nm, 459.0, 26.0, 13.8);
-  return {x, y, z};
 }
 
 glm::dvec3 blackbody_xyz(double kelvin) {

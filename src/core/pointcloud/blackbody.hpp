@@ -5,6 +5,8 @@
 // blackbody_table_lookup is exactly what the shader does with it. docs/POINT_CLOUDS.md.
 #pragma once
 
+#include "core/math/cie1931.hpp"  // cie1931_cmf
+
 #include <glm/glm.hpp>
 
 #include <vector>
@@ -26,10 +28,6 @@ double planck_radiance(double wavelength_m, double kelvin);
 // Planck's radiance integrated over [min_nm, max_nm] by Simpson's rule with about
 // step_nm per interval, W / (m^2 sr): the same rule as the colour below.
 double blackbody_band_radiance(double kelvin, double min_nm, double max_nm, double step_nm);
-
-// The CIE 1931 colour matching functions by the multi-lobe fit (dimensionless, ybar
-// peaks near 1 at 555 nm).
-glm::dvec3 cie1931_cmf(double wavelength_nm);
 
 // Absolute XYZ of a blackbody: Y is its luminance in cd/m^2 (683 lm/W times the
 // photopically weighted radiance); X and Z on the same scale. Zero for kelvin <= 0.

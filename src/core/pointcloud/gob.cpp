@@ -11,7 +11,7 @@ namespace {
 
 // Neighbours reach this many spacings; the lists are rebuilt every kRebuild steps (the
 // glass moves well under a tenth of a spacing in that time).
-constexpr double kReach = 1.6;
+constexpr double kNeighbourReach = 1.6;
 constexpr int kRebuild = 4;
 // Gauss-Seidel sweeps of the mobility: many at the start (from zero), few per step
 // (warm-started, the shape changes slowly).
@@ -22,7 +22,7 @@ constexpr int kSweepsPerStep = 2;
 constexpr double kDensityRelax = 1.0;
 constexpr double kDensityEps = 0.05;
 
-void check(double v, double lo, double hi, const char* field) {
+void check_gob_field(double v, double lo, double hi, const char* field) {
   if (!(v >= lo && v <= hi))
     throw std::invalid_argument(std::string("gob: ") + field + " is " + std::to_string(v) +
                                 ", expected " + std::to_string(lo) + " to " + std::to_string(hi));
@@ -36,21 +36,21 @@ glm::dvec3 rotate_x(glm::dvec3 v, double a) {
 }  // namespace
 
 MoltenGob::MoltenGob(const GobParams& p) : p_(p) {
-  check(p.count, 500, 100000, "count");
-  check(p.radius, 0.01, 0.2, "radius");
-  if (p.blob_radius != 0) check(p.blob_radius, 1e-4, 0.05, "blob_radius");
-  check(p.pipe_radius, 0.003, std::min(0.05, 0.9 * p.radius), "pipe_radius");
-  check(p.pipe_depth, 0, p.radius, "pipe_depth");
-  check(p.turn_rate, -20, 20, "turn_rate");
-  check(p.viscosity, 100, 1e7, "viscosity");
-  check(p.density, 2000, 3000, "density");
-  check(p.gravity, 0, 30, "gravity");
-  check(p.start_kelvin, 293, 2000, "start_kelvin");
-  check(p.ambient_kelvin, 0, 400, "ambient_kelvin");
-  check(p.diffusivity, 0, 1e-4, "diffusivity");
-  check(p.surface.emissivity, 0, 1, "surface.emissivity");
-  check(p.surface.heat_capacity, 700, 1600, "surface.heat_capacity");
-  check(p.surface.convection, 0, 100, "surface.convection");
+  check_gob_field(p.count, 500, 100000, "count");
+  check_gob_field(p.radius, 0.01, 0.2, "radius");
+  if (p.blob_radius != 0) check_gob_field(p.blob_radius, 1e-4, 0.05, "blob_radius");
+  check_gob_field(p.pipe_radius, 0.003, std::min(0.05, 0.9 * p.radius), "pipe_radius");
+  check_gob_field(p.pipe_depth, 0, p.radius, "pipe_depth");
+  check_gob_field(p.turn_rate, -20, 20, "turn_rate");
+  check_gob_field(p.viscosity, 100, 1e7, "viscosity");
+  check_gob_field(p.density, 2000, 3000, "density");
+  check_gob_field(p.gravity, 0, 30, "gravity");
+  check_gob_field(p.start_kelvin, 293, 2000, "start_kelvin");
+  check_gob_field(p.ambient_kelvin, 0, 400, "ambient_kelvin");
+  check_gob_field(p.diffusivity, 0, 1e-4, "diffusivity");
+  check_gob_field(p.surface.emissivity, 0, 1, "surface.emissivity");
+  check_gob_field(p.surface.heat_capacity, 700, 1600, "surface.heat_capacity");
+  check_gob_field(p.surface.convection, 0, 100, "surface.convection");
 
   // A jittered cubic lattice filling the ball, less the pipe's end inside it, at the
   // spacing that gives about `count` particles.
@@ -59,7 +59,7 @@ MoltenGob::MoltenGob(const GobParams& p) : p_(p) {
   const double pipe_in = M_PI * pr * pr * p.pipe_depth;
   spacing_ = std::cbrt((4.0 / 3.0 * M_PI * r * r * r - pipe_in) / p.count);
   blob_ = p.blob_radius != 0 ? p.blob_radius : 0.8 * spacing_;
-  reach_ = kReach * spacing_;
+  reach_ = kNeighbourReach * spacing_;
   const int n = static_cast<int>(std::ceil(r / spacing_)) + 1;
   const auto u = [](int v) { return static_cast<std::uint64_t>(v + 1024); };  // 11 bits each
   for (int k = -n; k <= n; ++k)

@@ -3,6 +3,7 @@
 #include "core/io/files.hpp"
 #include "core/pointcloud/point_fields.hpp"
 #include "core/text/echo.hpp"
+#include "core/text/trim.hpp"
 
 #include <algorithm>
 #include <array>
@@ -95,13 +96,6 @@ std::string shown_name(std::string_view s) {
   return out;
 }
 
-std::string_view trim(std::string_view s) {
-  const char* ws = " \t\r\v\f";
-  const auto a = s.find_first_not_of(ws);
-  if (a == std::string_view::npos) return {};
-  return s.substr(a, s.find_last_not_of(ws) - a + 1);
-}
-
 std::vector<std::string_view> words(std::string_view s) {
   std::vector<std::string_view> out;
   std::size_t i = 0;
@@ -151,9 +145,9 @@ const std::array<double, 256>& srgb8_table() {
   return t;
 }
 
-class Reader {
+class PlyReader {
  public:
-  Reader(std::string_view bytes, const std::string& name) : s_(bytes), name_(name) {}
+  PlyReader(std::string_view bytes, const std::string& name) : s_(bytes), name_(name) {}
 
   PointCloud read() {
     read_header();
@@ -511,6 +505,6 @@ class Reader {
 
 }  // namespace
 
-PointCloud parse_ply(std::string_view bytes, const std::string& name) { return Reader(bytes, name).read(); }
+PointCloud parse_ply(std::string_view bytes, const std::string& name) { return PlyReader(bytes, name).read(); }
 
 }  // namespace draught

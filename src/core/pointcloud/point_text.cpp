@@ -4,6 +4,7 @@
 #include "core/pointcloud/point_fields.hpp"
 #include "core/text/echo.hpp"
 #include "core/text/suggest.hpp"
+#include "core/text/trim.hpp"
 
 #include <array>
 #include <optional>
@@ -14,13 +15,6 @@ namespace draught {
 namespace {
 
 bool space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
-std::string_view trim(std::string_view s) {
-  std::size_t a = 0, b = s.size();
-  while (a < b && space(s[a])) ++a;
-  while (b > a && space(s[b - 1])) --b;
-  return s.substr(a, b - a);
-}
 
 // Splits a line into at most `max` + 1 columns (one more than can be right, enough to
 // say there are too many): by commas when it has one, else by runs of whitespace.

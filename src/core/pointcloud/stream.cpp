@@ -1,6 +1,7 @@
 #include "core/pointcloud/stream.hpp"
 
 #include "core/pointcloud/field.hpp"
+#include "core/math/vectors.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,13 +11,12 @@
 namespace draught {
 namespace {
 
-void check(double v, double lo, double hi, const char* field) {
+void check_stream_field(double v, double lo, double hi, const char* field) {
   if (!(v >= lo && v <= hi))
     throw std::invalid_argument(std::string("stream: ") + field + " is " + std::to_string(v) +
                                 ", expected " + std::to_string(lo) + " to " + std::to_string(hi));
 }
 
-bool finite(glm::dvec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 }  // namespace
 
@@ -29,19 +29,19 @@ void PourStream::Sum::add(double x) {
 PourStream::PourStream(const StreamParams& p, glm::dvec3 origin, glm::dvec3 velocity,
                        double target_height)
     : p_(p) {
-  check(p.gravity, 0.1, 30, "gravity");
-  check(p.wobble, 0, 0.5, "wobble");
-  check(p.wobble_hz, 0, 50, "wobble_hz");
-  check(p.overlap, 0.1, 1, "overlap");
-  check(p.min_speed, 0.01, 2, "min_speed");
-  check(p.max_radius, 1e-4, 0.1, "max_radius");
-  check(p.capillary, 0, 1e-3, "capillary");
+  check_stream_field(p.gravity, 0.1, 30, "gravity");
+  check_stream_field(p.wobble, 0, 0.5, "wobble");
+  check_stream_field(p.wobble_hz, 0, 50, "wobble_hz");
+  check_stream_field(p.overlap, 0.1, 1, "overlap");
+  check_stream_field(p.min_speed, 0.01, 2, "min_speed");
+  check_stream_field(p.max_radius, 1e-4, 0.1, "max_radius");
+  check_stream_field(p.capillary, 0, 1e-3, "capillary");
   set_origin(origin, velocity);
   set_target_height(target_height);
 }
 
 void PourStream::set_flow(double t, double q) {
-  check(q, 0, 1e3, "flow");
+  check_stream_field(q, 0, 1e3, "flow");
   if (!std::isfinite(t)) throw std::invalid_argument("stream: flow time is not finite");
   t = std::max(t, time());
   auto it = std::lower_bound(schedule_.begin(), schedule_.end(), t,
@@ -73,7 +73,7 @@ double PourStream::flow_integral(double a, double b) const {
 }
 
 void PourStream::set_origin(glm::dvec3 position, glm::dvec3 velocity) {
-  if (!finite(position) || !finite(velocity))
+  if (!all_finite(position) || !all_finite(velocity))
     throw std::invalid_argument("stream: origin position or velocity is not finite");
   origin_ = position;
   velocity_ = velocity;
@@ -119,7 +119,7 @@ glm::dvec3 PourStream::velocity_of(const Parcel& q, double t) const {
 }
 
 void PourStream::set_lip(const StreamLip& lip) {
-  if (!finite(lip.centre) || !finite(lip.up) || !finite(lip.outward) || !std::isfinite(lip.radius))
+  if (!all_finite(lip.centre) || !all_finite(lip.up) || !all_finite(lip.outward) || !std::isfinite(lip.radius))
     throw std::invalid_argument("stream: lip is not finite");
   if (!(lip.radius > 0) || std::abs(glm::length(lip.up) - 1) > 1e-6 || std::abs(glm::length(lip.outward) - 1) > 1e-6 ||
       std::abs(glm::dot(lip.up, lip.outward)) > 1e-6)

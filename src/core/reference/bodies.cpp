@@ -5,6 +5,7 @@
 #include "core/pointcloud/cloud_object.hpp"
 #include "core/pointcloud/glow_light.hpp"
 #include "core/reference/optics.hpp"
+#include "core/math/vectors.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +14,6 @@ namespace draught {
 
 namespace {
 
-double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 
 }  // namespace
 
@@ -67,7 +67,7 @@ bool MarchedBodies::cross(const Hit& h, const glm::dvec4& attrs, Ray& ray, Mediu
   const MediumKind next = inside ? MediumKind::Air : (droplet ? MediumKind::Droplet : MediumKind::Cloud);
   const bool reflected = fresnel_turn(ray, n, n1, n2, F, rng.uniform(), next, h.object, medium, obj);
   const glm::dvec3 tint(attrs.y, attrs.z, attrs.w);  // 0: the points give no colour
-  if (medium != before && max3(tint) > 0) thr *= tint;
+  if (medium != before && max_component(tint) > 0) thr *= tint;
   return reflected;
 }
 

@@ -18,7 +18,11 @@ namespace draught {
 
 class Rng;
 
-// The same as kEps for the marched surfaces: the clouds' march is the picture's float one,
+// Where a path (the reference tracer's) or a photon (the floor light's) starts again past
+// the analytic surface it left.
+inline constexpr double kRestartEps = 1e-7;
+
+// The same as kRestartEps for the marched surfaces: the clouds' march is the picture's float one,
 // its hits placed to about a tenth of a micrometre, so a path leaving one starts 2 um on,
 // as the picture's does (a march from the wrong side stops at once).
 inline constexpr double kBodyMarchEps = 2e-6;

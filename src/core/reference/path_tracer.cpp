@@ -16,6 +16,8 @@
 #include "core/reference/media.hpp"
 #include "core/reference/free_flight.hpp"
 #include "core/reference/optics.hpp"
+#include "core/math/constants.hpp"
+#include "core/math/vectors.hpp"
 
 #include <algorithm>
 #include <array>
@@ -30,11 +32,7 @@ namespace draught {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kEps = 1e-7;  // where a path starts again past the surface it left
 
-double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 
 // Henyey-Greenstein: phase value for the cosine between the incoming travel direction
 // and the scattered one, and a sample of it.
@@ -129,7 +127,7 @@ class Tracer {
     const glm::dvec3 eye = ray.o;
     for (;;) {
       glm::dvec4 attrs(0.0);  // a cloud's surface: its temperature and colour there
-      const Hit h = bodies_.nearest(geo_, ray, kEps, medium, obj, attrs);
+      const Hit h = bodies_.nearest(geo_, ray, kRestartEps, medium, obj, attrs);
       // A path inside a glass or drink that meets none of its surfaces has slipped out
       // (a grazing turn about a smooth normal can leave the frustum's side), as has one in
       // a droplet or a blob whose march ran out of steps: it leaves into the studio from
@@ -161,7 +159,7 @@ class Tracer {
         // The screen card: an emitter found by the paths alone (no light sampling of it).
         double t_screen = 0;
         glm::dvec2 uv;
-        const bool screen = frame_.screen.intersect(ray.o, ray.d, kEps, t_screen, uv) && t_screen < t_light;
+        const bool screen = frame_.screen.intersect(ray.o, ray.d, kRestartEps, t_screen, uv) && t_screen < t_light;
         if (screen) t_light = t_screen;
         const AirEvent e = air_segment(ray, t_light, rng);
         if (e.kind == AirEvent::Scatter) {
@@ -266,7 +264,7 @@ class Tracer {
       }
       if (u >= F && h.m == Material::GlassBottom && on_floor(p)) {
         // Out through a foot's underside where it stands on the floor: the path meets the
-        // floor at once (its intersection lies within kEps, so the search would miss it).
+        // floor at once (its intersection lies within kRestartEps, so the search would miss it).
         if (!floor_under_foot(p, m.ior(MediumKind::Glass), thr, ray, rng)) break;
         if (!roulette(thr, surfaces + scatters, rng)) break;
         sees_lights = false;
@@ -367,7 +365,7 @@ class Tracer {
   // Russian roulette once a path is long: survivors carry the lost weight.
   static bool roulette(glm::dvec3& thr, int events, Rng& rng) {
     if (events < 8) return true;
-    const double q = std::min(1.0, max3(thr));
+    const double q = std::min(1.0, max_component(thr));
     if (q <= 0 || rng.uniform() >= q) return false;
     thr /= q;
     return true;
@@ -384,13 +382,13 @@ class Tracer {
     const std::optional<glm::dvec3> side = decal_turn(decal, n, next, object, ray, medium, obj, thr, rng);
     if (!side) {  // metal: a rough mirror
       mis.pdf = -1;
-      return max3(thr) > 0;
+      return max_component(thr) > 0;
     }
     L += thr * direct_light(p, *side, ray.d, 0.0, rng);
     double cos_t;
     ray.d = decal_diffuse_direction(*side, rng, cos_t);
     mis = {cos_t / kPi, p, *side};
-    return max3(thr) > 0;
+    return max_component(thr) > 0;
   }
 
   // The heads along the world ray over [0, t_end] in order of entry, as (t0, t1, object);
@@ -483,7 +481,7 @@ class Tracer {
     int found = -1;
     for (size_t i = 0; i < lights_.size(); ++i) {
       double tl;
-      if (lights_[i].intersect(ray.o, ray.d, kEps, tl) && tl < t) {
+      if (lights_[i].intersect(ray.o, ray.d, kRestartEps, tl) && tl < t) {
         t = tl;
         found = int(i);
       }
@@ -495,7 +493,7 @@ class Tracer {
   // any surface (a dielectric bends it away) or another light's front, else the heads'
   // transmittance (ratio tracking) and the films of caps it passes straight through.
   double visibility(const Ray& ray, double dist, Rng& rng) const {
-    if (first_hit(geo_, ray, kEps).t < dist) return 0;
+    if (first_hit(geo_, ray, kRestartEps).t < dist) return 0;
     Hit body;  // a droplet or a cloud in the way
     body.t = dist;
     glm::dvec4 attrs;
@@ -515,7 +513,7 @@ class Tracer {
       while (head.hit_cap(o, d, from, dist, t, n)) {
         const double F = fresnel_dielectric(std::fabs(glm::dot(n, d)), 1.0, m.liquid_ior);
         T *= 1 - 2 * F / (1 + F);
-        from = t + kEps;
+        from = t + kRestartEps;
       }
     }
     return T;

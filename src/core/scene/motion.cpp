@@ -1,4 +1,5 @@
 #include "core/scene/motion.hpp"
+#include "core/math/vectors.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,10 +7,9 @@
 namespace draught {
 
 namespace {
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 glm::dvec3 limit(const glm::dvec3& v, double max_len) {
-  if (!finite(v)) return glm::dvec3(0.0);
+  if (!all_finite(v)) return glm::dvec3(0.0);
   const double len = glm::length(v);
   return len > max_len ? v * (max_len / len) : v;
 }

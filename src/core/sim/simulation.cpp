@@ -1,6 +1,8 @@
 #include "core/sim/simulation.hpp"
 
 #include "core/liquid/beverage.hpp"
+#include "core/math/vectors.hpp"
+#include "core/math/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +10,6 @@
 namespace draught {
 
 namespace {
-constexpr double kG = 9.80665;
 constexpr double kEmpty = 1e-4;  // below this fraction the glass shows no liquid
 
 BubbleSettings bubble_settings(const BubbleParams& p) {
@@ -25,10 +26,6 @@ bool same_glass(const GlassParams& a, const GlassParams& b) {
          a.rim_radius == b.rim_radius;
 }
 
-glm::dvec3 clamp_length(const glm::dvec3& v, double max_len) {
-  const double len = glm::length(v);
-  return len > max_len ? v * (max_len / len) : v;
-}
 }  // namespace
 
 Simulation::Simulation(const VesselParams& p) : params_(p), foam_(p.foam), colour_(drink_absorption(p.liquid)) {
@@ -268,7 +265,7 @@ double Simulation::headroom() const { return std::max(rim_offset(vessel_, tilt_)
 SloshEnvironment Simulation::environment(const glm::dvec3& accel, double dt) const {
   SloshEnvironment e;
   // The surface rests perpendicular to the effective gravity g - a.
-  const double gy = std::max(kG + accel.y, 0.2 * kG);
+  const double gy = std::max(kGravity + accel.y, 0.2 * kGravity);
   glm::dvec2 level = glm::dvec2(accel.x, accel.z) / gy;
   e.max_slope = 1.5;  // ~56 degrees
   if (glm::length(level) > e.max_slope) level *= e.max_slope / glm::length(level);

@@ -2,6 +2,7 @@
 
 #include "core/io/files.hpp"
 #include "core/vessel/decal_files.hpp"
+#include "core/math/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +15,6 @@ static_assert(int(DecalKind::Etched) == int(contract::DecalKind::Etched));
 static_assert(int(DecalKind::Metallic) == int(contract::DecalKind::Metallic));
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 
 // Knot k's fractional segment position for height y: segment k, fraction f (as
 // Vessel::outer_radius interpolates).

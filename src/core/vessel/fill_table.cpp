@@ -1,4 +1,5 @@
 #include "core/vessel/fill_table.hpp"
+#include "core/math/constants.hpp"
 
 #include <algorithm>
 #include <array>
@@ -9,7 +10,6 @@ namespace draught {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kFlat = 1e-7;  // |sin(tilt)| below this: the plane is horizontal
 
 // 6-point Gauss-Legendre on [-1, 1].

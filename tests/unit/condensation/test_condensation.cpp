@@ -4,6 +4,7 @@
 #include "core/condensation/condensation.hpp"
 #include "core/condensation/wall_grid.hpp"
 #include "core/params/params.hpp"
+#include "core/math/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +15,6 @@
 namespace draught {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 Vessel pint() { return build_vessel(default_params().glass); }
 

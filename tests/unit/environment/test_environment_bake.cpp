@@ -10,6 +10,7 @@
 #include "core/io/files.hpp"
 
 #include "test_common.hpp"
+#include "core/math/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,7 +21,6 @@
 namespace draught {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Irradiance on a surface with normal n from an equirectangular image: the sum over
 // texels of radiance x cos x solid angle.

@@ -17,6 +17,7 @@
 #include "core/scene/frame.hpp"
 
 #include "environment/image_scene_test.hpp"
+#include "core/math/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,7 +28,6 @@
 namespace draught {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 class EnvironmentImage : public test::ImageSceneTest {
  protected:

@@ -16,7 +16,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 HdrImage filled(int w, int h, glm::vec3 c) { return HdrImage{w, h, std::vector<glm::vec3>(size_t(w) * size_t(h), c)}; }
 
-std::string error_of(int w, int h) {
+std::string map_error_of(int w, int h) {
   try {
     make_environment_map(filled(w, h, glm::vec3(1)), "bar.exr");
   } catch (const InputError& e) {
@@ -91,10 +91,10 @@ TEST(EnvironmentMap, FractionalLevelsBlendTwoLevelsAndLevelsAreClamped) {
 }
 
 TEST(EnvironmentMap, ShapesThatAreNotAnEquirectangularImageAreRefused) {
-  EXPECT_TRUE(test::has(error_of(1, 1), {"bar.exr", "1 x 1", "twice as wide as high"}));
-  EXPECT_TRUE(test::has(error_of(300, 200), {"bar.exr", "300 x 200", "twice as wide as high"}));
-  EXPECT_TRUE(test::has(error_of(4, 2), {"bar.exr", "4 x 2", "at least 8 x 4"}));
-  EXPECT_EQ(error_of(8, 4), "");
+  EXPECT_TRUE(test::has(map_error_of(1, 1), {"bar.exr", "1 x 1", "twice as wide as high"}));
+  EXPECT_TRUE(test::has(map_error_of(300, 200), {"bar.exr", "300 x 200", "twice as wide as high"}));
+  EXPECT_TRUE(test::has(map_error_of(4, 2), {"bar.exr", "4 x 2", "at least 8 x 4"}));
+  EXPECT_EQ(map_error_of(8, 4), "");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include "core/environment/lights.hpp"
 #include "core/math/atan2.hpp"
 #include "core/math/random.hpp"
+#include "core/math/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +15,6 @@
 namespace draught {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 AreaLight rect(glm::dvec3 c, glm::dvec3 n, glm::dvec3 hu, glm::dvec3 hv) {
   AreaLight l;

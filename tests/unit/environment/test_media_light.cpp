@@ -8,6 +8,7 @@
 #include "core/scene/frame.hpp"
 
 #include "environment/image_scene_test.hpp"
+#include "core/math/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +18,6 @@
 namespace draught {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 class MediaLightTest : public test::ImageSceneTest {
  protected:

@@ -41,7 +41,7 @@ std::string radiance_bytes(int w, int h, const std::vector<float>& rgb) {
   return out;
 }
 
-std::string error_of(std::string_view bytes, const std::string& name = "env.hdr") {
+std::string hdr_error_of(std::string_view bytes, const std::string& name = "env.hdr") {
   try {
     decode_hdr_image(bytes, name);
   } catch (const InputError& e) {
@@ -126,23 +126,23 @@ TEST_F(HdrImageFiles, NonFiniteNegativeAndHugeValuesAreClampedAndCounted) {
 
 TEST_F(HdrImageFiles, ATruncatedFileIsRefusedAsDamaged) {
   const std::string hdr = radiance_bytes(64, 32, pattern(64, 32, 3));
-  EXPECT_TRUE(test::has(error_of(hdr.substr(0, hdr.size() / 2)), {"env.hdr", "damaged Radiance HDR"}));
-  EXPECT_TRUE(test::has(error_of(hdr.substr(0, 20)), {"env.hdr", "damaged Radiance HDR"}));
+  EXPECT_TRUE(test::has(hdr_error_of(hdr.substr(0, hdr.size() / 2)), {"env.hdr", "damaged Radiance HDR"}));
+  EXPECT_TRUE(test::has(hdr_error_of(hdr.substr(0, 20)), {"env.hdr", "damaged Radiance HDR"}));
   const std::string exr = exr_bytes(64, 32, pattern(64, 32, 4));
-  EXPECT_TRUE(test::has(error_of(exr.substr(0, exr.size() / 2), "env.exr"), {"env.exr", "damaged OpenEXR"}));
-  EXPECT_TRUE(test::has(error_of(exr.substr(0, 12), "env.exr"), {"env.exr", "damaged OpenEXR"}));
+  EXPECT_TRUE(test::has(hdr_error_of(exr.substr(0, exr.size() / 2), "env.exr"), {"env.exr", "damaged OpenEXR"}));
+  EXPECT_TRUE(test::has(hdr_error_of(exr.substr(0, 12), "env.exr"), {"env.exr", "damaged OpenEXR"}));
 }
 
 TEST(HdrImage, MalformedRunsAndHeadersAreRefusedNotDecoded) {
   // stb_image alone loops forever on a run of zero pixels (what a file cut short reads as).
   const std::string head = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 64\n";
-  EXPECT_TRUE(test::has(error_of(head + std::string("\x02\x02\x00\x40\x00", 5)), {"env.hdr", "a run of 0 pixels"}));
-  EXPECT_TRUE(test::has(error_of(head + std::string("\x02\x02\x00\x40\xFF\x01", 6)), {"env.hdr", "a run of 127 pixels"}));
-  EXPECT_TRUE(test::has(error_of(head + std::string("\x02\x02\x00\x20", 4)), {"scanline 0 is not the image's width"}));
-  EXPECT_TRUE(test::has(error_of("#?RADIANCE\nFORMAT=32-bit_rle_xyze\n\n-Y 1 +X 64\n"), {"env.hdr", "not FORMAT=32-bit_rle_rgbe"}));
-  EXPECT_TRUE(test::has(error_of("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n+Y 1 +X 64\n"), {"env.hdr", "-Y height +X width"}));
+  EXPECT_TRUE(test::has(hdr_error_of(head + std::string("\x02\x02\x00\x40\x00", 5)), {"env.hdr", "a run of 0 pixels"}));
+  EXPECT_TRUE(test::has(hdr_error_of(head + std::string("\x02\x02\x00\x40\xFF\x01", 6)), {"env.hdr", "a run of 127 pixels"}));
+  EXPECT_TRUE(test::has(hdr_error_of(head + std::string("\x02\x02\x00\x20", 4)), {"scanline 0 is not the image's width"}));
+  EXPECT_TRUE(test::has(hdr_error_of("#?RADIANCE\nFORMAT=32-bit_rle_xyze\n\n-Y 1 +X 64\n"), {"env.hdr", "not FORMAT=32-bit_rle_rgbe"}));
+  EXPECT_TRUE(test::has(hdr_error_of("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n+Y 1 +X 64\n"), {"env.hdr", "-Y height +X width"}));
   // A small image is stored flat, 4 bytes a pixel: all of them must be there.
-  EXPECT_TRUE(test::has(error_of("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n" + std::string(31, '\x01')),
+  EXPECT_TRUE(test::has(hdr_error_of("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n" + std::string(31, '\x01')),
                         {"env.hdr", "ends before its last pixel"}));
 }
 
@@ -153,24 +153,24 @@ TEST(HdrImage, AShortTilesAttributeIsRefusedBeforeTinyexrReadsIt) {
   const std::string four_bytes("\x04\x00\x00\x00", 4);
   const std::string file = magic + tiled_version + std::string("tiles\0tiledesc\0", 15) + four_bytes + "abcd" +
                            std::string(1, '\0');
-  EXPECT_TRUE(test::has(error_of(file, "env.exr"), {"env.exr", "damaged OpenEXR", "\"tiles\"", "4 bytes", "expected 9"}));
+  EXPECT_TRUE(test::has(hdr_error_of(file, "env.exr"), {"env.exr", "damaged OpenEXR", "\"tiles\"", "4 bytes", "expected 9"}));
 }
 
 TEST(HdrImage, EightBitImagesAreRefusedByName) {
-  EXPECT_TRUE(test::has(error_of(std::string("\x89PNG\r\n\x1a\n", 8) + std::string(40, '\0'), "sky.png"),
+  EXPECT_TRUE(test::has(hdr_error_of(std::string("\x89PNG\r\n\x1a\n", 8) + std::string(40, '\0'), "sky.png"),
                         {"sky.png", "a PNG image holds 8-bit colour", "Radiance .hdr or OpenEXR .exr"}));
-  EXPECT_TRUE(test::has(error_of("\xFF\xD8\xFF\xE0 jpeg", "sky.hdr"), {"sky.hdr", "a JPEG"}));
+  EXPECT_TRUE(test::has(hdr_error_of("\xFF\xD8\xFF\xE0 jpeg", "sky.hdr"), {"sky.hdr", "a JPEG"}));
 }
 
 TEST(HdrImage, EmptyAndUnknownFilesSayWhatWasExpected) {
-  EXPECT_TRUE(test::has(error_of(""), {"env.hdr", "empty", "Radiance .hdr or OpenEXR .exr"}));
-  EXPECT_TRUE(test::has(error_of("{\"preset\": 1}"), {"env.hdr", "not an HDR image", "#?RADIANCE"}));
+  EXPECT_TRUE(test::has(hdr_error_of(""), {"env.hdr", "empty", "Radiance .hdr or OpenEXR .exr"}));
+  EXPECT_TRUE(test::has(hdr_error_of("{\"preset\": 1}"), {"env.hdr", "not an HDR image", "#?RADIANCE"}));
 }
 
 TEST(HdrImage, ATooLargeImageIsRefusedBeforeItIsDecoded) {
   // A header for 16k x 8k and no pixels: refused by its size, not by missing data.
   const std::string header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8192 +X 16384\n";
-  EXPECT_TRUE(test::has(error_of(header), {"env.hdr", "16384 x 8192", "larger than the 8192 x 4096"}));
+  EXPECT_TRUE(test::has(hdr_error_of(header), {"env.hdr", "16384 x 8192", "larger than the 8192 x 4096"}));
 }
 
 TEST(HdrImage, ReadingAFileNamesItAndTheLimit) {

@@ -24,7 +24,7 @@ Image pattern(int w, int h) {
   return img;
 }
 
-std::string error_of(std::string_view bytes, const std::string& name = "logo.png", int max_side = kMaxPngSide) {
+std::string png_error_of(std::string_view bytes, const std::string& name = "logo.png", int max_side = kMaxPngSide) {
   try {
     decode_png(bytes, name, max_side);
   } catch (const InputError& e) {
@@ -84,36 +84,36 @@ TEST(PngDecode, DecodesEveryColourTypeAndDepth) {
 }
 
 TEST(PngDecode, RefusesWhatIsNotAPng) {
-  EXPECT_TRUE(test::has(error_of(""), {"logo.png", "expected a PNG image", "an empty file"}));
-  EXPECT_TRUE(test::has(error_of("hello, world"), {"logo.png", "expected a PNG image", "not an image"}));
-  EXPECT_TRUE(test::has(error_of("\xFF\xD8\xFF\xE0 JFIF"), {"logo.png", "a JPEG image"}));
-  EXPECT_TRUE(test::has(error_of("GIF89a...."), {"a GIF image"}));
-  EXPECT_TRUE(test::has(error_of("RIFF....WEBPVP8 "), {"a WebP image"}));
-  EXPECT_TRUE(test::has(error_of("RIFF\r"), {"expected a PNG image"}));  // shorter than a RIFF header (fuzz_decal_image)
-  EXPECT_TRUE(test::has(error_of("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n"), {"a Radiance HDR image"}));
-  EXPECT_TRUE(test::has(error_of("<svg xmlns=...>"), {"SVG", "rasterise it to a PNG"}));
-  EXPECT_TRUE(test::has(error_of("\x89PN"), {"logo.png", "damaged", "signature"}));
+  EXPECT_TRUE(test::has(png_error_of(""), {"logo.png", "expected a PNG image", "an empty file"}));
+  EXPECT_TRUE(test::has(png_error_of("hello, world"), {"logo.png", "expected a PNG image", "not an image"}));
+  EXPECT_TRUE(test::has(png_error_of("\xFF\xD8\xFF\xE0 JFIF"), {"logo.png", "a JPEG image"}));
+  EXPECT_TRUE(test::has(png_error_of("GIF89a...."), {"a GIF image"}));
+  EXPECT_TRUE(test::has(png_error_of("RIFF....WEBPVP8 "), {"a WebP image"}));
+  EXPECT_TRUE(test::has(png_error_of("RIFF\r"), {"expected a PNG image"}));  // shorter than a RIFF header (fuzz_decal_image)
+  EXPECT_TRUE(test::has(png_error_of("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n"), {"a Radiance HDR image"}));
+  EXPECT_TRUE(test::has(png_error_of("<svg xmlns=...>"), {"SVG", "rasterise it to a PNG"}));
+  EXPECT_TRUE(test::has(png_error_of("\x89PN"), {"logo.png", "damaged", "signature"}));
 }
 
 TEST(PngDecode, RefusesAnImageWithoutPixels) {
-  EXPECT_TRUE(test::has(error_of(with_header_size(0, 10)), {"logo.png", "no pixels", "0 x 10"}));
-  EXPECT_TRUE(test::has(error_of(with_header_size(10, 0)), {"no pixels", "10 x 0"}));
+  EXPECT_TRUE(test::has(png_error_of(with_header_size(0, 10)), {"logo.png", "no pixels", "0 x 10"}));
+  EXPECT_TRUE(test::has(png_error_of(with_header_size(10, 0)), {"no pixels", "10 x 0"}));
 }
 
 TEST(PngDecode, RefusesAnImageTooLarge) {
   // The header is read before any pixel: a 100000 x 100000 claim costs nothing.
-  EXPECT_TRUE(test::has(error_of(with_header_size(100000, 100000)),
+  EXPECT_TRUE(test::has(png_error_of(with_header_size(100000, 100000)),
                         {"logo.png", "100000 x 100000 pixels", "larger than the 4096 x 4096"}));
   // A real one just over the limit (the limit given smaller, to keep the test quick).
-  EXPECT_TRUE(test::has(error_of(encode_png(pattern(65, 3)), "logo.png", 64), {"65 x 3 pixels", "64 x 64"}));
-  EXPECT_EQ(error_of(encode_png(pattern(64, 3)), "logo.png", 64), "");
+  EXPECT_TRUE(test::has(png_error_of(encode_png(pattern(65, 3)), "logo.png", 64), {"65 x 3 pixels", "64 x 64"}));
+  EXPECT_EQ(png_error_of(encode_png(pattern(64, 3)), "logo.png", 64), "");
   EXPECT_EQ(kMaxPngSide, 4096);
 }
 
 TEST(PngDecode, RefusesAFileCutShortAnywhere) {
   const std::string good = encode_png(pattern(9, 6));
   for (size_t n = 1; n < good.size(); ++n) {
-    const std::string e = error_of(good.substr(0, n));
+    const std::string e = png_error_of(good.substr(0, n));
     ASSERT_FALSE(e.empty()) << "a file cut to " << n << " of " << good.size() << " bytes was accepted";
     ASSERT_TRUE(test::has(e, {"logo.png", "damaged"})) << "cut to " << n;
   }
@@ -126,31 +126,31 @@ TEST(PngDecode, RefusesDamagedData) {
   for (size_t i = 8; i < good.size(); ++i) {
     std::string bad = good;
     bad[i] = char(bad[i] ^ 0x5A);
-    const std::string e = error_of(bad);
+    const std::string e = png_error_of(bad);
     ASSERT_FALSE(e.empty()) << "byte " << i << " changed was accepted";
     ASSERT_TRUE(test::has(e, {"logo.png"})) << e;
   }
   std::string bad = good;
   bad[8 + 8 + 13 + 4 + 8 + 2] ^= 1;  // inside the first IDAT's data
-  EXPECT_TRUE(test::has(error_of(bad), {"damaged", "IDAT", "checksum"}));
+  EXPECT_TRUE(test::has(png_error_of(bad), {"damaged", "IDAT", "checksum"}));
 }
 
 TEST(PngDecode, RefusesAChunkThatIsNotPng) {
   const std::string good = encode_png(pattern(2, 2));
   // An unknown critical chunk before the data.
   const std::string bad = good.substr(0, 33) + chunk("QQQQ", "x") + good.substr(33);
-  EXPECT_TRUE(test::has(error_of(bad), {"unknown critical chunk", "QQQQ"}));
+  EXPECT_TRUE(test::has(png_error_of(bad), {"unknown critical chunk", "QQQQ"}));
   // An unknown ancillary chunk is skipped, as PNG says.
-  EXPECT_EQ(error_of(good.substr(0, 33) + chunk("qqQQ", "x") + good.substr(33)), "");
+  EXPECT_EQ(png_error_of(good.substr(0, 33) + chunk("qqQQ", "x") + good.substr(33)), "");
   // A bit depth no colour type has.
   std::string depth = good;
   depth[8 + 8 + 8] = 3;
   depth.replace(8 + 8 + 13, 4, be32(crc(depth.substr(12, 17))));
-  EXPECT_TRUE(test::has(error_of(depth), {"bit depth 3", "not a PNG format"}));
+  EXPECT_TRUE(test::has(png_error_of(depth), {"bit depth 3", "not a PNG format"}));
 }
 
 TEST(PngDecode, ErrorsBeginWithTheFilesName) {
-  const std::string e = error_of("nope", "caf\xC3\xA9/logo.png");
+  const std::string e = png_error_of("nope", "caf\xC3\xA9/logo.png");
   EXPECT_EQ(e.rfind("caf\xC3\xA9/logo.png: ", 0), 0u) << e;
 }
 

@@ -1,6 +1,7 @@
 // The slosh model on its own: the first mode's frequency, free oscillation, decay to an
 // exact rest, the limits it keeps, and the wave shapes (which must move no volume).
 #include "core/liquid/slosh.hpp"
+#include "core/math/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +13,6 @@
 namespace draught {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kG = 9.80665;
 constexpr double kDt = 1.0 / 240.0;
 

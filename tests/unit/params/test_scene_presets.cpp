@@ -31,7 +31,7 @@ const std::string kTwo = R"([
   { "name": "a", "glass": "pint", "drink": "lager", "position": [-0.1, 0, 0] },
   { "name": "b", "glass": "nonic", "drink": "stout", "position": [0.1, 0, 0.02], "yaw": 30 } ])";
 
-std::string parse_error(const std::string& text) {
+std::string scene_parse_error(const std::string& text) {
   try {
     parse_preset(text, "s.json");
   } catch (const InputError& e) {
@@ -198,73 +198,73 @@ TEST(ScenePreset, AtTheLimitOfObjects) {
   };
   const Scene s = scene_from_preset(parse_preset(scene_json(grid(kMaxSceneObjects)), "s.json"));
   EXPECT_EQ(int(s.objects.size()), kMaxSceneObjects);
-  EXPECT_TRUE(has(parse_error(scene_json(grid(kMaxSceneObjects + 1))),
+  EXPECT_TRUE(has(scene_parse_error(scene_json(grid(kMaxSceneObjects + 1))),
                   {"s.json", "field 'objects'", "at most " + std::to_string(kMaxSceneObjects), "got 65"}));
 }
 
 // ------------------------------------------------------------ every error --
 
 TEST(ScenePresetErrors, ObjectsMustBeANonEmptyArrayOfObjects) {
-  EXPECT_TRUE(has(parse_error(scene_json("{}")), {"s.json", "field 'objects'", "expected an array"}));
-  EXPECT_TRUE(has(parse_error(scene_json("[]")), {"s.json", "field 'objects'", "expected an array of 1 to 64"}));
-  EXPECT_TRUE(has(parse_error(scene_json("[1]")), {"s.json", "field 'objects[0]'", "expected an object"}));
+  EXPECT_TRUE(has(scene_parse_error(scene_json("{}")), {"s.json", "field 'objects'", "expected an array"}));
+  EXPECT_TRUE(has(scene_parse_error(scene_json("[]")), {"s.json", "field 'objects'", "expected an array of 1 to 64"}));
+  EXPECT_TRUE(has(scene_parse_error(scene_json("[1]")), {"s.json", "field 'objects[0]'", "expected an object"}));
 }
 
 TEST(ScenePresetErrors, OnlyScenesPlaceObjects) {
-  const std::string m = parse_error(R"({ "kind": "drink", "name": "d", "objects": [{ "name": "a" }] })");
+  const std::string m = scene_parse_error(R"({ "kind": "drink", "name": "d", "objects": [{ "name": "a" }] })");
   EXPECT_TRUE(has(m, {"s.json", "field 'objects'", "only a scene preset places objects"}));
 }
 
 TEST(ScenePresetErrors, ObjectFields) {
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "glass": "pint" }])")), {"s.json", "objects[0].name", "missing"}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "" }])")), {"objects[0].name", "non-empty string"}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": 3 }])")), {"objects[0].name", "string", "got 3"}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a", "drink": ["lager"] }])")), {"objects[0].drink", "string"}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a", "glas": "pint" }])")),
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "glass": "pint" }])")), {"s.json", "objects[0].name", "missing"}));
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "" }])")), {"objects[0].name", "non-empty string"}));
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": 3 }])")), {"objects[0].name", "string", "got 3"}));
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "a", "drink": ["lager"] }])")), {"objects[0].drink", "string"}));
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "a", "glas": "pint" }])")),
                   {"objects[0].glas", "unknown key", "expected one of name, kind, glass, drink, position, yaw, params, droplets"}));
   // A droplets object: its own parameters, no glass; one per scene.
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "d", "kind": "droplets", "glass": "pint" }])")),
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "d", "kind": "droplets", "glass": "pint" }])")),
                   {"objects[0].glass", "a droplets object has no glass"}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "d", "kind": "drops" }])")),
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "d", "kind": "drops" }])")),
                   {"objects[0].kind", "expected \"vessel\" (the default), \"droplets\" or \"pointcloud\"", "\"drops\""}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "d", "kind": "droplets", "droplets": { "blend": -1 } }])")),
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "d", "kind": "droplets", "droplets": { "blend": -1 } }])")),
                   {"objects[0].droplets.blend", "expected a number in [0, 0.2] (m)", "got -1"}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "d", "kind": "droplets" }, { "name": "e", "kind": "droplets" }])")),
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "d", "kind": "droplets" }, { "name": "e", "kind": "droplets" }])")),
                   {"objects[1].kind", "at most one droplets object"}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a" }, { "name": "b", "position": [0, 0] }])")),
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "a" }, { "name": "b", "position": [0, 0] }])")),
                   {"s.json", "objects[1].position", "[x, y, z]"}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a", "position": [7, 0, 0] }])")),
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "a", "position": [7, 0, 0] }])")),
                   {"objects[0].position", "x and z in [-5, 5]", "got [7,0,0]"}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a", "position": [0, -0.1, 0] }])")),
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "a", "position": [0, -0.1, 0] }])")),
                   {"objects[0].position", "y (the foot above the floor) in [0, 1]"}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a", "position": [0, "0", 0] }])")), {"objects[0].position"}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a", "yaw": 400 }])")), {"objects[0].yaw", "[-360, 360]", "400"}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a", "params": 1 }])")), {"objects[0].params", "groups"}));
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "a", "position": [0, "0", 0] }])")), {"objects[0].position"}));
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "a", "yaw": 400 }])")), {"objects[0].yaw", "[-360, 360]", "400"}));
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "a", "params": 1 }])")), {"objects[0].params", "groups"}));
 }
 
 TEST(ScenePresetErrors, NamesAreUnique) {
-  const std::string m = parse_error(scene_json(R"([{ "name": "a" }, { "name": "b" }, { "name": "a" }])"));
+  const std::string m = scene_parse_error(scene_json(R"([{ "name": "a" }, { "name": "b" }, { "name": "a" }])"));
   EXPECT_TRUE(has(m, {"s.json", "objects[2].name", "no other object has", "\"a\"", "objects[0]"}));
 }
 
 TEST(ScenePresetErrors, ObjectParamsAreValidated) {
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a", "params": { "liquid": { "fill": 2 } } }])")),
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "a", "params": { "liquid": { "fill": 2 } } }])")),
                   {"s.json", "field 'objects[0].params.liquid.fill'", "[0, 0.98]", "got 2"}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a", "params": { "liquid": { "fil": 0.5 } } }])")),
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "a", "params": { "liquid": { "fil": 0.5 } } }])")),
                   {"objects[0].params.liquid.fil", "did you mean 'liquid.fill'"}));
 }
 
 TEST(ScenePresetErrors, SceneGroupsInsideAnObjectAreRefused) {
-  const std::string m = parse_error(scene_json(R"([{ "name": "a" }, { "name": "b", "params": { "env": { "floor": false } } }])"));
+  const std::string m = scene_parse_error(scene_json(R"([{ "name": "a" }, { "name": "b", "params": { "env": { "floor": false } } }])"));
   EXPECT_TRUE(has(m, {"s.json", "field 'objects[1].params.env.floor'", "belongs to the whole scene", "top-level"}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a", "params": { "camera": { "vfov": 30 } } }])")),
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "a", "params": { "camera": { "vfov": 30 } } }])")),
                   {"objects[0].params.camera.vfov", "whole scene"}));
 }
 
 TEST(ScenePresetErrors, VesselGroupsAtTheTopOfASceneWithObjectsAreRefused) {
-  const std::string m = parse_error(scene_json(R"([{ "name": "a" }])", R"({ "liquid": { "fill": 0.5 } })"));
+  const std::string m = scene_parse_error(scene_json(R"([{ "name": "a" }])", R"({ "liquid": { "fill": 0.5 } })"));
   EXPECT_TRUE(has(m, {"s.json", "field 'params.liquid.fill'", "per object", "objects[N].params", "env.*"}));
-  EXPECT_TRUE(has(parse_error(scene_json(R"([{ "name": "a" }])", "{}", R"("suggested_glass": "pint", )")),
+  EXPECT_TRUE(has(scene_parse_error(scene_json(R"([{ "name": "a" }])", "{}", R"("suggested_glass": "pint", )")),
                   {"s.json", "suggested_glass", "objects[N].glass"}));
 }
 

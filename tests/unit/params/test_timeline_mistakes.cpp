@@ -21,7 +21,7 @@ std::vector<std::string> lines_of(const std::string& s) {
   return out;
 }
 
-std::string error_of(const std::string& text, const std::string& file = "t.json") {
+std::string timeline_error_of(const std::string& text, const std::string& file = "t.json") {
   try {
     parse_timeline(text, file);
   } catch (const InputError& e) {
@@ -34,14 +34,14 @@ std::string error_of(const std::string& text, const std::string& file = "t.json"
 const std::string kHead = R"({"draught_timeline": 1, "name": "t", "actions": [)";
 
 TEST(TimelineMistakes, OneMistakeIsOneLineAsBefore) {
-  const std::string e = error_of(kHead + R"({"at": 0, "action": "tilt", "angle": 200}]})");
+  const std::string e = timeline_error_of(kHead + R"({"at": 0, "action": "tilt", "angle": 200}]})");
   EXPECT_EQ(e, "t.json: field 'actions[0].angle': expected a number in [0, 135] (degrees), got 200");
 }
 
 TEST(TimelineMistakes, EveryMistakeIsListedWithItsField) {
   // Mistakes in three actions (one of them twice), an unknown action kind and a bad
   // top-level field: all of them, in file order, each naming the file and the field.
-  const std::string e = error_of(R"({"draught_timeline": 1, "name": "t", "fps": 500, "actions": [
+  const std::string e = timeline_error_of(R"({"draught_timeline": 1, "name": "t", "fps": 500, "actions": [
       {"at": 0, "action": "tilt", "angle": 200},
       {"at": 1, "action": "sip", "amount": 0.1},
       {"at": 2, "action": "shake", "amplitude": 5, "frequency": 0, "duration": 1},
@@ -61,7 +61,7 @@ TEST(TimelineMistakes, EveryMistakeIsListedWithItsField) {
 }
 
 TEST(TimelineMistakes, UnknownKindIsReportedBesideOtherMistakes) {
-  const std::string e = error_of(kHead + R"({"at": 0, "action": "tip"}, {"at": 0, "action": "sip", "amount": 7}]})");
+  const std::string e = timeline_error_of(kHead + R"({"at": 0, "action": "tip"}, {"at": 0, "action": "sip", "amount": 7}]})");
   const std::vector<std::string> lines = lines_of(e);
   ASSERT_EQ(lines.size(), 3u) << e;
   EXPECT_NE(lines[1].find("field 'actions[0].action': expected one of tilt"), std::string::npos) << e;
@@ -71,7 +71,7 @@ TEST(TimelineMistakes, UnknownKindIsReportedBesideOtherMistakes) {
 TEST(TimelineMistakes, ALongListIsCapped) {
   std::string text = kHead;
   for (int i = 0; i < 50; ++i) text += std::string(i ? "," : "") + R"({"at": 0, "action": "tilt", "angle": 999})";
-  const std::string e = error_of(text + "]}");
+  const std::string e = timeline_error_of(text + "]}");
   const std::vector<std::string> lines = lines_of(e);
   ASSERT_EQ(lines.size(), 22u) << e;
   EXPECT_EQ(lines.front(), "t.json: 50 mistakes:");
@@ -81,7 +81,7 @@ TEST(TimelineMistakes, ALongListIsCapped) {
 
 TEST(TimelineMistakes, NotATimelineIsOneMistake) {
   // A wrong format says nothing about the rest of the file: only that is reported.
-  const std::string e = error_of(R"({"draught_timeline": 2, "speed": 1, "actions": 3})");
+  const std::string e = timeline_error_of(R"({"draught_timeline": 2, "speed": 1, "actions": 3})");
   EXPECT_EQ(lines_of(e).size(), 1u) << e;
   EXPECT_NE(e.find("field 'draught_timeline': expected format 1, got 2"), std::string::npos) << e;
 }

@@ -9,6 +9,7 @@
 #include "core/sim/simulation.hpp"
 
 #include "test_common.hpp"
+#include "core/math/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,7 +22,6 @@ namespace {
 
 using test::has;
 
-constexpr double kPi = std::numbers::pi;
 
 std::string timeline_json(const std::string& actions, const std::string& extra = "") {
   return R"({ "draught_timeline": 1, "name": "t", )" + extra + R"("actions": )" + actions + " }";
@@ -31,7 +31,7 @@ Timeline parse(const std::string& actions, const std::string& extra = "") {
   return parse_timeline(timeline_json(actions, extra), "t.json");
 }
 
-std::string parse_error(const std::string& actions) {
+std::string timeline_parse_error(const std::string& actions) {
   return test::input_error_of([&] { parse(actions); });
 }
 
@@ -72,25 +72,25 @@ TEST(TimelineObjects, ParsesIndexNameAndObjectPaths) {
 }
 
 TEST(TimelineObjects, ParseErrorsNameFileAndField) {
-  EXPECT_TRUE(has(parse_error(R"([{ "at": 0, "action": "tilt", "angle": 10 }, { "action": "sip", "amount": 0.1, "object": -1 }])"),
+  EXPECT_TRUE(has(timeline_parse_error(R"([{ "at": 0, "action": "tilt", "angle": 10 }, { "action": "sip", "amount": 0.1, "object": -1 }])"),
                   {"t.json", "field 'actions[1].object'", "from 0 to 63", "got -1"}));
-  EXPECT_TRUE(has(parse_error(R"([{ "action": "sip", "amount": 0.1, "object": 64 }])"), {"actions[0].object", "got 64"}));
-  EXPECT_TRUE(has(parse_error(R"([{ "action": "sip", "amount": 0.1, "object": 1.5 }])"), {"actions[0].object"}));
-  EXPECT_TRUE(has(parse_error(R"([{ "action": "sip", "amount": 0.1, "object": "" }])"), {"actions[0].object"}));
-  EXPECT_TRUE(has(parse_error(R"([{ "action": "pour", "object": true }])"), {"actions[0].object", "got true"}));
-  EXPECT_TRUE(has(parse_error(R"([{ "action": "orbit", "degrees": 30, "object": 1 }])"),
+  EXPECT_TRUE(has(timeline_parse_error(R"([{ "action": "sip", "amount": 0.1, "object": 64 }])"), {"actions[0].object", "got 64"}));
+  EXPECT_TRUE(has(timeline_parse_error(R"([{ "action": "sip", "amount": 0.1, "object": 1.5 }])"), {"actions[0].object"}));
+  EXPECT_TRUE(has(timeline_parse_error(R"([{ "action": "sip", "amount": 0.1, "object": "" }])"), {"actions[0].object"}));
+  EXPECT_TRUE(has(timeline_parse_error(R"([{ "action": "pour", "object": true }])"), {"actions[0].object", "got true"}));
+  EXPECT_TRUE(has(timeline_parse_error(R"([{ "action": "orbit", "degrees": 30, "object": 1 }])"),
                   {"t.json", "actions[0].object", "orbit moves the camera"}));
-  EXPECT_TRUE(has(parse_error(R"([{ "action": "set", "param": "objects[1].liquid.srm", "value": 3, "object": 1 }])"),
+  EXPECT_TRUE(has(timeline_parse_error(R"([{ "action": "set", "param": "objects[1].liquid.srm", "value": 3, "object": 1 }])"),
                   {"actions[0].object", "already names its object"}));
-  EXPECT_TRUE(has(parse_error(R"([{ "action": "set", "param": "objects[1].env.floor", "value": false }])"),
+  EXPECT_TRUE(has(timeline_parse_error(R"([{ "action": "set", "param": "objects[1].env.floor", "value": false }])"),
                   {"actions[0].param", "env.floor belongs to the whole scene"}));
-  EXPECT_TRUE(has(parse_error(R"([{ "action": "set", "param": "env.floor", "value": false, "object": 0 }])"),
+  EXPECT_TRUE(has(timeline_parse_error(R"([{ "action": "set", "param": "env.floor", "value": false, "object": 0 }])"),
                   {"actions[0].object", "whole scene"}));
-  EXPECT_TRUE(has(parse_error(R"([{ "action": "set", "param": "objects[x].liquid.srm", "value": 3 }])"),
+  EXPECT_TRUE(has(timeline_parse_error(R"([{ "action": "set", "param": "objects[x].liquid.srm", "value": 3 }])"),
                   {"actions[0].param", "objects[2].liquid.fill"}));
-  EXPECT_TRUE(has(parse_error(R"([{ "action": "set", "param": "objects[64].liquid.srm", "value": 3 }])"),
+  EXPECT_TRUE(has(timeline_parse_error(R"([{ "action": "set", "param": "objects[64].liquid.srm", "value": 3 }])"),
                   {"actions[0].param", "from 0 to 63"}));
-  EXPECT_TRUE(has(parse_error(R"([{ "action": "set", "param": "objects[1].liquid.sr", "value": 3 }])"),
+  EXPECT_TRUE(has(timeline_parse_error(R"([{ "action": "set", "param": "objects[1].liquid.sr", "value": 3 }])"),
                   {"actions[0].param", "did you mean 'liquid.srm'"}));
 }
 

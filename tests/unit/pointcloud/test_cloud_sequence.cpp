@@ -42,7 +42,7 @@ std::string frame_name(int n, int width = 4, const char* ext = ".csv") {
   return buf;
 }
 
-std::string error_of(const std::filesystem::path& p) {
+std::string sequence_error_of(const std::filesystem::path& p) {
   try {
     PointCloudSequence s(p);
   } catch (const InputError& e) {
@@ -91,17 +91,17 @@ TEST(PointCloudSequence, NumbersGrowPastTheirWidth) {
 TEST(PointCloudSequence, MissingFramesAreErrorsNamingThem) {
   TempDir d("missing");
   write_frame(d.path(), frame_name(2), 2);
-  EXPECT_EQ(error_of(d.path() / frame_name(9)),
+  EXPECT_EQ(sequence_error_of(d.path() / frame_name(9)),
             (d.path() / frame_name(9)).string() + ": no such frame: expected an existing file of the sequence");
-  EXPECT_EQ(error_of(d.path() / "frame_%04d.csv"),
+  EXPECT_EQ(sequence_error_of(d.path() / "frame_%04d.csv"),
             (d.path() / "frame_%04d.csv").string() + ": no first frame: expected " + (d.path() / frame_name(0)).string() +
                 " or " + (d.path() / frame_name(1)).string());
-  EXPECT_EQ(error_of(d.path() / "frame_%4d.csv"),
+  EXPECT_EQ(sequence_error_of(d.path() / "frame_%4d.csv"),
             (d.path() / "frame_%4d.csv").string() + ": expected one %d or %0Nd in the file name (N from 1 to 9), such as frame_%04d.ply");
-  EXPECT_EQ(error_of(d.path() / "frame.csv"),
+  EXPECT_EQ(sequence_error_of(d.path() / "frame.csv"),
             (d.path() / "frame.csv").string() +
                 ": no frame number in the file name: expected digits before the extension (frame_0001.ply) or a pattern (frame_%04d.ply)");
-  EXPECT_EQ(error_of(d.path() / "frame_0002.obj"),
+  EXPECT_EQ(sequence_error_of(d.path() / "frame_0002.obj"),
             (d.path() / "frame_0002.obj").string() + ": unknown point cloud extension \".obj\": expected .ply, .xyz, .csv or .txt");
 }
 

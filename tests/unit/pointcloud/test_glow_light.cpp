@@ -3,6 +3,7 @@
 // sphere's irradiance by Snyder's formula against its closed forms.
 #include "core/environment/lights.hpp"
 #include "core/pointcloud/glow_light.hpp"
+#include "core/math/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +15,6 @@
 namespace draught {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // `n` points evenly at random in a ball of radius R about `centre`, each a blob of `blob`.
 CloudFrame ball(std::size_t n, glm::dvec3 centre, double R, double blob, float kelvin) {

@@ -139,7 +139,7 @@ void expect_reference(const PointCloud& c, const std::vector<RefPoint>& pts) {
 
 const char* kFormats[] = {"ascii", "binary_little_endian", "binary_big_endian"};
 
-std::string error_of(std::string_view bytes, const std::string& name = "gob.ply") {
+std::string ply_error_of(std::string_view bytes, const std::string& name = "gob.ply") {
   try {
     parse_ply(bytes, name);
   } catch (const InputError& e) {
@@ -281,10 +281,10 @@ TEST(PointCloudPly, TruncatedBinaryBodyNamesTheByte) {
     const std::string full = simple_ply(f, 200);
     const std::size_t header = full.size() - 200 * 12;
     // Vertex 101's z begins at header + 101 * 12 + 8; cut the file there.
-    EXPECT_EQ(error_of(std::string_view(full).substr(0, header + 101 * 12 + 8)),
+    EXPECT_EQ(ply_error_of(std::string_view(full).substr(0, header + 101 * 12 + 8)),
               "gob.ply: byte " + std::to_string(header + 101 * 12 + 8) +
                   " (vertex 101, property z): the file ends; expected 4 more bytes");
-    EXPECT_EQ(error_of(std::string_view(full).substr(0, header + 101 * 12 + 9)),
+    EXPECT_EQ(ply_error_of(std::string_view(full).substr(0, header + 101 * 12 + 9)),
               "gob.ply: byte " + std::to_string(header + 101 * 12 + 8) +
                   " (vertex 101, property z): the file ends; expected 3 more bytes");
   }
@@ -298,7 +298,7 @@ TEST(PointCloudPly, TruncatedListBeforeTheVertices) {
   w.list("uchar", "int", {0, 1, 2, 3});  // 17 bytes; the file keeps 1 + 4 of them
   const std::string s = w.bytes();
   const std::size_t second = w.header_size() + 13;
-  EXPECT_EQ(error_of(std::string_view(s).substr(0, second + 5)),
+  EXPECT_EQ(ply_error_of(std::string_view(s).substr(0, second + 5)),
             "gob.ply: byte " + std::to_string(second + 1) +
                 " (face 1, property vertex_indices): the file ends inside a list of 4 items; expected 12 more bytes");
 }
@@ -306,21 +306,21 @@ TEST(PointCloudPly, TruncatedListBeforeTheVertices) {
 TEST(PointCloudPly, AsciiBodyErrorsNameTheLine) {
   const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
                            "property float radius\nproperty uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
-  EXPECT_EQ(error_of(head + "0 0 0 0.01 1 2 3\n0 abc 0 0.01 1 2 3\n"),
+  EXPECT_EQ(ply_error_of(head + "0 0 0 0.01 1 2 3\n0 abc 0 0.01 1 2 3\n"),
             "gob.ply: line 13 (vertex 1, property y): expected a number (float), got \"abc\"");
-  EXPECT_EQ(error_of(head + "0 0 0 0.01 1 2 3\n\n0 0 nan 0.01 1 2 3\n"),
+  EXPECT_EQ(ply_error_of(head + "0 0 0 0.01 1 2 3\n\n0 0 nan 0.01 1 2 3\n"),
             "gob.ply: line 14 (vertex 1, property z): expected a finite coordinate in [-1e6, 1e6] m, got nan");
-  EXPECT_EQ(error_of(head + "inf 0 0 0.01 1 2 3\n"),
+  EXPECT_EQ(ply_error_of(head + "inf 0 0 0.01 1 2 3\n"),
             "gob.ply: line 12 (vertex 0, property x): expected a finite coordinate in [-1e6, 1e6] m, got inf");
-  EXPECT_EQ(error_of(head + "0 0 0 -0.5 1 2 3\n"),
+  EXPECT_EQ(ply_error_of(head + "0 0 0 -0.5 1 2 3\n"),
             "gob.ply: line 12 (vertex 0, property radius): expected a radius in [1e-9, 1e6] (the file's units), got -0.5");
-  EXPECT_EQ(error_of(head + "0 0 0 0.01 1 300 3\n"),
+  EXPECT_EQ(ply_error_of(head + "0 0 0 0.01 1 300 3\n"),
             "gob.ply: line 12 (vertex 0, property green): expected an integer in [0, 255] (uchar), got \"300\"");
-  EXPECT_EQ(error_of(head + "0 0 0 0.01 1 2 3 4\n"),
+  EXPECT_EQ(ply_error_of(head + "0 0 0 0.01 1 2 3 4\n"),
             "gob.ply: line 12 (vertex 0): more values than the 7 properties of 'vertex': expected the line to end, got \"4\"");
-  EXPECT_EQ(error_of(head + "0 0 0 0.01 1 2\n"),
+  EXPECT_EQ(ply_error_of(head + "0 0 0 0.01 1 2\n"),
             "gob.ply: line 12 (vertex 0, property blue): the line ends: expected a value");
-  EXPECT_EQ(error_of(head + "0 0 0 0.01 1 2 3\n1 1 1 0.01 1 2 3\n"),
+  EXPECT_EQ(ply_error_of(head + "0 0 0 0.01 1 2 3\n1 1 1 0.01 1 2 3\n"),
             "gob.ply: line 14: the file ends after 2 of 3 vertex elements: expected vertex 2");
 }
 
@@ -334,70 +334,70 @@ TEST(PointCloudPly, BinaryValueErrorsNameTheByte) {
     w.end_element();
   }
   // Vertex 1's temperature (12000 K) comes first: 24 bytes a vertex, 20 into it.
-  EXPECT_EQ(error_of(w.bytes()), "gob.ply: byte " + std::to_string(w.header_size() + 24 + 20) +
+  EXPECT_EQ(ply_error_of(w.bytes()), "gob.ply: byte " + std::to_string(w.header_size() + 24 + 20) +
                                      " (vertex 1, property temperature): expected a temperature in [0, 10000] K, got 12000");
   PlyWriter n("binary_little_endian");
   n.element("vertex", 1, {"float x", "float y", "float z"});
   n.value("float", 0);
   n.value("float", std::nan(""));
   n.value("float", 0);
-  EXPECT_EQ(error_of(n.bytes()), "gob.ply: byte " + std::to_string(n.header_size() + 4) +
+  EXPECT_EQ(ply_error_of(n.bytes()), "gob.ply: byte " + std::to_string(n.header_size() + 4) +
                                      " (vertex 0, property y): expected a finite coordinate in [-1e6, 1e6] m, got nan");
 }
 
 TEST(PointCloudPly, HeaderErrorsNameTheLine) {
   const std::string xyz = "property float x\nproperty float y\nproperty float z\n";
-  EXPECT_EQ(error_of(""), "gob.ply: the file is empty: expected a PLY header starting with 'ply'");
-  EXPECT_EQ(error_of("PLY\n"), "gob.ply: line 1: expected 'ply' (a PLY file starts with it), got \"PLY\"");
-  EXPECT_EQ(error_of("ply\nformat binary_middle_endian 1.0\n"),
+  EXPECT_EQ(ply_error_of(""), "gob.ply: the file is empty: expected a PLY header starting with 'ply'");
+  EXPECT_EQ(ply_error_of("PLY\n"), "gob.ply: line 1: expected 'ply' (a PLY file starts with it), got \"PLY\"");
+  EXPECT_EQ(ply_error_of("ply\nformat binary_middle_endian 1.0\n"),
             "gob.ply: line 2: unknown format \"binary_middle_endian\": expected ascii, binary_little_endian or binary_big_endian");
-  EXPECT_EQ(error_of("ply\nformat ascii 2.0\n"), "gob.ply: line 2: unknown PLY version \"2.0\": expected 1.0");
-  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty float128 x\n"),
+  EXPECT_EQ(ply_error_of("ply\nformat ascii 2.0\n"), "gob.ply: line 2: unknown PLY version \"2.0\": expected 1.0");
+  EXPECT_EQ(ply_error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty float128 x\n"),
             "gob.ply: line 4: unknown type \"float128\": expected char, uchar, short, ushort, int, uint, float, double "
             "(or int8 ... float64)");
-  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nproperty float x\n"),
+  EXPECT_EQ(ply_error_of("ply\nformat ascii 1.0\nproperty float x\n"),
             "gob.ply: line 3: a property before any element: expected 'element NAME COUNT' first");
-  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 1\n" + xyz),
+  EXPECT_EQ(ply_error_of("ply\nformat ascii 1.0\nelement vertex 1\n" + xyz),
             "gob.ply: line 6: the file ends inside the header: expected 'end_header'");
-  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex many\n"),
+  EXPECT_EQ(ply_error_of("ply\nformat ascii 1.0\nelement vertex many\n"),
             "gob.ply: line 3: element \"vertex\": expected a count (a whole number), got \"many\"");
-  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nvertices 3\n"),
+  EXPECT_EQ(ply_error_of("ply\nformat ascii 1.0\nvertices 3\n"),
             "gob.ply: line 3: expected comment, format, element, property or end_header, got \"vertices\"");
   // Bytes of the file are echoed escaped and as valid UTF-8 (a fuzzer's finding).
-  EXPECT_EQ(error_of("ply\nformat ascii 1.0\n\xff\x1b\n"),
+  EXPECT_EQ(ply_error_of("ply\nformat ascii 1.0\n\xff\x1b\n"),
             "gob.ply: line 3: expected comment, format, element, property or end_header, got \"\xef\xbf\xbd\\u001b\"");
-  EXPECT_EQ(error_of("ply\nelement vertex 1\n"), "gob.ply: line 2: an element before the 'format' line: expected format first");
-  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement face 1\nproperty list float int i\nend_header\n"),
+  EXPECT_EQ(ply_error_of("ply\nelement vertex 1\n"), "gob.ply: line 2: an element before the 'format' line: expected format first");
+  EXPECT_EQ(ply_error_of("ply\nformat ascii 1.0\nelement face 1\nproperty list float int i\nend_header\n"),
             "gob.ply: line 4: list \"i\": expected an integer count type, got \"float\"");
-  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement face 0\nproperty uchar n\nend_header\n"),
+  EXPECT_EQ(ply_error_of("ply\nformat ascii 1.0\nelement face 0\nproperty uchar n\nend_header\n"),
             "gob.ply: line 5: the header has no element 'vertex': expected the points as 'element vertex N'");
-  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n"),
+  EXPECT_EQ(ply_error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n"),
             "gob.ply: line 3: element 'vertex': no 'z': expected x, y and z");
-  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 1\n" + xyz + "property float red\nend_header\n0 0 0 1\n"),
+  EXPECT_EQ(ply_error_of("ply\nformat ascii 1.0\nelement vertex 1\n" + xyz + "property float red\nend_header\n0 0 0 1\n"),
             "gob.ply: line 3: element 'vertex': a colour is given in part: expected also 'g', 'b'");
-  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 1\n" + xyz + "property float radius\nproperty float pscale\nend_header\n"),
+  EXPECT_EQ(ply_error_of("ply\nformat ascii 1.0\nelement vertex 1\n" + xyz + "property float radius\nproperty float pscale\nend_header\n"),
             "gob.ply: line 3: element 'vertex': both 'radius' and 'pscale' give the radius: expected one of them");
-  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 1\n" + xyz + "property int red\nproperty int green\nproperty int blue\nend_header\n"),
+  EXPECT_EQ(ply_error_of("ply\nformat ascii 1.0\nelement vertex 1\n" + xyz + "property int red\nproperty int green\nproperty int blue\nend_header\n"),
             "gob.ply: line 3: vertex property 'red' is int: expected uchar or ushort (sRGB-encoded), float or double (linear 0..1)");
 }
 
 TEST(PointCloudPly, CountsTooLargeAreRefusedBeforeReading) {
-  EXPECT_EQ(error_of("ply\nformat binary_little_endian 1.0\nelement vertex 4194305\nproperty float x\nproperty float y\nproperty float z\nend_header\n"),
+  EXPECT_EQ(ply_error_of("ply\nformat binary_little_endian 1.0\nelement vertex 4194305\nproperty float x\nproperty float y\nproperty float z\nend_header\n"),
             "gob.ply: line 3: 4194305 vertices: expected at most 4194304 (the limit of a point cloud)");
-  EXPECT_EQ(error_of("ply\nformat binary_little_endian 1.0\nelement vertex 99999999999999999999\n"),
+  EXPECT_EQ(ply_error_of("ply\nformat binary_little_endian 1.0\nelement vertex 99999999999999999999\n"),
             "gob.ply: line 3: element \"vertex\": expected a count (a whole number), got \"99999999999999999999\"");
   // Within the limit but far more than the bytes that follow: refused at once, at the
   // first missing byte.
   const std::string head = "ply\nformat binary_little_endian 1.0\nelement vertex 4000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
-  EXPECT_EQ(error_of(head + std::string(30, '\0')),
+  EXPECT_EQ(ply_error_of(head + std::string(30, '\0')),
             "gob.ply: byte " + std::to_string(head.size() + 28) + " (vertex 2, property y): the file ends; expected 2 more bytes");
   // Ascii and lists are walked (with memory for no more than the bytes can hold) and fail
   // at the first missing line or byte.
   const std::string ahead = "ply\nformat ascii 1.0\nelement vertex 4000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
-  EXPECT_EQ(error_of(ahead + "0 0 0\n"), "gob.ply: line 9: the file ends after 1 of 4000000 vertex elements: expected vertex 1");
+  EXPECT_EQ(ply_error_of(ahead + "0 0 0\n"), "gob.ply: line 9: the file ends after 1 of 4000000 vertex elements: expected vertex 1");
   const std::string faces = "ply\nformat binary_little_endian 1.0\nelement face 4000000000\nproperty list uchar int i\n"
                             "element vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
-  EXPECT_EQ(error_of(faces + std::string(64, '\0')),  // 64 empty lists, then nothing
+  EXPECT_EQ(ply_error_of(faces + std::string(64, '\0')),  // 64 empty lists, then nothing
             "gob.ply: byte " + std::to_string(faces.size() + 64) + " (face 64, property i): the file ends; expected 1 more bytes");
 }
 

@@ -15,7 +15,7 @@
 namespace draught {
 namespace {
 
-std::string error_of(std::string_view text, const std::string& name = "points.csv") {
+std::string csv_error_of(std::string_view text, const std::string& name = "points.csv") {
   try {
     parse_point_text(text, name);
   } catch (const InputError& e) {
@@ -66,39 +66,39 @@ TEST(PointCloudText, AHeaderAloneIsAnEmptyCloud) {
 }
 
 TEST(PointCloudText, ErrorsNameLineColumnAndField) {
-  EXPECT_EQ(error_of("x,y,z\n1,2,3\n\n# c\n1,2,3\n\n1,2,abc\n"), "points.csv: line 7, column 3 (z): expected a number, got \"abc\"");
-  EXPECT_EQ(error_of("1 2 3\n1 2 3 4\n", "a.xyz"), "a.xyz: line 2: expected 3 columns (as line 1 has), got more");
-  EXPECT_EQ(error_of("x y radius z\n1 2 0.1\n", "a.xyz"), "a.xyz: line 2: expected 4 columns (as the header on line 1 names), got 3");
-  EXPECT_EQ(error_of("1 2 nan\n"), "points.csv: line 1, column 3 (z): expected a finite coordinate in [-1e6, 1e6] m, got \"nan\"");
-  EXPECT_EQ(error_of("1 2 3\n-inf 2 3\n"), "points.csv: line 2, column 1 (x): expected a finite coordinate in [-1e6, 1e6] m, got \"-inf\"");
-  EXPECT_EQ(error_of("x,y,z,R,G,B\n0,0,0,-0.01,0,0\n"), "points.csv: line 2, column 4 (R): expected a linear colour channel in [0, 1], got \"-0.01\"");
-  EXPECT_EQ(error_of("0 0 0 -0.01\n"), "points.csv: line 1, column 4 (radius): expected a radius in [1e-9, 1e6] (the file's units), got \"-0.01\"");
-  EXPECT_EQ(error_of("0 0 0 0.01 -5\n"), "points.csv: line 1, column 5 (temperature): expected a temperature in [0, 10000] K, got \"-5\"");
-  EXPECT_EQ(error_of("0 0 0 0.01 1 1.5 0\n"), "points.csv: line 1, column 6 (g): expected a linear colour channel in [0, 1], got \"1.5\"");
+  EXPECT_EQ(csv_error_of("x,y,z\n1,2,3\n\n# c\n1,2,3\n\n1,2,abc\n"), "points.csv: line 7, column 3 (z): expected a number, got \"abc\"");
+  EXPECT_EQ(csv_error_of("1 2 3\n1 2 3 4\n", "a.xyz"), "a.xyz: line 2: expected 3 columns (as line 1 has), got more");
+  EXPECT_EQ(csv_error_of("x y radius z\n1 2 0.1\n", "a.xyz"), "a.xyz: line 2: expected 4 columns (as the header on line 1 names), got 3");
+  EXPECT_EQ(csv_error_of("1 2 nan\n"), "points.csv: line 1, column 3 (z): expected a finite coordinate in [-1e6, 1e6] m, got \"nan\"");
+  EXPECT_EQ(csv_error_of("1 2 3\n-inf 2 3\n"), "points.csv: line 2, column 1 (x): expected a finite coordinate in [-1e6, 1e6] m, got \"-inf\"");
+  EXPECT_EQ(csv_error_of("x,y,z,R,G,B\n0,0,0,-0.01,0,0\n"), "points.csv: line 2, column 4 (R): expected a linear colour channel in [0, 1], got \"-0.01\"");
+  EXPECT_EQ(csv_error_of("0 0 0 -0.01\n"), "points.csv: line 1, column 4 (radius): expected a radius in [1e-9, 1e6] (the file's units), got \"-0.01\"");
+  EXPECT_EQ(csv_error_of("0 0 0 0.01 -5\n"), "points.csv: line 1, column 5 (temperature): expected a temperature in [0, 10000] K, got \"-5\"");
+  EXPECT_EQ(csv_error_of("0 0 0 0.01 1 1.5 0\n"), "points.csv: line 1, column 6 (g): expected a linear colour channel in [0, 1], got \"1.5\"");
   // Decimal numbers only: no hex, no trailing text; beyond double's range is infinite.
-  EXPECT_EQ(error_of("1 2 0x10\n"), "points.csv: line 1, column 3 (z): expected a number, got \"0x10\"");
-  EXPECT_EQ(error_of("1 2 3m\n"), "points.csv: line 1, column 3 (z): expected a number, got \"3m\"");
-  EXPECT_EQ(error_of("1 2 1e999\n"), "points.csv: line 1, column 3 (z): expected a finite coordinate in [-1e6, 1e6] m, got \"1e999\"");
+  EXPECT_EQ(csv_error_of("1 2 0x10\n"), "points.csv: line 1, column 3 (z): expected a number, got \"0x10\"");
+  EXPECT_EQ(csv_error_of("1 2 3m\n"), "points.csv: line 1, column 3 (z): expected a number, got \"3m\"");
+  EXPECT_EQ(csv_error_of("1 2 1e999\n"), "points.csv: line 1, column 3 (z): expected a finite coordinate in [-1e6, 1e6] m, got \"1e999\"");
   EXPECT_EQ(parse_point_text("-1.5e-3 +2 .5\n", "a.xyz").position.at(0), glm::vec3(-1.5e-3f, 2, 0.5f));
-  EXPECT_EQ(error_of("1,2,,3\n"), "points.csv: line 1, column 3 (z): expected a number, got \"\"");
-  EXPECT_EQ(error_of("1 2\n"),
+  EXPECT_EQ(csv_error_of("1,2,,3\n"), "points.csv: line 1, column 3 (z): expected a number, got \"\"");
+  EXPECT_EQ(csv_error_of("1 2\n"),
             "points.csv: line 1: 2 columns without a header: expected 3 (x y z), 4 (x y z radius), 5 (x y z radius "
             "temperature), 6 (x y z r g b) or 7 (x y z radius r g b), or a first line naming the columns");
-  EXPECT_EQ(error_of("1 2 3 4 5 6 7 8\n"),
+  EXPECT_EQ(csv_error_of("1 2 3 4 5 6 7 8\n"),
             "points.csv: line 1: 8 or more columns without a header: expected 3 (x y z), 4 (x y z radius), 5 (x y z "
             "radius temperature), 6 (x y z r g b) or 7 (x y z radius r g b), or a first line naming the columns");
 }
 
 TEST(PointCloudText, HeaderErrors) {
-  EXPECT_EQ(error_of("x,y,z,radus\n"),
+  EXPECT_EQ(csv_error_of("x,y,z,radus\n"),
             "points.csv: line 1, column 4: unknown column \"radus\" (did you mean 'radius'?): expected x, y, z, radius, "
             "temperature, r, g, b, vx, vy or vz (the first line names the columns when it is not a point)");
-  EXPECT_EQ(error_of("x,y\n"), "points.csv: line 1 (the header): no 'z': expected x, y and z");
-  EXPECT_EQ(error_of("x y z x\n"), "points.csv: line 1 (the header): 'x' is given twice");
-  EXPECT_EQ(error_of("x y z red g b\n"),
+  EXPECT_EQ(csv_error_of("x,y\n"), "points.csv: line 1 (the header): no 'z': expected x, y and z");
+  EXPECT_EQ(csv_error_of("x y z x\n"), "points.csv: line 1 (the header): 'x' is given twice");
+  EXPECT_EQ(csv_error_of("x y z red g b\n"),
             "points.csv: line 1 (the header): the colour mixes spellings: expected one of r g b, red green blue or "
             "diffuse_red diffuse_green diffuse_blue");
-  EXPECT_EQ(error_of("x y z vx vy\n"), "points.csv: line 1 (the header): a velocity is given in part: expected also 'vz'");
+  EXPECT_EQ(csv_error_of("x y z vx vy\n"), "points.csv: line 1 (the header): a velocity is given in part: expected also 'vz'");
 }
 
 TEST(PointCloudText, AtMostTheLimitOfPoints) {
@@ -106,15 +106,15 @@ TEST(PointCloudText, AtMostTheLimitOfPoints) {
   rows.reserve((kMaxCloudPoints + 1) * 6);
   for (std::size_t i = 0; i < kMaxCloudPoints; ++i) rows += "0 0 0\n";
   rows += "1 1 1\n";  // the points before it were read: the error is at the one over
-  EXPECT_EQ(error_of(rows, "big.xyz"), "big.xyz: line " + std::to_string(kMaxCloudPoints + 1) +
+  EXPECT_EQ(csv_error_of(rows, "big.xyz"), "big.xyz: line " + std::to_string(kMaxCloudPoints + 1) +
                                            ": more than 4194304 points: expected at most that many (the limit of a point cloud)");
 }
 
 TEST(PointCloudText, EmptyFiles) {
   const std::string expected =
       ": no points and no header: expected lines of x y z (and optional columns), or a first line naming the columns";
-  EXPECT_EQ(error_of(""), "points.csv" + expected);
-  EXPECT_EQ(error_of("# only a comment\n\n   \n"), "points.csv" + expected);
+  EXPECT_EQ(csv_error_of(""), "points.csv" + expected);
+  EXPECT_EQ(csv_error_of("# only a comment\n\n   \n"), "points.csv" + expected);
 }
 
 TEST(PointCloudText, LoadByExtension) {

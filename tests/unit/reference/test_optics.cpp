@@ -2,6 +2,7 @@
 #include "core/reference/optics.hpp"
 
 #include "test_common.hpp"
+#include "core/math/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +14,6 @@ namespace draught {
 namespace {
 
 using glm::dvec3;
-constexpr double kPi = std::numbers::pi;
 
 double sin_between(const dvec3& a, const dvec3& n) { return glm::length(glm::cross(a, n)); }
 

@@ -4,6 +4,7 @@
 #include "core/scene/frame.hpp"
 
 #include "test_common.hpp"
+#include "core/math/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +18,6 @@
 namespace draught {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
 
 // The frame of one shipped glass, filled, posed as a timeline tilt would pose it:
 // tilted `tilt` towards `toward`, tipped on its foot.
@@ -78,7 +78,7 @@ TEST(Framing, AGlassTiltedToTheMaximumStaysInThePicture) {
   for (const char* glass : {"pint", "nonic", "tulip", "wine", "weizen", "flute", "pilsner"})
     for (double toward : {0.0, 45.0, 90.0, 180.0, 270.0})
       for (auto [w, h] : {std::pair{160, 160}, {320, 180}, {120, 200}}) {
-        const FrameState f = tilted(glass, 135 * kDeg, toward * kDeg);
+        const FrameState f = tilted(glass, 135 * kDegree, toward * kDegree);
         for (const glm::dvec2& px : glass_pixels(f, w, h)) {
           ASSERT_TRUE(px.x >= 0 && px.x <= w && px.y >= 0 && px.y <= h)
               << glass << " tilted towards " << toward << " deg, " << w << "x" << h << ": a point at pixel (" << px.x
@@ -91,7 +91,7 @@ TEST(Framing, ATiltedGlassSeenFromAboveStaysInThePicture) {
   // Auto-framed from above and in front (the direction of pint_lager_above's camera).
   for (const char* glass : {"pint", "wine"})
     for (double toward : {0.0, 90.0, 180.0, 270.0}) {
-      const FrameState f = tilted(glass, 135 * kDeg, toward * kDeg, {"eye=0.08,0.32,0.2", "target=0,0.07,0"});
+      const FrameState f = tilted(glass, 135 * kDegree, toward * kDegree, {"eye=0.08,0.32,0.2", "target=0,0.07,0"});
       for (const glm::dvec2& px : glass_pixels(f, 160, 160))
         ASSERT_TRUE(px.x >= 0 && px.x <= 160 && px.y >= 0 && px.y <= 160)
             << glass << " towards " << toward << ": a point at pixel (" << px.x << ", " << px.y << ")";
@@ -103,7 +103,7 @@ TEST(Framing, UprightAndSlightlyTiltedGlassesKeepTheStandingCamera) {
   // picture does not move the camera (an animation would swim otherwise).
   for (const char* glass : {"pint", "wine"}) {
     const FrameState upright = make_frame(test::params_with_glass(glass));
-    const FrameState slight = tilted(glass, 5 * kDeg, 0);
+    const FrameState slight = tilted(glass, 5 * kDegree, 0);
     EXPECT_EQ(upright.camera.eye, slight.camera.eye) << glass;
     EXPECT_EQ(upright.camera.target, slight.camera.target) << glass;
     // The upright frame is framed from its pose too (assemble_frame), with the same result.
@@ -115,7 +115,7 @@ TEST(Framing, TheCameraBacksAwayContinuouslyAsTheTiltGrows) {
   const CameraParams upright = make_frame(test::params_with_glass("pint")).camera;
   double last = camera_distance(upright), lying = 0;
   for (int deg = 0; deg <= 135; ++deg) {
-    const CameraParams c = tilted("pint", deg * kDeg, 0).camera;
+    const CameraParams c = tilted("pint", deg * kDegree, 0).camera;
     const double d = camera_distance(c);
     // Past lying on its side the glass comes down again, and so may the camera.
     EXPECT_GE(d, camera_distance(upright) - 1e-9) << deg << " deg: closer than for the upright glass";

@@ -4,6 +4,7 @@
 #include "core/sim/simulation.hpp"
 
 #include "test_common.hpp"
+#include "core/math/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +15,6 @@
 namespace draught {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
 
 // The lowest world height of the glass's outer surface (walls and foot, rim bead), by
 // sampling: 720 directions round the axis, rings at and between the profile's knots.
@@ -41,7 +41,7 @@ TEST(Resting, ATippedGlassTouchesTheFloorWithItsLowestPoint) {
     const Vessel v = test::preset_vessel(glass);
     for (double tilt : {0.0, 5.0, 14.0, 40.0, 75.0, 95.0, 135.0})
       for (double toward : {0.0, 130.0}) {
-        const glm::dquat q = tilt_orientation(tilt * kDeg, toward * kDeg, 0.3);
+        const glm::dquat q = tilt_orientation(tilt * kDegree, toward * kDegree, 0.3);
         // Turned about the middle of its foot (as the mouse and the gyro turn it), and
         // tipped on the rim of its foot (as a timeline tips it): both come to rest on it.
         for (Pose p : {Pose{q, {0.1, 0.0, -0.05}}, tipped_on_floor(q, v.r_outer.front())}) {
@@ -55,7 +55,7 @@ TEST(Resting, ATippedGlassTouchesTheFloorWithItsLowestPoint) {
 
 TEST(Resting, AGlassHeldAboveTheFloorStaysThere) {
   const Vessel v = test::preset_vessel("pint");
-  const Pose held{tilt_orientation(20 * kDeg, 0.0), {0, 0.05, 0}};
+  const Pose held{tilt_orientation(20 * kDegree, 0.0), {0, 0.05, 0}};
   EXPECT_EQ(resting_on_floor(held, v).position, held.position);
 }
 
@@ -64,7 +64,7 @@ TEST(Resting, TheSimulationRestsWhatADriverTurnsAboutTheFoot) {
   // half the foot through it; the simulation's pose stands on the foot's edge instead.
   Simulation sim(resolve_scene({"lager", "pint", {}, {}}));
   MotionSample m;
-  m.pose.orientation = tilt_orientation(25 * kDeg, 0.0);
+  m.pose.orientation = tilt_orientation(25 * kDegree, 0.0);
   for (int i = 0; i < 10; ++i) sim.step(m);
   const Pose p = sim.frame().pose;
   EXPECT_NEAR(lowest_point(sim.frame().vessel, p), 0.0, 2e-5);

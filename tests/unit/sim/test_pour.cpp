@@ -19,9 +19,9 @@
 namespace draught {
 namespace {
 
-constexpr double kDt = Simulation::kStep;
+constexpr double kPourDt = Simulation::kStep;
 
-Params lager_in_pint(float fill) {
+Params pour_lager_in_pint(float fill) {
   Params p = resolve_scene({"lager", "pint", {}, {}});
   p.liquid.fill = fill;
   return p;
@@ -31,7 +31,7 @@ Params lager_in_pint(float fill) {
 
 
 TEST(Pour, TheLevelRisesAsTheStreamArrivesAndTheVolumeAddsUp) {
-  const Params p = lager_in_pint(0.8f);
+  const Params p = pour_lager_in_pint(0.8f);
   Simulation sim(p);
   const double cavity = sim.vessel().cavity_volume(), seconds = 2.0;
   sim.pour_over(seconds);
@@ -39,9 +39,9 @@ TEST(Pour, TheLevelRisesAsTheStreamArrivesAndTheVolumeAddsUp) {
   const double flow = double(p.liquid.fill) * cavity / seconds;
   double prev = 0, first_drink = -1;
   bool stream_seen = false;
-  for (int i = 1; i <= int(4.0 / kDt); ++i) {
+  for (int i = 1; i <= int(4.0 / kPourDt); ++i) {
     sim.step(MotionSample{});
-    const double t = i * kDt, poured = flow * std::min(t, seconds);
+    const double t = i * kPourDt, poured = flow * std::min(t, seconds);
     ASSERT_GE(sim.fraction(), prev - 1e-15) << "the level never falls during a pour, t = " << t;
     prev = sim.fraction();
     if (first_drink < 0 && sim.fraction() > 0) first_drink = t;
@@ -74,10 +74,10 @@ TEST(Pour, TheLevelRisesAsTheStreamArrivesAndTheVolumeAddsUp) {
 // The stream pushes the head aside where it plunges in: a dimple under the stream while
 // it lands, which the foam fills again once the last of it has landed.
 TEST(Pour, TheStreamPlungesThroughTheHeadInADimpleThatClosesAfterIt) {
-  Simulation sim(lager_in_pint(0.8f));
+  Simulation sim(pour_lager_in_pint(0.8f));
   const double seconds = 2.0;
   sim.pour_over(seconds);
-  for (int i = 1; i <= int(1.5 / kDt); ++i) sim.step(MotionSample{});
+  for (int i = 1; i <= int(1.5 / kPourDt); ++i) sim.step(MotionSample{});
   ASSERT_TRUE(sim.pouring());
   const FoamFrame mid = sim.frame().foam;
   EXPECT_NEAR(mid.crater_depth, FoamFrame::kMaxCraterDepth, 0.01) << "open while the stream lands";
@@ -105,14 +105,14 @@ TEST(Pour, TheStreamPlungesThroughTheHeadInADimpleThatClosesAfterIt) {
   EXPECT_LT(bottom, sim.vessel().fill_height(sim.fraction()) - 0.5 * waves.dimple_depth)
       << "the stream reaches down into the dimple";
   // Once the last of it has landed the foam and the drink flow back within a second or so.
-  for (int i = 1; i <= int(2.5 / kDt); ++i) sim.step(MotionSample{});
+  for (int i = 1; i <= int(2.5 / kPourDt); ++i) sim.step(MotionSample{});
   ASSERT_FALSE(sim.pouring());
   EXPECT_EQ(sim.frame().foam.crater_depth, 0.0);
   EXPECT_EQ(sim.frame().liquid.waves.dimple_depth, 0.0);
 }
 
 TEST(Pour, NoDurationFillsAtOnce) {
-  Simulation sim(lager_in_pint(0.6f));
+  Simulation sim(pour_lager_in_pint(0.6f));
   sim.set_fraction(0.1);
   sim.pour_over(0);
   EXPECT_DOUBLE_EQ(sim.fraction(), double(0.6f));
@@ -121,14 +121,14 @@ TEST(Pour, NoDurationFillsAtOnce) {
 }
 
 TEST(Pour, WhatSpillsOverTheRimFallsAsAStreamOfTheSameVolume) {
-  const Params p = lager_in_pint(0.86f);
+  const Params p = pour_lager_in_pint(0.86f);
   Simulation sim(p);
   sim.pour();
   const double foot = sim.vessel().outer_radius(0);
   double spilled_seen = 0;
   bool stream = false;
-  for (int i = 1; i <= int(3.0 / kDt); ++i) {
-    const double t = i * kDt, u = std::clamp(t / 1.5, 0.0, 1.0);
+  for (int i = 1; i <= int(3.0 / kPourDt); ++i) {
+    const double t = i * kPourDt, u = std::clamp(t / 1.5, 0.0, 1.0);
     MotionSample m;
     m.time = t;
     m.pose = tipped_on_floor(tilt_orientation(u * u * (3 - 2 * u) * 1.4, 0.0), foot);  // to 80 degrees

@@ -5,6 +5,7 @@
 #include "core/sim/scene_simulation.hpp"
 
 #include "test_common.hpp"
+#include "core/math/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,12 +16,11 @@
 namespace draught {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Tips the glass towards +X by up to 25 degrees over the first second (on its foot).
-struct TipDriver : InputDriver {
+struct SceneTipDriver : InputDriver {
   double foot;
-  explicit TipDriver(double f) : foot(f) {}
+  explicit SceneTipDriver(double f) : foot(f) {}
   const char* name() const override { return "tip"; }
   static double angle(double t) {
     const double u = std::clamp(t, 0.0, 1.0);
@@ -98,7 +98,7 @@ TEST(SceneSimulation, TiltingTheSelectedGlassLeavesTheOthersLevel) {
   SceneSimulation sim(flight());
   sim.select(1);
   ASSERT_EQ(sim.selected(), 1);
-  TipDriver tip(sim.vessel(1)->vessel().r_outer.front());
+  SceneTipDriver tip(sim.vessel(1)->vessel().r_outer.front());
   sim.advance(tip, 1.5);
   const FrameState f = sim.frame();
   EXPECT_EQ(f.selected, 1);
@@ -123,7 +123,7 @@ TEST(SceneSimulation, SameInputGivesBitIdenticalFrames) {
   SceneSimulation a(flight()), b(flight());
   a.select(2), b.select(2);
   a.settle_bubbles(1.0), b.settle_bubbles(1.0);
-  TipDriver ta(a.vessel(2)->vessel().r_outer.front()), tb(b.vessel(2)->vessel().r_outer.front());
+  SceneTipDriver ta(a.vessel(2)->vessel().r_outer.front()), tb(b.vessel(2)->vessel().r_outer.front());
   for (double t = 0.25; t <= 2.0; t += 0.25) {
     a.advance(ta, t, 0.02);
     b.advance(tb, t, 0.02);
@@ -141,7 +141,7 @@ TEST(SceneSimulation, OneGlassMovesExactlyAsASimulationOfItsOwn) {
   Simulation single(p);
   scene.settle_bubbles(2.0);
   single.settle_bubbles(2.0);
-  TipDriver d1(single.vessel().r_outer.front()), d2(single.vessel().r_outer.front());
+  SceneTipDriver d1(single.vessel().r_outer.front()), d2(single.vessel().r_outer.front());
   for (double t = 0.1; t <= 2.0; t += 0.1) {
     scene.advance(d1, t, 0.05);
     single.advance(d2, t, 0.05);
@@ -162,7 +162,7 @@ TEST(SceneSimulation, StepEachMovesEveryObjectWithItsOwnMotion) {
       motions[i] = MotionSample{};
       motions[i].time = t;
     }
-    TipDriver tip(sim.vessel(3)->vessel().r_outer.front());
+    SceneTipDriver tip(sim.vessel(3)->vessel().r_outer.front());
     motions[3] = tip.sample(t);
     sim.step_each(motions, {0.0, 0.1, 0.0, 0.0});
   }
@@ -177,7 +177,7 @@ TEST(SceneSimulation, StepEachMovesEveryObjectWithItsOwnMotion) {
 TEST(SceneSimulation, NewParametersKeepTheStateOfUnchangedGlasses) {
   SceneSimulation sim(flight());
   sim.select(0);
-  TipDriver tip(sim.vessel(0)->vessel().r_outer.front());
+  SceneTipDriver tip(sim.vessel(0)->vessel().r_outer.front());
   sim.advance(tip, 0.5);
   const double energy = sim.vessel(0)->energy();
   ASSERT_GT(energy, 0.0);
@@ -218,7 +218,7 @@ TEST(SceneSimulation, NewParametersKeepTheStateOfUnchangedGlasses) {
 TEST(SceneSimulation, TheSurroundingsKeptBetweenFramesAreTheOnesItWouldCompute) {
   SceneSimulation sim(flight());
   sim.select(2);
-  TipDriver tip(sim.vessel(2)->vessel().r_outer.front());
+  SceneTipDriver tip(sim.vessel(2)->vessel().r_outer.front());
   Scene changed = flight();
   for (double t = 0.25; t <= 3.0; t += 0.25) {
     sim.advance(tip, t, 0.02);
@@ -269,7 +269,7 @@ TEST(SceneSimulation, AStillSceneReusesItsSurroundings) {
 TEST(SceneSimulation, ReleasedGlassEasesBackUpright) {
   SceneSimulation sim(flight());
   sim.select(0);
-  TipDriver tip(sim.vessel(0)->vessel().r_outer.front());
+  SceneTipDriver tip(sim.vessel(0)->vessel().r_outer.front());
   sim.advance(tip, 1.2);
   ASSERT_NEAR(axis_tilt(sim.frame().vessels[0]), 25.0, 0.5);
   sim.select(1);

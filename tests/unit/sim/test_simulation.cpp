@@ -4,6 +4,8 @@
 #include "core/sim/simulation.hpp"
 
 #include "core/params/preset.hpp"
+#include "core/math/constants.hpp"
+#include "core/math/vectors.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,7 +20,6 @@
 namespace draught {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kDt = Simulation::kStep;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -122,14 +123,13 @@ struct ColumnVolume {
   }
 };
 
-bool finite(const glm::dvec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool all_finite(const glm::dvec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
 
 // Everything a renderer reads is finite and physical.
 void expect_sane(const Simulation& sim, const std::string& when) {
   SCOPED_TRACE(when);
   const SloshState& s = sim.slosh();
-  EXPECT_TRUE(finite(s.slope) && finite(s.slope_rate) && finite(s.cross) && finite(s.cross_rate));
+  EXPECT_TRUE(all_finite(s.slope) && all_finite(s.slope_rate) && all_finite(s.cross) && all_finite(s.cross_rate));
   EXPECT_TRUE(std::isfinite(s.ring) && std::isfinite(s.ring_rate));
   EXPECT_TRUE(std::isfinite(sim.energy()));
   EXPECT_TRUE(std::isfinite(sim.time()));
@@ -137,10 +137,10 @@ void expect_sane(const Simulation& sim, const std::string& when) {
   EXPECT_LE(sim.fraction(), 1.0);
   EXPECT_TRUE(std::isfinite(sim.spilled()) && sim.spilled() >= 0);
   const LiquidPlane& L = sim.surface();
-  EXPECT_TRUE(finite(L.n) && std::isfinite(L.offset));
+  EXPECT_TRUE(all_finite(L.n) && std::isfinite(L.offset));
   EXPECT_NEAR(glm::length(L.n), 1.0, 1e-9);
-  EXPECT_TRUE(std::isfinite(L.waves.ring) && finite(L.waves.cross) && std::isfinite(L.waves.radius));
-  EXPECT_TRUE(finite(sim.motion().pose.position));
+  EXPECT_TRUE(std::isfinite(L.waves.ring) && all_finite(L.waves.cross) && std::isfinite(L.waves.radius));
+  EXPECT_TRUE(all_finite(sim.motion().pose.position));
   if (sim.fraction() > 1e-4) {  // 0.1 mm: the table's accuracy, far below a pixel
     EXPECT_GE(rim_offset(sim.vessel(), sim.frame().liquid_tilt) - L.offset, -1e-4) << "plane above the rim";
     EXPECT_GE(rim_clearance(sim), -1e-4) << "plane + waves above the rim";

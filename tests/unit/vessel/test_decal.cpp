@@ -4,6 +4,7 @@
 #include "core/vessel/decal.hpp"
 
 #include "test_common.hpp"
+#include "core/math/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +14,6 @@
 namespace draught {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // A point on the wall (inner or outer) of v at angle a (rad, from +z towards +x) and height y.
 glm::dvec3 on_wall(const Vessel& v, bool inner, double a, double y) {

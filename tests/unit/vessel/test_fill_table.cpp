@@ -4,6 +4,7 @@
 #include "core/vessel/fill_table.hpp"
 
 #include "test_common.hpp"
+#include "core/math/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,7 +21,6 @@
 namespace draught {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 double deg(double d) { return d * kPi / 180; }
 
 // A vessel built by hand from an inner radius r(y) (knots at y = k * dy; r is linear
@@ -72,7 +72,7 @@ struct Cylinder {
   }
 };
 
-// ---- Cone, apex down at (0, b, 0), r = k (y - b) (a martini bowl). A plane that cuts
+// ---- FillCone, apex down at (0, b, 0), r = k (y - b) (a martini bowl). A plane that cuts
 // only the side makes an elliptical section; the solid below is a cone over that
 // ellipse, V = 1/3 * area * (distance from the apex to the plane) = pi/3 a e p, with
 // p = d - cos(t) b. In the x-y plane the section meets the two generators x = +-k (y - b)
@@ -81,7 +81,7 @@ struct Cylinder {
 // circle gives the minor half-axis e = sqrt(k^2 ((u1+u2)/2)^2 - (k (u1-u2)/2)^2) = k sqrt(u1 u2).
 // Valid while the plane is less steep than the side (tan t < 1 / k) and below the rim
 // (b + u2 <= H).
-struct Cone {
+struct FillCone {
   double k, b, H;
   double cavity() const { return kPi / 3 * k * k * std::pow(H - b, 3); }
   double volume(double tilt, double d) const {
@@ -102,7 +102,7 @@ struct Cone {
 
 const Cylinder kCyl{0.035, 0.01, 0.15};
 // Apex on knot 12 so the segmented profile is exactly this cone; half-angle ~35 deg.
-const Cone kCone{0.7, 12 * 0.12 / Vessel::kSegments, 0.12};
+const FillCone kFillCone{0.7, 12 * 0.12 / Vessel::kSegments, 0.12};
 
 // An independent brute-force check of the closed forms: midpoint rule over a fine x-z
 // grid, each column's wet height between the cavity's floor (a function of r) and the plane.
@@ -139,7 +139,7 @@ TEST(FillTableClosedForm, CylinderWedgeMatchesNumericalIntegral) {
 }
 
 TEST(FillTableClosedForm, ConeSectionMatchesNumericalIntegral) {
-  const Cone& K = kCone;
+  const FillCone& K = kFillCone;
   auto floor = [&](double r) { return K.b + r / K.k; };
   const double rim = K.k * (K.H - K.b);
   int checked = 0;
@@ -159,7 +159,7 @@ TEST(FillTableClosedForm, ReferenceIntegratorMatchesClosedForms) {
   // volume_below_plane is what the table is built from (and the reference for the
   // dense sweep below): it must agree with the closed forms far below the table's
   // 0.1 % (the reference solver's ~1e-6 bound).
-  const Vessel vc = kCyl.vessel(), vk = kCone.vessel();
+  const Vessel vc = kCyl.vessel(), vk = kFillCone.vessel();
   double worst_c = 0, worst_k = 0;
   for (double t = 0; t < 89.9; t += 1.37)
     for (double u = 0.01; u < 1; u += 0.049) {
@@ -168,11 +168,11 @@ TEST(FillTableClosedForm, ReferenceIntegratorMatchesClosedForms) {
       const double dc = lo + u * (hi - lo);
       worst_c = std::max(worst_c, std::abs(volume_below_plane(vc, deg(t), dc) - kCyl.volume(deg(t), dc)));
       const double dk = u * rim_offset(vk, deg(t));
-      if (kCone.valid(deg(t), dk))
-        worst_k = std::max(worst_k, std::abs(volume_below_plane(vk, deg(t), dk) - kCone.volume(deg(t), dk)));
+      if (kFillCone.valid(deg(t), dk))
+        worst_k = std::max(worst_k, std::abs(volume_below_plane(vk, deg(t), dk) - kFillCone.volume(deg(t), dk)));
     }
   EXPECT_LE(worst_c, 1e-6 * kCyl.cavity());
-  EXPECT_LE(worst_k, 1e-6 * kCone.cavity());
+  EXPECT_LE(worst_k, 1e-6 * kFillCone.cavity());
 }
 
 // ---- The table against the closed forms: many off-grid tilts and fractions, not spilled.
@@ -224,11 +224,11 @@ TEST(FillTable, CylinderTableVolumeWithinATenthOfAPercent) { check_table_against
 
 TEST(FillTable, ConeTableVolumeWithinATenthOfAPercent) {
   // Past 90 deg - half-angle the plane would be steeper than the side: nothing stays in.
-  check_table_against(kCone, std::atan(1 / kCone.k) - 1e-3);
+  check_table_against(kFillCone, std::atan(1 / kFillCone.k) - 1e-3);
 }
 
 TEST(FillTable, ReferenceSolverHitsTheClosedFormVolume) {
-  const Vessel vc = kCyl.vessel(), vk = kCone.vessel();
+  const Vessel vc = kCyl.vessel(), vk = kFillCone.vessel();
   for (double t : {0.0, 7.3, 31.0, 58.1, 77.7, 88.0})
     for (double f : {0.01, 0.17, 0.5, 0.83}) {
       const double tc = deg(t), cap = kCyl.volume(tc, rim_offset(vc, tc)) / kCyl.cavity();
@@ -236,10 +236,10 @@ TEST(FillTable, ReferenceSolverHitsTheClosedFormVolume) {
         const double d = plane_offset_for_volume(vc, tc, f * kCyl.cavity());
         EXPECT_NEAR(kCyl.volume(tc, d) / kCyl.cavity(), f, 1e-6) << "cylinder tilt " << t;
       }
-      if (tc < std::atan(1 / kCone.k) && f < kCone.volume(tc, rim_offset(vk, tc)) / kCone.cavity()) {
-        const double d = plane_offset_for_volume(vk, tc, f * kCone.cavity());
-        ASSERT_TRUE(kCone.valid(tc, d));
-        EXPECT_NEAR(kCone.volume(tc, d) / kCone.cavity(), f, 1e-6) << "cone tilt " << t;
+      if (tc < std::atan(1 / kFillCone.k) && f < kFillCone.volume(tc, rim_offset(vk, tc)) / kFillCone.cavity()) {
+        const double d = plane_offset_for_volume(vk, tc, f * kFillCone.cavity());
+        ASSERT_TRUE(kFillCone.valid(tc, d));
+        EXPECT_NEAR(kFillCone.volume(tc, d) / kFillCone.cavity(), f, 1e-6) << "cone tilt " << t;
       }
     }
 }

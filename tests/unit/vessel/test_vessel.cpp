@@ -5,6 +5,7 @@
 #include "core/vessel/profile.hpp"
 
 #include "test_common.hpp"
+#include "core/math/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +18,6 @@
 namespace draught {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 double frustum(double r0, double r1, double h) { return kPi * h / 3.0 * (r0 * r0 + r0 * r1 + r1 * r1); }
 
