@@ -13,9 +13,6 @@
 
 namespace draught::gpu {
 
-namespace {
-}
-
 glm::dvec2 panorama_st(const glm::dvec3& d) {
   const double across = std::abs(d.x) + std::abs(d.z) > 0 ? std::atan2(d.x, -d.z) : 0.0;
   return {0.5 + across * (0.5 / kPi), 1.0 - std::acos(std::clamp(d.y, -1.0, 1.0)) / kPi};

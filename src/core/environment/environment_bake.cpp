@@ -18,7 +18,6 @@ namespace draught {
 
 namespace {
 
-
 double smooth(double e0, double e1, double x) {
   const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
   return t * t * (3 - 2 * t);

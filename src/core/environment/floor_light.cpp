@@ -36,7 +36,6 @@ constexpr int kMaxEvents = 64;
 constexpr int kGatherStep = 4;  // texels between the surroundings' gathered nodes (1 cm)
 constexpr double kKernelScale = 2.0;  // texels per unit of the cubic B-spline (radius 2 units: 4 texels, 1 cm)
 
-
 // The cubic B-spline (support [-2, 2], a partition of unity over integer shifts).
 double bspline3(double t) {
   t = std::fabs(t);

@@ -12,7 +12,6 @@ namespace draught {
 
 namespace {
 
-
 // 1 - cos of the half-angle a sphere of radius r subtends from distance^2 d2 (> r^2),
 // without the cancellation of 1 - sqrt(1 - r^2/d2) for small, far lights.
 double one_minus_cos_cone(double r, double d2) {

@@ -14,7 +14,6 @@ bool usable(double t, double x, double y, Viewport vp) {
   return std::isfinite(t) && std::isfinite(x) && std::isfinite(y) && std::isfinite(vp.height) && vp.height > 0;
 }
 
-
 glm::dquat orientation(double lean_x, double lean_z, double spin) {
   return tilt_orientation(std::hypot(lean_x, lean_z), std::atan2(lean_z, lean_x), spin);
 }

@@ -17,7 +17,6 @@ void check_stream_field(double v, double lo, double hi, const char* field) {
                                 ", expected " + std::to_string(lo) + " to " + std::to_string(hi));
 }
 
-
 }  // namespace
 
 void PourStream::Sum::add(double x) {

@@ -12,11 +12,6 @@
 
 namespace draught {
 
-namespace {
-
-
-}  // namespace
-
 MarchedBodies::MarchedBodies(const FrameState& f, bool smooth) : frame_(f) {
   if (!f.droplets.empty() && !droplet_bounds(f.droplets.front().field).empty) {
     droplets_ = f.droplets.front();

@@ -1,6 +1,5 @@
 #include "core/reference/path_tracer.hpp"
 
-
 #include "core/condensation/wall_grid.hpp"
 #include "core/environment/environment_sampling.hpp"
 
@@ -31,8 +30,6 @@
 namespace draught {
 
 namespace {
-
-
 
 // Henyey-Greenstein: phase value for the cosine between the incoming travel direction
 // and the scattered one, and a sample of it.

@@ -15,7 +15,6 @@
 namespace draught {
 namespace {
 
-
 Vessel pint() { return build_vessel(default_params().glass); }
 
 CondensationParams cold(int seed = 1) {

@@ -21,7 +21,6 @@
 namespace draught {
 namespace {
 
-
 // Irradiance on a surface with normal n from an equirectangular image: the sum over
 // texels of radiance x cos x solid angle.
 glm::dvec3 irradiance(const HdrImage& img, const glm::dvec3& n) {

@@ -28,7 +28,6 @@
 namespace draught {
 namespace {
 
-
 class EnvironmentImage : public test::ImageSceneTest {
  protected:
   EnvironmentImage() : ImageSceneTest("draught-env-image") {}

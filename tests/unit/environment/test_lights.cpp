@@ -15,7 +15,6 @@
 namespace draught {
 namespace {
 
-
 AreaLight rect(glm::dvec3 c, glm::dvec3 n, glm::dvec3 hu, glm::dvec3 hv) {
   AreaLight l;
   l.shape = LightShape::Rect;

@@ -18,7 +18,6 @@
 namespace draught {
 namespace {
 
-
 class MediaLightTest : public test::ImageSceneTest {
  protected:
   MediaLightTest() : ImageSceneTest("draught-media-light") {}

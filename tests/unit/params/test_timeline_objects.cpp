@@ -22,7 +22,6 @@ namespace {
 
 using test::has;
 
-
 std::string timeline_json(const std::string& actions, const std::string& extra = "") {
   return R"({ "draught_timeline": 1, "name": "t", )" + extra + R"("actions": )" + actions + " }";
 }

@@ -12,7 +12,6 @@
 namespace draught {
 namespace {
 
-
 TEST(TimelineTilts, ASecondTiltStartsWhereTheFirstLeftTheGlass) {
   const Timeline t = load_timeline("gentle-tilt");  // 14 deg towards +X, then 10 deg towards 150 deg at 2.4 s
   const glm::dvec2 before = t.lean_at(2.4 - 1e-6), after = t.lean_at(2.4 + 1e-6);

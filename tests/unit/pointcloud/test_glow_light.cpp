@@ -15,7 +15,6 @@
 namespace draught {
 namespace {
 
-
 // `n` points evenly at random in a ball of radius R about `centre`, each a blob of `blob`.
 CloudFrame ball(std::size_t n, glm::dvec3 centre, double R, double blob, float kelvin) {
   auto pc = std::make_shared<PointCloud>();

@@ -18,7 +18,6 @@
 namespace draught {
 namespace {
 
-
 // The frame of one shipped glass, filled, posed as a timeline tilt would pose it:
 // tilted `tilt` towards `toward`, tipped on its foot.
 FrameState tilted(const std::string& glass, double tilt, double toward, const std::vector<std::string>& camera = {}) {

@@ -15,7 +15,6 @@
 namespace draught {
 namespace {
 
-
 // The lowest world height of the glass's outer surface (walls and foot, rim bead), by
 // sampling: 720 directions round the axis, rings at and between the profile's knots.
 double lowest_point(const Vessel& v, const Pose& pose) {

@@ -27,9 +27,6 @@ Params pour_lager_in_pint(float fill) {
   return p;
 }
 
-
-
-
 TEST(Pour, TheLevelRisesAsTheStreamArrivesAndTheVolumeAddsUp) {
   const Params p = pour_lager_in_pint(0.8f);
   Simulation sim(p);

@@ -16,7 +16,6 @@
 namespace draught {
 namespace {
 
-
 // Tips the glass towards +X by up to 25 degrees over the first second (on its foot).
 struct SceneTipDriver : InputDriver {
   double foot;

@@ -14,7 +14,6 @@
 namespace draught {
 namespace {
 
-
 // A point on the wall (inner or outer) of v at angle a (rad, from +z towards +x) and height y.
 glm::dvec3 on_wall(const Vessel& v, bool inner, double a, double y) {
   const double r = inner ? v.inner_radius(y) : v.outer_radius(y);

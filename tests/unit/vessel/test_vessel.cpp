@@ -18,7 +18,6 @@
 namespace draught {
 namespace {
 
-
 double frustum(double r0, double r1, double h) { return kPi * h / 3.0 * (r0 * r0 + r0 * r1 + r1 * r1); }
 
 // The test glasses. Control points are floats in Params, so closed forms use the
