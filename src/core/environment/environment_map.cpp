@@ -1,6 +1,7 @@
 #include "core/environment/environment_map.hpp"
 
 #include "core/io/files.hpp"
+#include "core/math/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,20 +9,17 @@
 namespace draught {
 
 glm::dvec2 equirect_uv(const glm::dvec3& d) {
-  constexpr double kPi = 3.14159265358979323846;
   const double u = 0.5 + std::atan2(d.x, -d.z) / (2 * kPi);
   const double v = std::acos(std::clamp(d.y, -1.0, 1.0)) / kPi;
   return {u, v};
 }
 
 glm::dvec3 equirect_direction(const glm::dvec2& uv) {
-  constexpr double kPi = 3.14159265358979323846;
   const double theta = uv.y * kPi, a = 2 * kPi * (uv.x - 0.5);  // a = atan2(x, -z)
   return {std::sin(theta) * std::sin(a), std::cos(theta), -std::sin(theta) * std::cos(a)};
 }
 
 double environment_lod(const EnvironmentMap& m, double angle) {
-  constexpr double kPi = 3.14159265358979323846;
   if (m.levels.empty() || !(angle > 0)) return 0;
   const double texel = 2 * kPi / m.width();
   return std::clamp(std::log2(angle / texel), 0.0, double(m.levels.size() - 1));

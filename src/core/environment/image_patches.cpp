@@ -1,4 +1,5 @@
 #include "core/environment/image_patches.hpp"
+#include "core/math/constants.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -12,7 +13,6 @@ const HdrImage& image_level(const EnvironmentMap& map, int max_width) {
 }
 
 ImagePatch image_patch(const Studio& studio, const HdrImage& img, int i, int j) {
-  constexpr double kPi = std::numbers::pi;
   const double t0 = kPi * j / img.height, t1 = kPi * (j + 1) / img.height;
   ImagePatch p;
   p.dir = studio.world_direction(equirect_direction({(i + 0.5) / img.width, (j + 0.5) / img.height}));

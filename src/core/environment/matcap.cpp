@@ -5,6 +5,7 @@
 #include "core/io/files.hpp"
 #include "core/output/tonemap.hpp"
 #include "core/text/echo.hpp"
+#include "core/math/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -32,7 +33,6 @@ glm::dvec2 matcap_uv(const glm::dvec3& n) { return {0.5 + 0.5 * n.x, 0.5 - 0.5 *
 
 MatCap bake_matcap(const SceneParams& p, const LightRig& rig, const BackdropSurface& backdrop, const glm::dvec3& centre,
                    int size) {
-  constexpr double kPi = std::numbers::pi;
   const Studio studio(p);
   const SkyIrradiance sky = sky_irradiance(studio);
   const MatCapView view = matcap_view();

@@ -2,6 +2,7 @@
 
 #include "core/environment/image_patches.hpp"
 #include "core/environment/sphere_grid.hpp"
+#include "core/math/constants.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -109,7 +110,6 @@ SkyIrradiance environment_seen_from(const EnvironmentFrame& f, const SceneParams
 
 EnvironmentFrame environment_frame(const SceneParams& p, const LightRig& rig, const BackdropSurface& backdrop,
                                    const std::vector<glm::dvec3>& seen_from, const LightPasses& passes) {
-  constexpr double kPi = std::numbers::pi;
   EnvironmentFrame f;
   const Studio studio(p);
   f.sky = sky_irradiance(studio);
