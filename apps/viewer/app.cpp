@@ -637,8 +637,9 @@ gpu::RenderTarget& Viewer::scene_target(int sw, int sh) {
 void Viewer::draw_overlay(int width, int height) {
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 10, 10), ImGuiCond_Always, ImVec2(1, 0));
-  // A fixed width (long lines wrap), so changing numbers do not move the framed scene.
-  const float width_px = 27 * ImGui::GetFontSize();
+  // A fixed width (long lines wrap), so changing numbers do not move the framed scene; in a
+  // window narrower than that, the window's width less the margins (it began off the left edge).
+  const float width_px = std::max(std::min(27 * ImGui::GetFontSize(), io.DisplaySize.x - 20), 1.0f);
   ImGui::SetNextWindowSizeConstraints(ImVec2(width_px, 0), ImVec2(width_px, io.DisplaySize.y));
   ImGui::SetNextWindowBgAlpha(0.6f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
@@ -650,9 +651,9 @@ void Viewer::draw_overlay(int width, int height) {
     ImGui::Text("%d x %d", width, height);
     ImGui::TextWrapped("%s", window_.renderer().c_str());
     if (timeline_)
-      ImGui::Text("timeline %s: %.1f / %.1f s", timeline_->name.c_str(), sim_->time(), timeline_->duration);
+      ImGui::TextWrapped("timeline %s: %.1f / %.1f s", timeline_->name.c_str(), sim_->time(), timeline_->duration);
     else
-      ImGui::Text("input: %s%s", rig_.driver->name(), gamepad_ && gamepad_->active() >= 0 ? " (controller moving)" : "");
+      ImGui::TextWrapped("input: %s%s", rig_.driver->name(), gamepad_ && gamepad_->active() >= 0 ? " (controller moving)" : "");
     // The selected glass: named where there are several (one line, so the overlay keeps
     // its size).
     const Scene& scene = editor_.scene();
@@ -663,12 +664,12 @@ void Viewer::draw_overlay(int width, int height) {
     if (const Simulation* v = selected_sim())
       ImGui::TextWrapped("%s%.0f %% full, %.1f %% spilled", which.c_str(), 100.0 * v->fraction(),
                          100.0 * v->spilled());
-    if (view_ != 0) ImGui::Text("debug view: %s", kViewNames[view_]);
+    if (view_ != 0) ImGui::TextWrapped("debug view: %s", kViewNames[view_]);
     const Tier& tier = kTiers[tier_];
     if (tier.matcap || editor_.scene().params.render.tier == int(RenderTier::MatCap))
-      ImGui::Text("quality: MatCap tier (the low-cost glass, %.0f %% resolution)", 100.0 * tier.scale);
+      ImGui::TextWrapped("quality: MatCap tier (the low-cost glass, %.0f %% resolution)", 100.0 * tier.scale);
     else
-      ImGui::Text("quality %s (%.0f %% resolution, %d events)", tier.name, 100.0 * tier.scale,
+      ImGui::TextWrapped("quality %s (%.0f %% resolution, %d events)", tier.name, 100.0 * tier.scale,
                   std::min(editor_.scene().params.render.max_events, tier.max_events));
     // The note's line is always there, so a note coming and going does not resize the overlay.
     const char* hint = show_panel_ ? "keys and mouse: in the panel" : "F1: the panel, keys";

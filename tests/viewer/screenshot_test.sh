@@ -26,12 +26,18 @@ grep -q "expected a file name ending in .png" "$out/viewer-jpg.err" || { cat "$o
 [ ! -e "$out/viewer-shot.jpg" ] || { echo "viewer_screenshot: a .jpg was written" >&2; exit 1; }
 # Missing folders of the screenshot's path are created.
 rm -rf "$out/new-folder"
-run --preset lager --size 320x240 --frames 30 --hide-panel --screenshot "$out/new-folder/viewer-glass.png"
+run --preset lager --size 320x240 --frames 10 --hide-panel --screenshot "$out/new-folder/viewer-glass.png" >"$out/viewer-glass.txt"
+cat "$out/viewer-glass.txt"
 mv "$out/new-folder/viewer-glass.png" "$out/viewer-glass.png"
 "$checker" "$out/viewer-glass.png" 320 240 glass
-run --preset lager --size 320x240 --frames 30 --hide-panel --quality 0 --screenshot "$out/viewer-low.png"
+# In a window narrower than its usual width the overlay stays inside it (it began off the
+# left edge, its lines cut).
+awk '$1 == "layout" && $2 == "overlay" { seen = 1; if ($3 < 0 || $5 > 320) bad = 1 }
+     END { exit !(seen && !bad) }' "$out/viewer-glass.txt" ||
+  { echo "viewer_screenshot: the overlay is not inside the 320 px window" >&2; exit 1; }
+run --preset lager --size 320x240 --frames 10 --hide-panel --quality 0 --screenshot "$out/viewer-low.png"
 "$checker" "$out/viewer-low.png" 320 240 glass
-run --preset lager --size 320x240 --frames 30 --screenshot "$out/viewer-panel.png"
+run --preset lager --size 320x240 --frames 10 --screenshot "$out/viewer-panel.png"
 "$checker" "$out/viewer-panel.png" 320 240 panel "$out/viewer-glass.png"
 # The scene check on one glass (the same code path as the flight's).
 "$checker" "$out/viewer-glass.png" 320 240 scene lager
