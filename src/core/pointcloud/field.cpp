@@ -410,19 +410,16 @@ class TreeRayQueries {
   // finds it): boxes are opened while one could be entered before the best entry known.
   float next_entry(glm::vec3, glm::vec3, float tmin, float limit) const {
     pass(tmin);
-    auto best_known = [&] {
-      float best = limit;
-      for (const Support& s : waiting)
-        if (s.t1 >= tmin) best = std::min(best, std::max(s.t0, tmin));
-      return best;
-    };
-    float best = best_known();
-    while (!ahead.empty() && ahead.back().entry < best) {
-      const std::size_t before = waiting.size();
-      open_nearest([&](float entry) { return entry < best; });
-      if (waiting.size() != before) best = best_known();
-    }
-    return best < limit ? best : INFINITY;
+    float best = limit;
+    for (const Support& s : waiting)
+      if (s.t1 >= tmin) best = std::min(best, std::max(s.t0, tmin));
+    // The supports that leaves open from here on lower it as they join (added_entry).
+    added_from = tmin;
+    added_entry = best;
+    while (!ahead.empty() && ahead.back().entry < added_entry)
+      open_nearest([&](float entry) { return entry < added_entry; });
+    added_from = INFINITY;
+    return added_entry < limit ? added_entry : INFINITY;
   }
 
  private:
@@ -442,6 +439,9 @@ class TreeRayQueries {
   float pad;  // a thousandth of a step: rounding in the spans cannot drop a support
   mutable float behind = -INFINITY;  // the march has passed every t below this (less pad)
   mutable float fa = INFINITY, fb = -INFINITY;
+  // While next_entry looks from added_from on: the nearest entry at or after it of the
+  // supports waiting, lowered by each support a leaf adds (none scanned twice).
+  mutable float added_from = INFINITY, added_entry = INFINITY;
   // (The three lists live as long as the thread, so that a ray allocates nothing: one
   // TreeRayQueries a thread at a time, as march_cloud makes them.)
   std::vector<Box>& ahead = lists().ahead;          // boxes met, not yet opened, by entry, the nearest last
@@ -502,6 +502,7 @@ class TreeRayQueries {
           // In texel order: shifted in from the end by hand (a leaf's texels mostly
           // follow those waiting; vector::insert's memmove cost 7 % of the march).
           const Support s{glm::vec3(p), 1.0f / (p.w * p.w), t0, t1, i};
+          if (t1 >= added_from) added_entry = std::min(added_entry, std::max(t0, added_from));
           std::size_t k = waiting.size();
           waiting.push_back(s);
           for (; k > 0 && waiting[k - 1].i > i; --k) waiting[k] = waiting[k - 1];
