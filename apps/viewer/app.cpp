@@ -638,7 +638,8 @@ void Viewer::draw_overlay(int width, int height) {
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 10, 10), ImGuiCond_Always, ImVec2(1, 0));
   // A fixed width (long lines wrap), so changing numbers do not move the framed scene; in a
-  // window narrower than that, the window's width less the margins (it began off the left edge).
+  // window narrower than that, the window's width less the margins, so that it never starts
+  // left of the window.
   const float width_px = std::max(std::min(27 * ImGui::GetFontSize(), io.DisplaySize.x - 20), 1.0f);
   ImGui::SetNextWindowSizeConstraints(ImVec2(width_px, 0), ImVec2(width_px, io.DisplaySize.y));
   ImGui::SetNextWindowBgAlpha(0.6f);
@@ -670,7 +671,7 @@ void Viewer::draw_overlay(int width, int height) {
       ImGui::TextWrapped("quality: MatCap tier (the low-cost glass, %.0f %% resolution)", 100.0 * tier.scale);
     else
       ImGui::TextWrapped("quality %s (%.0f %% resolution, %d events)", tier.name, 100.0 * tier.scale,
-                  std::min(editor_.scene().params.render.max_events, tier.max_events));
+                         std::min(editor_.scene().params.render.max_events, tier.max_events));
     // The note's line is always there, so a note coming and going does not resize the overlay.
     const char* hint = show_panel_ ? "keys and mouse: in the panel" : "F1: the panel, keys";
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.75f, 0.75f, 1.0f));

@@ -413,7 +413,8 @@ class TreeRayQueries {
     float best = limit;
     for (const Support& s : waiting)
       if (s.t1 >= tmin) best = std::min(best, std::max(s.t0, tmin));
-    // The supports that leaves open from here on lower it as they join (added_entry).
+    // The leaves opened from here on lower it as their supports join (open_nearest keeps
+    // added_entry), so no support is scanned twice.
     added_from = tmin;
     added_entry = best;
     while (!ahead.empty() && ahead.back().entry < added_entry)
@@ -440,7 +441,7 @@ class TreeRayQueries {
   mutable float behind = -INFINITY;  // the march has passed every t below this (less pad)
   mutable float fa = INFINITY, fb = -INFINITY;
   // While next_entry looks from added_from on: the nearest entry at or after it of the
-  // supports waiting, lowered by each support a leaf adds (none scanned twice).
+  // supports waiting, lowered by each support a leaf adds.
   mutable float added_from = INFINITY, added_entry = INFINITY;
   // (The three lists live as long as the thread, so that a ray allocates nothing: one
   // TreeRayQueries a thread at a time, as march_cloud makes them.)
