@@ -410,17 +410,13 @@ class TreeRayQueries {
   // finds it): boxes are opened while one could be entered before the best entry known.
   float next_entry(glm::vec3, glm::vec3, float tmin, float limit) const {
     pass(tmin);
-    float best = limit;
-    for (const Support& s : waiting)
-      if (s.t1 >= tmin) best = std::min(best, std::max(s.t0, tmin));
-    // The leaves opened from here on lower it as their supports join (open_nearest keeps
-    // added_entry), so no support is scanned twice.
-    added_from = tmin;
-    added_entry = best;
-    while (!ahead.empty() && ahead.back().entry < added_entry)
-      open_nearest([&](float entry) { return entry < added_entry; });
-    added_from = INFINITY;
-    return added_entry < limit ? added_entry : INFINITY;
+    Nearest best{tmin, limit};
+    for (const Support& s : waiting) best.see(s.t0, s.t1);
+    // The leaves opened from here on lower it as their supports join, so no support is
+    // scanned twice.
+    while (!ahead.empty() && ahead.back().entry < best.entry)
+      open_nearest([&](float entry) { return entry < best.entry; }, &best);
+    return best.entry < limit ? best.entry : INFINITY;
   }
 
  private:
@@ -440,9 +436,6 @@ class TreeRayQueries {
   float pad;  // a thousandth of a step: rounding in the spans cannot drop a support
   mutable float behind = -INFINITY;  // the march has passed every t below this (less pad)
   mutable float fa = INFINITY, fb = -INFINITY;
-  // While next_entry looks from added_from on: the nearest entry at or after it of the
-  // supports waiting, lowered by each support a leaf adds.
-  mutable float added_from = INFINITY, added_entry = INFINITY;
   // (The three lists live as long as the thread, so that a ray allocates nothing: one
   // TreeRayQueries a thread at a time, as march_cloud makes them.)
   std::vector<Box>& ahead = lists().ahead;          // boxes met, not yet opened, by entry, the nearest last
@@ -487,8 +480,16 @@ class TreeRayQueries {
   // An inner node's nearer child that would come straight back off the list (entered no
   // later than every box ahead, and wanted by go_on) is opened at once instead: the same
   // boxes in the same order, without the list's sorting.
+  // The nearest entry at or after `from` of the supports seen (next_entry's jump).
+  struct Nearest {
+    float from, entry;
+    void see(float t0, float t1) {
+      if (t1 >= from) entry = std::min(entry, std::max(t0, from));
+    }
+  };
+  // `nearest`, when given, sees each support a leaf adds.
   template <class While>
-  void open_nearest(While go_on) const {
+  void open_nearest(While go_on, Nearest* nearest = nullptr) const {
     Box b = ahead.back();
     ahead.pop_back();
     for (;;) {
@@ -503,7 +504,7 @@ class TreeRayQueries {
           // In texel order: shifted in from the end by hand (a leaf's texels mostly
           // follow those waiting; vector::insert's memmove cost 7 % of the march).
           const Support s{glm::vec3(p), 1.0f / (p.w * p.w), t0, t1, i};
-          if (t1 >= added_from) added_entry = std::min(added_entry, std::max(t0, added_from));
+          if (nearest) nearest->see(t0, t1);
           std::size_t k = waiting.size();
           waiting.push_back(s);
           for (; k > 0 && waiting[k - 1].i > i; --k) waiting[k] = waiting[k - 1];
