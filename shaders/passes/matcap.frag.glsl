@@ -60,7 +60,7 @@ vec3 seen_straight(vec3 o, vec3 d) {
   float tb, tl;
   vec3 nb;
   bool on_backdrop = intersect(backdrop_surface(), o, d, 0.0, tb, nb);
-  vec4 light = lights_seen(o, d, 0.0, tb, tl);
+  vec4 light = lights_seen(o, d, 0.0, tb, true, tl);  // (the camera's view: the shot's lights kept out)
   vec3 beyond = sky_seen(d, 0.0);
   if (on_backdrop) {
     vec3 p = o + tb * d;

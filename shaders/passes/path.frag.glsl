@@ -75,9 +75,11 @@ struct Look {
                    // glass or drink while it still has events: the lights and the sky)
   bool mirrored;   // a reflection off a glass: its backdrop as a glass mirrors it
   int obj;         // the glass it reflects off, for its panorama (env.reflections); -1: none
+  bool camera;     // the camera's own ray, before any surface: it passes the lights kept
+                   // out of the shot (lights_seen)
 };
 
-Look no_look() { return Look(vec3(0.0), vec3(0.0, 1.0, 0.0), vec3(0.0), 0.0, false, false, -1); }
+Look no_look() { return Look(vec3(0.0), vec3(0.0, 1.0, 0.0), vec3(0.0), 0.0, false, false, -1, false); }
 
 // Where the path's own ray meets the backdrop, shaded once after the path loop (its light
 // map, the glasses' shadows, the contact: heavier than a reflection's backdrop, and one
@@ -113,7 +115,7 @@ void look_out(Look l, inout vec3 radiance, inout LitBackdrop lit) {
     tb = 0.0;
     nb = vec3(0.0, 1.0, 0.0);
   }
-  vec4 light = lights_seen(l.o, l.d, l.rough, tb, tl);
+  vec4 light = lights_seen(l.o, l.d, l.rough, tb, l.camera, tl);
 #if defined(SCREEN) && SCREEN == 2
   on_backdrop = false;  // (no floor in front of the picture)
   if (!l.mirrored) light = vec4(0.0);
@@ -262,13 +264,13 @@ void shade_interface(inout Path path, Hit h, Vessel v, out Look look) {
         out_w = surface_reflection_out(v, g, pl, to_local_dir(v, r), back);
         path.radiance += path.thr * c.F * back * surround_mean();
       }
-      if (!into_wall) look = Look(p, r, path.thr * c.F * out_w, rough, true, true, h.obj);
+      if (!into_wall) look = Look(p, r, path.thr * c.F * out_w, rough, true, true, h.obj, false);
     } else {
       vec3 out_dir;
       float turned;  // what the way out turns back in sees the sky's mean
       vec3 tr = reflected_light(v, g, h.m, path.medium, below, path.drink == h.obj ? path.left : v.body.absorption_share, pl,
                                 to_local_dir(v, r), to_local_dir(v, c.n), out_dir, turned);
-      look = Look(p, to_world_dir(v, out_dir), path.thr * c.F * tr * (1.0 - turned), rough, true, true, -1);
+      look = Look(p, to_world_dir(v, out_dir), path.thr * c.F * tr * (1.0 - turned), rough, true, true, -1, false);
       path.radiance += path.thr * c.F * tr * turned * sky_mean();
 #if DECALS
       if (decal.metal) {  // the metal's reflection takes the same way out
@@ -347,7 +349,7 @@ void shade_droplet(inout Path path, Hit h, out Look look) {
   float rough = frame.droplet_roughness;
   if (c.F < 1.0) {
     vec3 r = reflect(path.d, c.n);
-    look = Look(p, r, path.thr * c.F * (inside ? chord : vec3(1.0)), rough, true, true, -1);
+    look = Look(p, r, path.thr * c.F * (inside ? chord : vec3(1.0)), rough, true, true, -1, false);
     path.thr *= 1.0 - c.F;
   }
   go_on(path, h, c, p);
@@ -396,7 +398,7 @@ void shade_cloud(inout Path path, Hit h, out Look look) {
   float rough = frame.cloud_hi[k].w;
   if (c.F < 1.0) {
     vec3 r = reflect(path.d, c.n);
-    look = Look(p, r, path.thr * c.F * (inside ? chord : vec3(1.0)), rough, true, true, -1);
+    look = Look(p, r, path.thr * c.F * (inside ? chord : vec3(1.0)), rough, true, true, -1, false);
     path.thr *= 1.0 - c.F;
     if (max3(g_cloud_attrs.yzw) > 0.0) path.thr *= g_cloud_attrs.yzw;
   }
@@ -473,7 +475,8 @@ vec3 trace_path(vec3 eye, vec3 dir, out float see_through) {
       Look look;
       bool leaves = h.m == M_NONE;
       if (leaves) {
-        look = Look(path.o, path.d, path.thr, 0.0, path.medium == MEDIUM_AIR, false, -1);
+        // (A panorama's rays are not the camera's: the lights show in what glasses mirror.)
+        look = Look(path.o, path.d, path.thr, 0.0, path.medium == MEDIUM_AIR, false, -1, events == 0 && PANORAMA == 0);
         if (transparent) {
           // The page behind a cutout (core/output/cutout): alpha lets its achromatic part
           // through, the studio behind the objects lights the coloured rest. (Reflections

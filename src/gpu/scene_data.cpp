@@ -45,7 +45,7 @@ contract::FrameBlock pack_frame_block(const FrameState& f, int width, int height
     b.light_normal[i] = {glm::vec3(l.normal), float(int(l.shape))};
     const double bound = l.shape == LightShape::Sphere ? l.radius : glm::length(l.half_u) + glm::length(l.half_v);
     b.light_half_u[i] = {glm::vec3(l.half_u), float(bound)};
-    b.light_half_v[i] = {glm::vec3(l.half_v), 0.0f};
+    b.light_half_v[i] = {glm::vec3(l.half_v), l.camera_visible ? 1.0f : 0.0f};
     if (l.shape == LightShape::Rect) {
       const double lu = glm::length(l.half_u), lv = glm::length(l.half_v);
       b.light_extent[i] = {float(lu), float(lv), float(4.0 * lu * lv), 0.0f};

@@ -199,19 +199,28 @@ TEST(StudioPicture, ABackdropLitByOneLightShowsItsExactIrradiance) {
   EXPECT_LT(worst, 0.02);
 }
 
-// A light seen directly shows its radiance (x exposure), away from its edges.
+// A light seen directly shows its radiance (x exposure), away from its edges; kept out of
+// the shot (light.camera_visible false, the default) those pixels show the sky behind it,
+// as they do with the light off.
 TEST(StudioPicture, ALightSeenDirectlyShowsItsRadiance) {
   Gpu& g = gpu_instance();
-  const FrameState f =
-      studio_frame({"strips.power=0", "backlight.power=0", "render.tonemap=none", "light.power=0.5"},
-                   {"eye=0.1,0.1,-0.1", "target=-0.6,0.7,0.6", "vfov=60"});
+  const std::vector<std::string> view = {"eye=0.1,0.1,-0.1", "target=-0.6,0.7,0.6", "vfov=60"};
+  const FrameState f = studio_frame(
+      {"strips.power=0", "backlight.power=0", "render.tonemap=none", "light.power=0.5", "light.camera_visible=true"},
+      view);
   ASSERT_EQ(f.lights.lights.size(), 1u);
   const AreaLight& key = f.lights.lights[0];
   const Image img = g.renderer->render(f, kLightsW, kLightsH);
   const CameraBasis cam = camera_basis(f, kLightsW, kLightsH);
   const glm::dvec3 expected = double(f.params.render.exposure) * key.radiance;
   ASSERT_LT(expected.r, 0.95);
-  int compared = 0;
+  const Image hidden = g.renderer->render(
+      studio_frame({"strips.power=0", "backlight.power=0", "render.tonemap=none", "light.power=0.5"}, view), kLightsW,
+      kLightsH);
+  const Image off = g.renderer->render(
+      studio_frame({"strips.power=0", "backlight.power=0", "render.tonemap=none", "light.power=0"}, view), kLightsW,
+      kLightsH);
+  int compared = 0, hidden_as_off = 0;
   double worst = 0;
   for (int y = 1; y + 1 < kLightsH; ++y)
     for (int x = 1; x + 1 < kLightsW; ++x) {
@@ -228,10 +237,13 @@ TEST(StudioPicture, ALightSeenDirectlyShowsItsRadiance) {
         worst = std::max(worst, std::abs(got - expected[c]) / expected[c]);
       }
       ++compared;
+      hidden_as_off += std::equal(hidden.px(x, y), hidden.px(x, y) + 3, off.px(x, y));
     }
-  std::printf("the key seen directly: %d pixels, worst relative error %.4f\n", compared, worst);
+  std::printf("the key seen directly: %d pixels, worst relative error %.4f; kept out of the shot, %d as with it off\n",
+              compared, worst, hidden_as_off);
   ASSERT_GT(compared, 200);
   EXPECT_LT(worst, 0.01);
+  EXPECT_EQ(hidden_as_off, compared);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@ struct AreaLight {
   float radius;
   vec3 radiance;
   vec3 extent;  // a rect's |half_u|, |half_v| and area (core computes them once per frame)
+  bool camera_visible;  // seen by the camera's own rays (frame.light_half_v w)
 };
 
 // The renderer compiles the sphere lights' code in only for a rig that has one
@@ -35,7 +36,8 @@ void init_lights() {
   for (int i = 0; i < MAX_LIGHTS; ++i) {
     vec4 c = frame.light_center[i], n = frame.light_normal[i];
     g_lights[i] = AreaLight(SPHERE_LIGHTS != 0 && n.w > 0.5, c.xyz, n.xyz, frame.light_half_u[i].xyz,
-                            frame.light_half_v[i].xyz, c.w, frame.light_radiance[i].rgb, frame.light_extent[i].xyz);
+                            frame.light_half_v[i].xyz, c.w, frame.light_radiance[i].rgb, frame.light_extent[i].xyz,
+                            frame.light_half_v[i].w > 0.5);
   }
 }
 
@@ -179,8 +181,10 @@ float soft_box(float s, float w) { return 1.0 - smoothstep(1.0 - w, 1.0 + w, abs
 // a the part of the pixel's ray it covers (its edges spread by the GGX roughness of the
 // surface that sent the ray, symmetrically so its solid angle and its light are kept; a
 // hair at least, against aliasing). t: where, INF for none. Behind a partly covering
-// front the caller sees what lies beyond it with 1 - a.
-vec4 lights_seen(vec3 o, vec3 d, float roughness, float t_max, out float t) {
+// front the caller sees what lies beyond it with 1 - a. `camera`: the ray is the camera's
+// own (no surface met yet), which passes the lights kept out of the shot (camera_visible
+// false; the reference's Tracer::nearest_light does the same).
+vec4 lights_seen(vec3 o, vec3 d, float roughness, float t_max, bool camera, out float t) {
   t = INF;
   vec4 seen = vec4(0.0);
   float a = roughness * roughness;  // GGX alpha: the reflected lobe is about 2 alpha wide
@@ -209,7 +213,7 @@ vec4 lights_seen(vec3 o, vec3 d, float roughness, float t_max, out float t) {
               soft_box(dot(q, l.half_v) / (lv * lv), spread * ti / lv);
       front = denom < 0.0 && ti > 0.0;  // its emitting side, ahead
     }
-    if (i < g_light_count && front && cover > 0.0 && ti < t && ti < t_max) {
+    if (i < g_light_count && (l.camera_visible || !camera) && front && cover > 0.0 && ti < t && ti < t_max) {
       t = ti;
       seen = vec4(l.radiance, cover);
     }
@@ -227,7 +231,7 @@ vec3 lights_and_sky(vec3 o, vec3 d, float roughness) {
   return sky_seen(d, roughness);  // the AR view: the rig's lights show only in outer reflections
 #endif
   float tl;
-  vec4 light = lights_seen(o, d, roughness, INF, tl);
+  vec4 light = lights_seen(o, d, roughness, INF, false, tl);
   return light.rgb * light.a + sky_seen(d, roughness) * (1.0 - light.a);
 }
 

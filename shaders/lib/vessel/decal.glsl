@@ -165,7 +165,7 @@ vec3 decal_surroundings(vec3 p, vec3 m, vec2 spread, float rough, int taps) {
     float tb, tl;
     vec3 nb;
     bool on_backdrop = intersect(backdrop_surface(), p, d, 0.0, tb, nb);
-    vec4 light = lights_seen(p, d, rough, tb, tl);
+    vec4 light = lights_seen(p, d, rough, tb, false, tl);
     vec3 beyond = on_backdrop ? shade_backdrop_mirrored(p + tb * d, nb, d, tb, false) : sky_seen(d, rough);
     sum += light.rgb * light.a + beyond * (1.0 - light.a);
   }

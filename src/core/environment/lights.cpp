@@ -164,6 +164,7 @@ AreaLight place_light(const LightParams& lp, const glm::dvec3& aim, bool mirror_
   const glm::dvec3 across = glm::normalize(glm::cross(up, l.normal));
   const double w = lp.width, h = lp.height;
   const glm::dvec3 color(lp.color);
+  l.camera_visible = lp.camera_visible;
   if (lp.shape == int(LightShape::Sphere)) {
     l.shape = LightShape::Sphere;
     l.radius = 0.5 * w;

@@ -28,6 +28,7 @@ struct AreaLight {
   glm::dvec3 half_u{0.0}, half_v{0.0};  // rect: half its width and half its height, in its plane
   double radius = 0;                    // sphere
   glm::dvec3 radiance{0.0};             // W / (sr m^2), per colour channel
+  bool camera_visible = true;           // seen by the camera's own rays (LightParams::camera_visible)
 
   double area() const;
   bool emits() const;  // some radiance over some area

@@ -50,6 +50,9 @@ void add_light_rows(std::vector<ParamDesc>& rows, const std::string& g, const st
   rows.push_back(param_row<ParamType::Color, Group, &L::color>(g + ".color", 0.0f, 1.0f, "", "Colour of " + what));
   rows.push_back(param_row<ParamType::Float, Group, &L::power>(g + ".power", 0.0f, 1000.0f, "W",
       "Power of " + what + ": radiant flux of a Lambertian emitter (0: off)"));
+  rows.push_back(param_row<ParamType::Bool, Group, &L::camera_visible>(g + ".camera_visible", 0.0f, 1.0f, "",
+      "Whether the camera sees " + what + " straight (false: kept out of the shot, as a photographer places a "
+      "softbox, wherever the camera looks from; its reflections, what the glass bends of it and its light stay)"));
 }
 
 // The rows of one decal layer (decal_outer, decal_inner): the same fields on either wall.

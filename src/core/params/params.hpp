@@ -123,6 +123,10 @@ struct LightParams {
   float power = 6.0f;  // W, radiant flux of a Lambertian emitter
   float intensity = 2.5f;  // deprecated, accepted, no effect (light.power)
   float size = 12.0f;      // deprecated, accepted, no effect (light.width, light.height)
+  // Seen by the camera's own rays: off, a softbox is out of the shot, as a photographer
+  // places it, wherever the camera looks from (still in reflections, through the glass
+  // and in the light it gives).
+  bool camera_visible = false;
 };
 
 // The studio's strip softboxes: a pair, the right one the left one mirrored across x = 0,

@@ -121,6 +121,9 @@ class Tracer {
     // reflection off a surface seen from the air, or by a path a head scattered (the other
     // half of its light sampling).
     bool sees_lights = false;
+    // The camera's own ray, before it meets anything: it passes the lights kept out of
+    // the shot (AreaLight::camera_visible; the picture's lights_seen the same).
+    bool from_camera = true;
     const glm::dvec3 eye = ray.o;
     for (;;) {
       glm::dvec4 attrs(0.0);  // a cloud's surface: its temperature and colour there
@@ -152,7 +155,7 @@ class Tracer {
       } else {
         // A light's front before the next surface ends the stretch there.
         double t_light = t_end;
-        const int light = nearest_light(ray, t_light);
+        const int light = nearest_light(ray, t_light, from_camera);
         // The screen card: an emitter found by the paths alone (no light sampling of it).
         double t_screen = 0;
         glm::dvec2 uv;
@@ -160,6 +163,7 @@ class Tracer {
         if (screen) t_light = t_screen;
         const AirEvent e = air_segment(ray, t_light, rng);
         if (e.kind == AirEvent::Scatter) {
+          from_camera = false;
           if (++scatters > settings_.max_scatters) break;
           const VesselMedia& m = media_[size_t(e.obj)];
           thr *= m.foam_albedo;
@@ -179,6 +183,7 @@ class Tracer {
           const double F = fresnel_dielectric(std::fabs(glm::dot(e.n, ray.d)), 1.0, media_[size_t(e.obj)].liquid_ior);
           ray.o = ray.at(e.t);
           if (rng.uniform() < 2 * F / (1 + F)) {
+            from_camera = false;
             ray.d = reflect_dir(ray.d, e.n);
             mis.pdf = -1;
             sees_lights = false;
@@ -200,6 +205,7 @@ class Tracer {
         break;
       }
       const glm::dvec3 p = ray.at(h.t);
+      from_camera = false;
       if (h.m == Material::Floor) {  // the backdrop: Lambertian
         // The checker floor fades into the studio with distance (as the picture's); under an
         // environment image the floor fades into the image: the path goes on through it.
@@ -473,10 +479,12 @@ class Tracer {
     return false;
   }
 
-  // The nearest light front along the ray before `t` (updated), or -1.
-  int nearest_light(const Ray& ray, double& t) const {
+  // The nearest light front along the ray before `t` (updated), or -1; the camera's own
+  // ray passes those kept out of the shot.
+  int nearest_light(const Ray& ray, double& t, bool from_camera = false) const {
     int found = -1;
     for (size_t i = 0; i < lights_.size(); ++i) {
+      if (from_camera && !lights_[i].camera_visible) continue;
       double tl;
       if (lights_[i].intersect(ray.o, ray.d, kRestartEps, tl) && tl < t) {
         t = tl;

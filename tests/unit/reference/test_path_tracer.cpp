@@ -284,14 +284,46 @@ TEST(ReferencePathTracer, ALightSeenDirectlyHasItsRadiance) {
   p.camera.eye = {0.0f, 0.5f, 0.3f};
   p.camera.target = {0.0f, 0.5f, -1.0f};  // above the glass, at the panel behind it
   p.camera.vfov = 5;
+  p.backlight.camera_visible = true;
   const FrameState f = make_frame(p);
   ASSERT_EQ(f.lights.lights.size(), 1u);
   const RadianceImage img = render(p, 4, 4);
   for (const glm::dvec3& c : img.pixels) EXPECT_NEAR(c.g, f.lights.lights[0].radiance.g, 1e-9);
+  // Kept out of the shot (the default), the camera's rays pass it: the studio behind.
+  p.backlight.camera_visible = false;
+  for (const glm::dvec3& c : render(p, 4, 4).pixels) EXPECT_NEAR(c.g, 0.1, 1e-6);
+  p.backlight.camera_visible = true;
   p.camera.eye = {0.0f, 0.5f, -2.0f};
   p.camera.target = {0.0f, 0.5f, 1.0f};
   p.backlight.direction = {0, 0, -1};
   for (const glm::dvec3& c : render(p, 4, 4).pixels) EXPECT_NEAR(c.g, 0.1, 1e-6);  // its back: the studio
+}
+
+TEST(ReferencePathTracer, StripsKeptOutOfTheShotChangeOnlyThePixelsThatSawThemStraight) {
+  // The default pint at 16:9, where the strip softboxes stand inside the frame's sides:
+  // kept out of the shot, the pixels that saw them straight see the sweep behind; every
+  // other pixel, the glass mirroring and bending them, the floor they light, is the same
+  // to the bit (the same paths: the camera's rays are the only ones that pass them).
+  Params p = test::params_with_glass("pint");
+  p.foam.height = 0;  // (quicker; the head is not what this is about)
+  p.strips.camera_visible = true;
+  ReferenceSettings s;
+  s.samples = 2;
+  s.threads = 2;
+  const int w = 48, h = 27;
+  const RadianceImage seen = render_reference(make_frame(p), w, h, s);
+  p.strips.camera_visible = false;
+  const RadianceImage hidden = render_reference(make_frame(p), w, h, s);
+  int changed = 0, changed_inside = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (seen.at(x, y) == hidden.at(x, y)) continue;
+      ++changed;
+      if (x >= w / 8 && x < w - w / 8) ++changed_inside;
+      EXPECT_GT(seen.at(x, y).g, hidden.at(x, y).g) << x << ", " << y;  // a strip is brighter than the paper
+    }
+  EXPECT_GT(changed, 2 * h / 3);  // both strips, most of the frame's height
+  EXPECT_EQ(changed_inside, 0);   // only at the sides
 }
 
 // ---- droplets and point clouds (core/droplets, core/pointcloud) among the vessels ----
