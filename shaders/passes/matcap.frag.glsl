@@ -109,13 +109,21 @@ void drink_along(Vessel v, vec3 p, vec3 d, vec3 pw, inout vec3 radiance, inout v
   if (v.shape.has_head != 0) {
     head = level_span(cav, h0, dh, 0.0, head_top);
     opacity = 1.0 - exp(-f.density * max(head.y - head.x, 0.0));
-    // The head's top lit as the floor's paper is, by the rig and the surround from above, with
-    // the reflectance of a deep head from its single-scattering albedo (the two-stream
-    // form with the similarity relation: back to about foam.color, which core derived it from).
-    vec3 up = to_world_dir(v, n);
+    // The head lit as the floor's paper is, by the rig and the surround, with the
+    // reflectance of a deep head from its single-scattering albedo (the two-stream form
+    // with the similarity relation: back to about foam.color, which core derived it from).
+    // Its face is the one the view enters by: the top, facing up, or the side against the
+    // glass, facing out from the axis there, lit through the wall's two faces (so a head
+    // is round, lit on the key's side, not one flat tone).
+    bool side = head.x <= cav.x + 1e-6;
+    vec3 q = p + head.x * d;
+    vec3 radial = vec3(q.x, 0.0, q.z);
+    vec3 face = side && dot(radial, radial) > 1e-12 ? normalize(radial) : n;
+    vec3 fw = to_world_dir(v, face);
     vec3 s = sqrt(max(vec3(1.0) - f.foam_color, vec3(0.0)) / max(vec3(1.0) - f.foam_color * f.anisotropy, vec3(1e-6)));
     vec3 reflectance = (vec3(1.0) - s) / (vec3(1.0) + s);
-    head_color = reflectance * (rig_irradiance_far(pw, up, frame.light_count) + surround_irradiance(up)) / PI;
+    float wall = side ? 1.0 - 2.0 * fresnel_dielectric(1.0, 1.0, glass_of(v.row).glass_ior) : 1.0;
+    head_color = reflectance * wall * (rig_irradiance_far(pw, fw, frame.light_count) + surround_irradiance(fw)) / PI;
   }
   if (opacity > 0.0 && head.x < liquid.x) {  // the head in front (seen from above or through its side)
     radiance += thr * opacity * head_color;

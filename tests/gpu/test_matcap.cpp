@@ -116,6 +116,41 @@ TEST(MatCapTier, DrawsTheGlassAndItsDrink) {
   EXPECT_GT(differ, 96 * 96 / 50);
 }
 
+// The head is lit on the key light's side, round like the full tier's, not one flat tone:
+// its pixels (those that a black head darkens) are brighter on the key's third than on the other
+// third by more than a tenth of the scale, and the other way round with the key mirrored.
+TEST(MatCapTier, TheHeadIsLitOnTheKeysSide) {
+  Gpu& g = gpu_instance();
+  const int n = 128;
+  auto picture = [&](const char* key, const char* colour) {
+    return g.renderer->render(scene_frame({"lager", "pint", {"render.tier=matcap", key, colour}, {}}), n, n);
+  };
+  for (const bool key_left : {true, false}) {
+    const char* key = key_left ? "light.direction=-0.6,0.6,0.55" : "light.direction=0.6,0.6,0.55";
+    const Image with = picture(key, "foam.color=0.92,0.9,0.85"), without = picture(key, "foam.color=0,0,0");
+    int lo = n, hi = -1;
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        if (std::abs(int(with.px(x, y)[1]) - int(without.px(x, y)[1])) > 24) lo = std::min(lo, x), hi = std::max(hi, x);
+    ASSERT_GT(hi - lo, n / 4) << "no head in the picture";
+    const int third = (hi - lo + 1) / 3;
+    double left = 0, right = 0;
+    int nl = 0, nr = 0;
+    for (int y = 0; y < n; ++y)
+      for (int x = lo; x <= hi; ++x) {
+        if (std::abs(int(with.px(x, y)[1]) - int(without.px(x, y)[1])) <= 24) continue;
+        if (x < lo + third) left += with.px(x, y)[1], ++nl;
+        if (x > hi - third) right += with.px(x, y)[1], ++nr;
+      }
+    ASSERT_GT(nl, 10);
+    ASSERT_GT(nr, 10);
+    left /= nl;
+    right /= nr;
+    std::printf("key on the %s: the head's left third %.1f, right third %.1f\n", key_left ? "left" : "right", left, right);
+    EXPECT_GT(key_left ? left - right : right - left, 25.5);
+  }
+}
+
 // The droplets and the point clouds are in the tier's picture: droplets-seed with and
 // without its droplets differs only inside the droplets' box on the screen, and there on
 // a droplet's worth of pixels; the molten gob glows (orange: red well over blue).
