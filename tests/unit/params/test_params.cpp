@@ -101,7 +101,7 @@ std::vector<ParamValue> out_of_range(const ParamDesc& d) {
         for (float bad : {above, below, nan}) {
           glm::vec3 c = ok;
           c[i] = bad;
-          v.push_back(c);
+          v.emplace_back(std::in_place_type<glm::vec3>, c);
         }
       return v;
     }
