@@ -101,8 +101,14 @@ void drink_along(Vessel v, vec3 p, vec3 d, vec3 pw, inout vec3 radiance, inout v
   float h0 = dot(n, p) - v.liquid.plane_offset, dh = dot(n, d);
   vec2 liquid = level_span(cav, h0, dh, -1e3, 0.0);
   float len = max(liquid.y - liquid.x, 0.0);
-  vec3 haze = v.liquid.haze_light * (1.0 - exp(-v.liquid.haze * len));  // (the record's light, core: the surround's mean and the lights)
-  vec3 through = drink_transmittance(v.body, len);
+  // The haze along the line: its even light (the record's, core: the surround's mean and
+  // the lights, fallen off inwards) scattered towards the eye under the segment's whole
+  // extinction, the drink's colour and the haze's own (as the path pass's haze_inscatter
+  // with one part), and what lies behind dimmed by both.
+  vec3 colour = drink_transmittance(v.body, len);
+  vec3 tau = -log(max(colour, vec3(1e-30))) + v.liquid.haze * len;
+  vec3 through = exp(-tau);
+  vec3 haze = v.liquid.haze_light * (v.liquid.haze * len / max(tau, vec3(1e-12))) * (1.0 - through);
   vec2 head = vec2(0.0);
   float opacity = 0.0;
   vec3 head_color = vec3(0.0);
