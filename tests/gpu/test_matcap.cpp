@@ -151,6 +151,24 @@ TEST(MatCapTier, TheHeadIsLitOnTheKeysSide) {
   }
 }
 
+// A hazy drink has the full tier's colour: the haze dims what lies behind and its light is
+// coloured by the drink along the line (before, the MatCap hefeweizen was a pale yellow,
+// 50-75 levels off in green and blue).
+TEST(MatCapTier, AHazyDrinkHasTheFullTiersColour) {
+  Gpu& g = gpu_instance();
+  const int n = 128;
+  const FrameState full = scene_frame({"hefeweizen", "weizen", {}, {}});
+  const Image a = g.renderer->render(full, n, n), b = g.renderer->render(matcap_tier(full), n, n);
+  // A patch in the middle of the drink, below the head (the glass's axis, 45 % down).
+  for (int c = 0; c < 3; ++c) {
+    double sa = 0, sb = 0;
+    for (int y = -3; y <= 3; ++y)
+      for (int x = -3; x <= 3; ++x) sa += a.px(n / 2 + x, n * 45 / 100 + y)[c], sb += b.px(n / 2 + x, n * 45 / 100 + y)[c];
+    std::printf("channel %d: full tier %.1f, MatCap %.1f\n", c, sa / 49, sb / 49);
+    EXPECT_NEAR(sb / 49, sa / 49, 20.0) << "channel " << c;
+  }
+}
+
 // The droplets and the point clouds are in the tier's picture: droplets-seed with and
 // without its droplets differs only inside the droplets' box on the screen, and there on
 // a droplet's worth of pixels; the molten gob glows (orange: red well over blue).
