@@ -17,7 +17,9 @@ struct Background {
   int wait_status = 0;
 };
 
-Background start_draught(const std::vector<std::string>& args, const fs::path& capture_dir) {
+// sigint_ignored: started as under nohup or in a script's background, SIGINT ignored.
+Background start_draught(const std::vector<std::string>& args, const fs::path& capture_dir,
+                         bool sigint_ignored = false) {
   fs::create_directories(capture_dir);
   std::vector<std::string> argv_s = {kExe.string()};
   argv_s.insert(argv_s.end(), args.begin(), args.end());
@@ -38,8 +40,24 @@ Background start_draught(const std::vector<std::string>& args, const fs::path& c
   posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_addopen(&fa, 1, (capture_dir / "bg-stdout").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addopen(&fa, 2, (capture_dir / "bg-stderr").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  // The signals the tests send start at their defaults in the child, as a foreground
+  // shell gives them: a test binary started in the background by a script (or under
+  // nohup) has SIGINT ignored, which draught keeps ignoring by design (cleanup.cpp).
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP})
+    if (!(sigint_ignored && sig == SIGINT)) sigaddset(&defaults, sig);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF);
+  struct sigaction ignore {}, before {};
+  ignore.sa_handler = SIG_IGN;
+  if (sigint_ignored) sigaction(SIGINT, &ignore, &before);  // (inherited by the child)
   Background b;
-  if (posix_spawn(&b.pid, argv[0], &fa, nullptr, argv.data(), envp.data()) != 0) b.pid = -1;
+  if (posix_spawn(&b.pid, argv[0], &fa, &attr, argv.data(), envp.data()) != 0) b.pid = -1;
+  if (sigint_ignored) sigaction(SIGINT, &before, nullptr);
+  posix_spawnattr_destroy(&attr);
   posix_spawn_file_actions_destroy(&fa);
   return b;
 }
@@ -146,6 +164,22 @@ TEST_F(Outputs, SigintDuringGifLeavesNothing) {
             },
             true);
   EXPECT_EQ(join(list_tree(out())), "");
+}
+
+TEST_F(Outputs, StartedWithSigintIgnoredItKeepsIgnoringIt) {
+  // As under nohup: an interrupt meant for the shell's foreground leaves the run alone; it
+  // finishes its GIF and leaves no temporary.
+  Background b = start_draught({"render", "--timeline", "gentle-tilt", "--size", "32x32", "--supersample", "1", "--fps",
+                                "30", "--duration", "2", "--set", "env.floor=false", "-o", (out() / "clip.gif").string()},
+                               dir_ / "cap", true);
+  ASSERT_GT(b.pid, 0);
+  const bool started = wait_until([&] { return !temporaries().empty(); }, 60);
+  kill(b.pid, SIGINT);
+  waitpid(b.pid, &b.wait_status, 0);
+  ASSERT_TRUE(started) << read_file(dir_ / "cap" / "bg-stderr");
+  EXPECT_TRUE(WIFEXITED(b.wait_status) && WEXITSTATUS(b.wait_status) == 0)
+      << "status " << b.wait_status << "\n" << read_file(dir_ / "cap" / "bg-stderr");
+  EXPECT_EQ(join(list_tree(out())), "clip.gif");
 }
 
 TEST_F(Outputs, SigtermDuringPngSequenceKeepsTheOldOneAndLeavesNoHalfSequence) {
