@@ -90,8 +90,9 @@ vec2 cavity_span(Vessel v, vec3 p, vec3 d, float top) {
 // The drink along the straight line from p (local) in the order the view meets it: the
 // head's layer (its colour, opacity by its density) and the liquid (Beer-Lambert over the
 // length below the plane, haze lit as the path pass lights it). Adds to radiance, takes
-// from the throughput.
-void drink_along(Vessel v, vec3 p, vec3 d, vec3 pw, inout vec3 radiance, inout vec3 thr) {
+// from the throughput. g: the glass's record, which the caller holds (the head's side is
+// lit through its wall).
+void drink_along(Vessel v, ObjectGlass g, vec3 p, vec3 d, vec3 pw, inout vec3 radiance, inout vec3 thr) {
   if (v.body.has_liquid == 0) return;
   ObjectFoam f = fetch_object_foam(v.row);
   float head_top = v.shape.has_head != 0 ? f.thickness * (1.0 + max(f.dome, 0.0)) : 0.0;  // the dome's top
@@ -128,7 +129,7 @@ void drink_along(Vessel v, vec3 p, vec3 d, vec3 pw, inout vec3 radiance, inout v
     vec3 fw = to_world_dir(v, face);
     vec3 s = sqrt(max(vec3(1.0) - f.foam_color, vec3(0.0)) / max(vec3(1.0) - f.foam_color * f.anisotropy, vec3(1e-6)));
     vec3 reflectance = (vec3(1.0) - s) / (vec3(1.0) + s);
-    float wall = side ? 1.0 - 2.0 * fresnel_dielectric(1.0, 1.0, glass_of(v.row).glass_ior) : 1.0;
+    float wall = side ? 1.0 - 2.0 * fresnel_dielectric(1.0, 1.0, g.glass_ior) : 1.0;
     head_color = reflectance * wall * (rig_irradiance_far(pw, fw, frame.light_count) + surround_irradiance(fw)) / PI;
   }
   if (opacity > 0.0 && head.x < liquid.x) {  // the head in front (seen from above or through its side)
@@ -313,7 +314,7 @@ vec3 shade(vec3 eye, vec3 dir, out vec3 thr) {
     }
 #endif
   }
-  drink_along(v, pl, dl, p, radiance, thr);
+  drink_along(v, g, pl, dl, p, radiance, thr);
   return radiance;
 }
 
